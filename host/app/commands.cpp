@@ -1,0 +1,120 @@
+#include "app/commands.h"
+
+#include <chrono>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "app/interrupt.h"
+#include "app/progress.h"
+#include "image/atomic_file.h"
+#include "image/exr.h"
+#include "image/png.h"
+#include "scene/gltf_loader.h"
+#include "util/errors.h"
+#include "vk/context.h"
+
+namespace vkp {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::filesystem::path defaultOutput(const std::filesystem::path& scene) {
+    return std::filesystem::path("out") / (scene.stem().string() + ".exr");
+}
+
+nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStats& stats,
+                           double loadSeconds, double totalSeconds) {
+    const RenderSettings& s = options.settings;
+    nlohmann::json j;
+    j["scene"] = options.scene.string();
+    j["integrator"] = "path";
+    j["settings"] = {{"width", s.width}, {"height", s.height}, {"spp", s.samplesPerPixel},
+                     {"seed", s.seed}, {"maxDepth", s.maxDepth}, {"timeLimit", s.timeLimitSeconds},
+                     {"nextEventEstimation", s.nextEventEstimation}};
+    j["device"] = stats.device;
+    j["scene_stats"] = {{"triangles", stats.triangles}, {"lights", stats.lights},
+                        {"gpuBytes", stats.gpuSceneBytes}};
+    j["timings"] = {{"loadSeconds", loadSeconds}, {"bvhSeconds", stats.bvhSeconds},
+                    {"uploadSeconds", stats.uploadSeconds}, {"renderSeconds", stats.renderSeconds},
+                    {"totalSeconds", totalSeconds}};
+    j["counters"] = {{"samplesPerPixel", stats.samplesPerPixel}, {"cameraPaths", stats.cameraPaths},
+                     {"nonFiniteSamples", stats.nonFiniteSamples},
+                     {"pathsPerSecond", stats.renderSeconds > 0 ? stats.cameraPaths / stats.renderSeconds : 0.0}};
+    j["partial"] = stats.partial;
+    j["stopReason"] = stats.stopReason;
+    return j;
+}
+
+}  // namespace
+
+int runRender(const RenderCommandOptions& options) {
+    const auto start = Clock::now();
+    const std::filesystem::path exrPath = options.output.empty() ? defaultOutput(options.scene) : options.output;
+    if (exrPath.extension() != ".exr")
+        throw InputError(fmt::format("-o {}: the output must end in .exr (a .png is written beside it)", exrPath.string()));
+    std::filesystem::path pngPath = exrPath;
+    pngPath.replace_extension(".png");
+
+    const Scene scene = loadGltf(options.scene);
+    const double loadSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (scene.droppedDegenerateTriangles > 0)
+        fmt::print(stderr, "warning: {}: dropped {} degenerate triangle(s)\n", options.scene.string(),
+                   scene.droppedDegenerateTriangles);
+    // Validate the camera choice before the expensive set-up.
+    chooseCamera(scene, options.settings.cameraIndex);
+
+    vk::Context context({options.validate, options.device});
+    if (!options.quiet)
+        fmt::print(stderr, "vkphoton: {} ({} triangles) on {}{}\n", options.scene.string(),
+                   scene.triangles.size(), context.deviceName(), context.validationEnabled() ? " with validation" : "");
+    installInterruptHandler();
+    Renderer renderer(context, scene);
+    ProgressReporter progress("render", options.quiet);
+    RenderResult result = renderer.render(
+        options.settings,
+        [&](const RenderProgress& p) { progress.update(p.samplesDone, p.samplesTotal, p.elapsedSeconds); },
+        &interruptRequested());
+    progress.finish();
+    const RenderStats& stats = result.stats;
+    const double totalSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+
+    const RenderSettings& s = options.settings;
+    std::vector<std::pair<std::string, std::string>> attributes{
+        {"vkphoton/scene", options.scene.string()},
+        {"vkphoton/integrator", "path"},
+        {"vkphoton/spp", std::to_string(stats.samplesPerPixel)},
+        {"vkphoton/sppRequested", std::to_string(s.samplesPerPixel)},
+        {"vkphoton/seed", std::to_string(s.seed)},
+        {"vkphoton/maxDepth", std::to_string(s.maxDepth)},
+        {"vkphoton/device", stats.device},
+        {"vkphoton/renderSeconds", fmt::format("{:.3f}", stats.renderSeconds)},
+        {"vkphoton/totalSeconds", fmt::format("{:.3f}", totalSeconds)},
+        {"vkphoton/partial", stats.partial ? "true" : "false"},
+        {"vkphoton/stopReason", stats.stopReason},
+    };
+    writeExr(exrPath, result.image, attributes);
+    writePng(pngPath, result.image);
+    if (!options.statsJson.empty())
+        writeTextAtomically(options.statsJson, statsToJson(options, stats, loadSeconds, totalSeconds).dump(2) + "\n");
+    if (stats.nonFiniteSamples > 0)
+        fmt::print(stderr, "warning: {} sample(s) were NaN or infinite and were dropped\n", stats.nonFiniteSamples);
+    if (!options.quiet)
+        fmt::print(stderr, "wrote {} and {} ({} spp{}, {:.2f} s rendering, {:.2f} Mpaths/s)\n", exrPath.string(),
+                   pngPath.string(), stats.samplesPerPixel, stats.partial ? ", partial: " + stats.stopReason : "",
+                   stats.renderSeconds, stats.renderSeconds > 0 ? stats.cameraPaths / stats.renderSeconds / 1e6 : 0.0);
+    if (context.validationEnabled()) context.throwOnValidationMessages();
+    return interruptRequested().load() ? 130 : kExitOk;
+}
+
+int runDevices() {
+    const auto devices = vk::listDevices();
+    if (devices.empty()) fmt::print("no Vulkan devices\n");
+    for (const auto& d : devices)
+        fmt::print("{}: {} ({}, Vulkan {}.{}.{}){}\n", d.index, d.name, d.type, VK_API_VERSION_MAJOR(d.apiVersion),
+                   VK_API_VERSION_MINOR(d.apiVersion), VK_API_VERSION_PATCH(d.apiVersion),
+                   d.suitable ? "" : " [unsuitable: needs Vulkan 1.3 and a compute queue]");
+    return kExitOk;
+}
+
+}  // namespace vkp

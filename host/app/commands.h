@@ -1,0 +1,24 @@
+// The vkphoton subcommands. Each returns a process exit code (util/errors.h).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "render/renderer.h"
+
+namespace vkp {
+
+struct RenderCommandOptions {
+    std::filesystem::path scene;
+    std::filesystem::path output;       // .exr; empty: out/<scene name>.exr
+    std::filesystem::path statsJson;    // empty: none
+    RenderSettings settings;
+    std::string device;
+    bool validate = false;
+    bool quiet = false;
+};
+
+int runRender(const RenderCommandOptions& options);
+int runDevices();
+
+}  // namespace vkp

@@ -1,0 +1,54 @@
+// vkphoton command line: `render` and `devices`. Exit codes: 0 ok, 1 runtime failure, 2 bad usage
+// or bad input.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/commands.h"
+#include "util/errors.h"
+
+int main(int argc, char** argv) {
+    using namespace vkp;
+    CLI::App app{"vkphoton: a Vulkan compute photon mapper and path tracer"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "vkphoton 0.1.0");
+
+    RenderCommandOptions render;
+    RenderSettings& s = render.settings;
+    CLI::App* renderCmd = app.add_subcommand("render", "Render a glTF scene to OpenEXR (linear) and PNG (tonemapped sRGB)");
+    renderCmd->add_option("scene", render.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+    renderCmd->add_option("-o,--output", render.output, "Output EXR path; a PNG is written beside it [default: out/SCENE.exr]");
+    renderCmd->add_option("--spp", s.samplesPerPixel, "Samples per pixel")->capture_default_str()->check(CLI::Range(1u, 1u << 24));
+    renderCmd->add_option("--width", s.width, "Image width in pixels")->capture_default_str()->check(CLI::Range(1u, 16384u));
+    renderCmd->add_option("--height", s.height, "Image height in pixels")->capture_default_str()->check(CLI::Range(1u, 16384u));
+    renderCmd->add_option("--seed", s.seed, "Random seed: the same seed gives the same image on the same device")->capture_default_str();
+    renderCmd->add_option("--max-depth", s.maxDepth, "Maximum path length (bounces)")->capture_default_str()->check(CLI::Range(1u, 1024u));
+    renderCmd->add_option("--time-limit", s.timeLimitSeconds, "Stop after this many seconds (0: no limit); the image is marked partial")->check(CLI::NonNegativeNumber);
+    renderCmd->add_option("--camera", s.cameraIndex, "Index of the scene camera to render from [default: first, or a framing of the scene]")->check(CLI::NonNegativeNumber);
+    renderCmd->add_option("--device", render.device, "Vulkan device: index or name substring (see `vkphoton devices`)");
+    renderCmd->add_flag("--validate", render.validate, "Enable the Khronos validation layer; any message is an error");
+    renderCmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
+    renderCmd->add_flag("--quiet", render.quiet, "No progress output");
+    bool bsdfOnly = false;
+    renderCmd->add_flag("--no-nee", bsdfOnly, "Disable next-event estimation (BSDF sampling only; a reference)");
+
+    app.add_subcommand("devices", "List the Vulkan devices");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? kExitOk : kExitBadInput;
+    }
+    s.nextEventEstimation = !bsdfOnly;
+
+    try {
+        if (renderCmd->parsed()) return runRender(render);
+        return runDevices();
+    } catch (const InputError& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return kExitRuntimeFailure;
+    }
+}

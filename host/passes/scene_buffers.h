@@ -1,0 +1,58 @@
+// The scene on the GPU: BVH-ordered triangles, BVH nodes, shading attributes, materials, lights
+// with their selection CDF, and textures. Bound at bindings 0..7 of every integrator shader
+// (shaders/scene_access.glsl declares the same order).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "scene/scene.h"
+#include "shared/gpu_types.glsl"
+#include "vk/buffer.h"
+
+namespace vkp {
+
+// Host-side arrays in GPU layout, built without a device so they can be tested on their own.
+struct SceneArrays {
+    std::vector<gpu::GpuTriangle> triangles;        // BVH order
+    std::vector<gpu::GpuBvhNode> nodes;
+    std::vector<gpu::GpuTriangleShading> shading;   // BVH order
+    std::vector<gpu::GpuMaterial> materials;
+    std::vector<gpu::GpuLight> lights;
+    std::vector<float> lightCdf;                    // inclusive prefix sums of selectPdf, last = 1
+    std::vector<gpu::GpuTexture> textures;
+    std::vector<uint32_t> texels;
+    double totalLightPower = 0.0;                   // watts, sum over all lights
+    double bvhBuildSeconds = 0.0;
+};
+
+// Builds the BVH and the GPU arrays. Lights are selected for next-event estimation in proportion
+// to their emitted power (emissive triangles: pi * luminance(Le) * area, twice if double-sided;
+// point/spot: 4 pi * luminance(I); directional: luminance(E) * pi * r^2 of the scene's bounding
+// sphere).
+SceneArrays buildSceneArrays(const Scene& scene);
+
+gpu::GpuCamera makeGpuCamera(const Camera& camera, uint32_t width, uint32_t height);
+
+class SceneBuffers {
+public:
+    SceneBuffers(vk::Context& context, const SceneArrays& arrays);
+
+    // The eight scene buffers in binding order.
+    std::vector<const vk::Buffer*> bindings() const;
+    uint32_t lightCount() const { return m_lightCount; }
+    uint64_t bytes() const;
+
+private:
+    vk::Buffer m_triangles;
+    vk::Buffer m_nodes;
+    vk::Buffer m_shading;
+    vk::Buffer m_materials;
+    vk::Buffer m_lights;
+    vk::Buffer m_lightCdf;
+    vk::Buffer m_textures;
+    vk::Buffer m_texels;
+    uint32_t m_lightCount = 0;
+};
+
+}  // namespace vkp

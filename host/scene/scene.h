@@ -1,0 +1,95 @@
+// The renderer's view of a scene: flattened world-space triangles, materials, textures, punctual
+// lights and cameras. Produced by the glTF loader; consumed by the BVH builder and the passes.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace vkp {
+
+struct Bounds {
+    glm::vec3 min{std::numeric_limits<float>::max()};
+    glm::vec3 max{-std::numeric_limits<float>::max()};
+    void grow(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
+    void grow(const Bounds& b) { min = glm::min(min, b.min); max = glm::max(max, b.max); }
+    bool empty() const { return min.x > max.x; }
+    glm::vec3 center() const { return 0.5f * (min + max); }
+    glm::vec3 extent() const { return max - min; }
+};
+
+struct Texture {
+    std::string name;               // glTF image name or "images[i]"
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<uint32_t> rgba8;    // row-major, top row first, R in the low byte
+    bool srgb = false;              // base colour and emissive textures are sRGB-encoded
+};
+
+// glTF metallic-roughness material with the extensions vkphoton supports.
+struct Material {
+    std::string name;
+    glm::vec4 baseColor{1.0f};
+    glm::vec3 emissive{0.0f};       // emissiveFactor * KHR_materials_emissive_strength
+    float metallic = 1.0f;
+    float roughness = 1.0f;
+    float transmission = 0.0f;      // KHR_materials_transmission
+    float ior = 1.5f;               // KHR_materials_ior
+    float thickness = 0.0f;         // KHR_materials_volume; 0 (or no extension) = thin-walled
+    glm::vec3 attenuationColor{1.0f};
+    float attenuationDistance = std::numeric_limits<float>::infinity();
+    bool doubleSided = false;
+    int baseColorTexture = -1;      // indices into Scene::textures
+    int metallicRoughnessTexture = -1;
+    int emissiveTexture = -1;
+};
+
+struct Triangle {
+    glm::vec3 p[3];                 // world-space positions
+    glm::vec3 n[3];                 // world-space unit normals (computed when the mesh has none)
+    glm::vec2 uv[3];                // TEXCOORD_0, zero when absent
+    uint32_t material = 0;          // index into Scene::materials
+};
+
+enum class LightType { Point, Spot, Directional };
+
+// KHR_lights_punctual light, converted to radiometric units (see docs/scene-format.md):
+// point/spot intensity [cd] / 683 lm/W -> W/sr; directional illuminance [lux] / 683 -> W/m^2.
+struct PunctualLight {
+    std::string name;
+    LightType type = LightType::Point;
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // direction the light travels (world, unit)
+    glm::vec3 intensity{0.0f};               // radiometric, colour included
+    float innerConeAngle = 0.0f;             // radians (spot only)
+    float outerConeAngle = 0.7853981634f;
+};
+
+struct Camera {
+    std::string name;
+    glm::vec3 position{0.0f};
+    glm::vec3 forward{0.0f, 0.0f, -1.0f};    // unit
+    glm::vec3 up{0.0f, 1.0f, 0.0f};          // unit, orthogonal to forward
+    float yfov = 0.6911f;                    // radians
+    float aspectRatio = 0.0f;                // 0: take it from the image size
+};
+
+struct Scene {
+    std::filesystem::path source;
+    std::vector<Triangle> triangles;
+    std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::vector<PunctualLight> lights;
+    std::vector<Camera> cameras;             // perspective cameras in node order
+    Bounds bounds;
+    size_t droppedDegenerateTriangles = 0;
+};
+
+// A camera framing the whole scene from its +Z side, used when the file has none.
+Camera defaultCamera(const Bounds& bounds);
+
+}  // namespace vkp

@@ -1,0 +1,136 @@
+#include "vk/compute_kernel.h"
+
+#include <fmt/format.h>
+
+#include "util/errors.h"
+#include "vk/buffer.h"
+#include "vk/check.h"
+#include "vk/context.h"
+#include "vk/shader_registry.h"
+
+namespace vkp::vk {
+
+ComputeKernel::ComputeKernel(Context& context, std::string shaderName, uint32_t storageBufferCount,
+                             uint32_t pushConstantBytes)
+    : m_context(context), m_name(std::move(shaderName)), m_bufferCount(storageBufferCount),
+      m_pushBytes(pushConstantBytes), m_bound(storageBufferCount, false) {
+    const VkDevice device = context.device();
+    const auto code = shaderCode(m_name);
+    VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    moduleInfo.codeSize = code.size_bytes();
+    moduleInfo.pCode = code.data();
+    check(vkCreateShaderModule(device, &moduleInfo, nullptr, &m_module),
+          fmt::format("creating the shader module {}", m_name));
+
+    std::vector<VkDescriptorSetLayoutBinding> bindings(m_bufferCount);
+    for (uint32_t i = 0; i < m_bufferCount; ++i) {
+        bindings[i].binding = i;
+        bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        bindings[i].descriptorCount = 1;
+        bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+    }
+    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    setInfo.bindingCount = m_bufferCount;
+    setInfo.pBindings = bindings.data();
+    check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &m_setLayout), "creating a set layout");
+
+    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, m_pushBytes};
+    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layoutInfo.setLayoutCount = 1;
+    layoutInfo.pSetLayouts = &m_setLayout;
+    layoutInfo.pushConstantRangeCount = m_pushBytes ? 1 : 0;
+    layoutInfo.pPushConstantRanges = &range;
+    check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &m_pipelineLayout),
+          "creating a pipeline layout");
+
+    VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pipelineInfo.stage.module = m_module;
+    pipelineInfo.stage.pName = "main";
+    pipelineInfo.layout = m_pipelineLayout;
+    check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &m_pipeline),
+          fmt::format("creating the compute pipeline {}", m_name));
+
+    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, std::max(1u, m_bufferCount)};
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 1;
+    poolInfo.pPoolSizes = &poolSize;
+    check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &m_pool), "creating a descriptor pool");
+    VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocInfo.descriptorPool = m_pool;
+    allocInfo.descriptorSetCount = 1;
+    allocInfo.pSetLayouts = &m_setLayout;
+    check(vkAllocateDescriptorSets(device, &allocInfo, &m_set), "allocating a descriptor set");
+}
+
+ComputeKernel::~ComputeKernel() {
+    const VkDevice device = m_context.device();
+    vkDestroyDescriptorPool(device, m_pool, nullptr);
+    vkDestroyPipeline(device, m_pipeline, nullptr);
+    vkDestroyPipelineLayout(device, m_pipelineLayout, nullptr);
+    vkDestroyDescriptorSetLayout(device, m_setLayout, nullptr);
+    vkDestroyShaderModule(device, m_module, nullptr);
+}
+
+void ComputeKernel::bind(uint32_t binding, const Buffer& buffer) {
+    if (binding >= m_bufferCount)
+        throw RuntimeError(fmt::format("{}: binding {} out of range", m_name, binding));
+    VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = m_set;
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    write.pBufferInfo = &info;
+    vkUpdateDescriptorSets(m_context.device(), 1, &write, 0, nullptr);
+    m_bound[binding] = true;
+}
+
+void ComputeKernel::bind(const std::vector<const Buffer*>& buffers) {
+    for (uint32_t i = 0; i < buffers.size(); ++i) bind(i, *buffers[i]);
+}
+
+void ComputeKernel::record(VkCommandBuffer cmd, uint32_t groups, const void* push,
+                           uint32_t pushBytes) const {
+    for (uint32_t i = 0; i < m_bufferCount; ++i)
+        if (!m_bound[i]) throw RuntimeError(fmt::format("{}: binding {} was never bound", m_name, i));
+    if (pushBytes != m_pushBytes)
+        throw RuntimeError(fmt::format("{}: push constants are {} bytes, expected {}", m_name,
+                                       pushBytes, m_pushBytes));
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipelineLayout, 0, 1, &m_set, 0, nullptr);
+    if (pushBytes) vkCmdPushConstants(cmd, m_pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes, push);
+    if (groups) vkCmdDispatch(cmd, groups, 1, 1);
+}
+
+namespace {
+void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags src, VkAccessFlags srcAccess,
+                   VkPipelineStageFlags dst, VkAccessFlags dstAccess) {
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = srcAccess;
+    barrier.dstAccessMask = dstAccess;
+    vkCmdPipelineBarrier(cmd, src, dst, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+}  // namespace
+
+void computeBarrier(VkCommandBuffer cmd) {
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT);
+}
+
+void computeToHostBarrier(VkCommandBuffer cmd) {
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+}
+
+void transferToComputeBarrier(VkCommandBuffer cmd) {
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+}
+
+}  // namespace vkp::vk

@@ -1,0 +1,61 @@
+// One compute shader with its pipeline, a descriptor set of storage buffers (binding i = the i-th
+// buffer) and a push-constant block. Recording binds, pushes and dispatches: no submit, no wait.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace vkp::vk {
+
+class Buffer;
+class Context;
+
+class ComputeKernel {
+public:
+    ComputeKernel(Context& context, std::string shaderName, uint32_t storageBufferCount,
+                  uint32_t pushConstantBytes);
+    ~ComputeKernel();
+    ComputeKernel(const ComputeKernel&) = delete;
+    ComputeKernel& operator=(const ComputeKernel&) = delete;
+
+    // Points binding `binding` at `buffer` (whole range).
+    void bind(uint32_t binding, const Buffer& buffer);
+    void bind(const std::vector<const Buffer*>& buffers);
+
+    // Dispatches `groups` 1-D workgroups after pushing `pushBytes` of push constants.
+    void record(VkCommandBuffer cmd, uint32_t groups, const void* push, uint32_t pushBytes) const;
+    template <typename Push> void record(VkCommandBuffer cmd, uint32_t groups, const Push& push) const {
+        record(cmd, groups, &push, sizeof(Push));
+    }
+
+    const std::string& name() const { return m_name; }
+
+private:
+    Context& m_context;
+    std::string m_name;
+    uint32_t m_bufferCount;
+    uint32_t m_pushBytes;
+    std::vector<bool> m_bound;
+    VkShaderModule m_module = VK_NULL_HANDLE;
+    VkDescriptorSetLayout m_setLayout = VK_NULL_HANDLE;
+    VkPipelineLayout m_pipelineLayout = VK_NULL_HANDLE;
+    VkPipeline m_pipeline = VK_NULL_HANDLE;
+    VkDescriptorPool m_pool = VK_NULL_HANDLE;
+    VkDescriptorSet m_set = VK_NULL_HANDLE;
+};
+
+// Makes compute-shader writes visible to later compute reads and transfers.
+void computeBarrier(VkCommandBuffer cmd);
+// Makes compute writes visible to the host after the submission's fence (for mapped buffers).
+void computeToHostBarrier(VkCommandBuffer cmd);
+// Makes transfer writes (fills, copies) visible to compute shaders.
+void transferToComputeBarrier(VkCommandBuffer cmd);
+
+inline uint32_t groupCount(uint64_t items, uint32_t groupSize) {
+    return static_cast<uint32_t>((items + groupSize - 1) / groupSize);
+}
+
+}  // namespace vkp::vk

@@ -1,0 +1,337 @@
+#include "vk/context.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "util/errors.h"
+#include "vk/check.h"
+
+namespace vkp::vk {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+const char* deviceTypeName(VkPhysicalDeviceType type) {
+    switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
+    default: return "other";
+    }
+}
+
+// Lower is better: real GPUs first, lavapipe (CPU) last.
+int deviceRank(VkPhysicalDeviceType type) {
+    switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
+    default: return 4;
+    }
+}
+
+std::vector<VkPhysicalDevice> enumeratePhysicalDevices(VkInstance instance) {
+    uint32_t count = 0;
+    check(vkEnumeratePhysicalDevices(instance, &count, nullptr), "enumerating physical devices");
+    std::vector<VkPhysicalDevice> devices(count);
+    check(vkEnumeratePhysicalDevices(instance, &count, devices.data()), "enumerating physical devices");
+    return devices;
+}
+
+// A queue family with compute (graphics too when available, for the raster pass).
+bool findQueueFamily(VkPhysicalDevice device, uint32_t& family) {
+    uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+    int best = -1;
+    for (uint32_t i = 0; i < count; ++i) {
+        const VkQueueFlags flags = families[i].queueFlags;
+        if (!(flags & VK_QUEUE_COMPUTE_BIT)) continue;
+        if (best < 0 || (flags & VK_QUEUE_GRAPHICS_BIT)) best = static_cast<int>(i);
+        if (flags & VK_QUEUE_GRAPHICS_BIT) break;
+    }
+    if (best < 0) return false;
+    family = static_cast<uint32_t>(best);
+    return true;
+}
+
+DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
+    VkPhysicalDeviceProperties props{};
+    vkGetPhysicalDeviceProperties(device, &props);
+    uint32_t family = 0;
+    DeviceInfo info;
+    info.index = index;
+    info.name = props.deviceName;
+    info.type = deviceTypeName(props.deviceType);
+    info.apiVersion = props.apiVersion;
+    info.suitable = props.apiVersion >= VK_API_VERSION_1_3 && findQueueFamily(device, family);
+    return info;
+}
+
+VkInstance createBareInstance(bool validate, const void* next) {
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = "vkphoton";
+    app.applicationVersion = VK_MAKE_VERSION(0, 1, 0);
+    app.pEngineName = "vkphoton";
+    app.apiVersion = VK_API_VERSION_1_3;
+
+    std::vector<const char*> layers;
+    std::vector<const char*> extensions;
+    if (validate) {
+        uint32_t count = 0;
+        vkEnumerateInstanceLayerProperties(&count, nullptr);
+        std::vector<VkLayerProperties> available(count);
+        vkEnumerateInstanceLayerProperties(&count, available.data());
+        const bool found = std::any_of(available.begin(), available.end(), [](const auto& l) {
+            return std::strcmp(l.layerName, kValidationLayer) == 0;
+        });
+        if (!found)
+            throw RuntimeError(
+                "validation requested but VK_LAYER_KHRONOS_validation is not installed "
+                "(Debian: apt-get install vulkan-validationlayers)");
+        layers.push_back(kValidationLayer);
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    }
+    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    info.pNext = next;
+    info.pApplicationInfo = &app;
+    info.enabledLayerCount = static_cast<uint32_t>(layers.size());
+    info.ppEnabledLayerNames = layers.data();
+    info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
+    VkInstance instance = VK_NULL_HANDLE;
+    const VkResult result = vkCreateInstance(&info, nullptr, &instance);
+    if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
+        throw RuntimeError(
+            "no Vulkan 1.3 driver found (Debian: apt-get install mesa-vulkan-drivers for lavapipe)");
+    check(result, "creating the Vulkan instance");
+    return instance;
+}
+
+}  // namespace
+
+bool validationRequestedByEnvironment() {
+    const char* value = std::getenv("VKPHOTON_VALIDATE");
+    return value != nullptr && std::strcmp(value, "0") != 0 && *value != '\0';
+}
+
+std::vector<DeviceInfo> listDevices() {
+    VkInstance instance = createBareInstance(false, nullptr);
+    std::vector<DeviceInfo> result;
+    try {
+        const auto devices = enumeratePhysicalDevices(instance);
+        for (uint32_t i = 0; i < devices.size(); ++i) result.push_back(describe(devices[i], i));
+    } catch (...) {
+        vkDestroyInstance(instance, nullptr);
+        throw;
+    }
+    vkDestroyInstance(instance, nullptr);
+    return result;
+}
+
+Context::Context(const ContextOptions& options)
+    : m_validate(options.validate || validationRequestedByEnvironment()) {
+    try {
+        createInstance();
+        pickPhysicalDevice(options.device);
+        createDevice();
+    } catch (...) {
+        destroy();
+        throw;
+    }
+}
+
+Context::~Context() { destroy(); }
+
+void Context::destroy() {
+    if (m_device) {
+        vkDeviceWaitIdle(m_device);
+        if (m_fence) vkDestroyFence(m_device, m_fence, nullptr);
+        if (m_commandPool) vkDestroyCommandPool(m_device, m_commandPool, nullptr);
+        vkDestroyDevice(m_device, nullptr);
+        m_device = VK_NULL_HANDLE;
+    }
+    if (m_messenger) {
+        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(m_instance, "vkDestroyDebugUtilsMessengerEXT"));
+        if (destroy) destroy(m_instance, m_messenger, nullptr);
+        m_messenger = VK_NULL_HANDLE;
+    }
+    if (m_instance) {
+        vkDestroyInstance(m_instance, nullptr);
+        m_instance = VK_NULL_HANDLE;
+    }
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL Context::onDebugMessage(
+    VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
+    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+    if (severity < VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) return VK_FALSE;
+    auto* self = static_cast<Context*>(user);
+    const std::string text = data && data->pMessage ? data->pMessage : "(no message)";
+    {
+        std::lock_guard lock(self->m_messagesMutex);
+        if (self->m_messages.size() < 64) self->m_messages.push_back(text);
+    }
+    ++self->m_messageCount;
+    fmt::print(stderr, "validation: {}\n", text);
+    return VK_FALSE;
+}
+
+void Context::createInstance() {
+    VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
+        VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                                    VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                                VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                                VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    messengerInfo.pfnUserCallback = &Context::onDebugMessage;
+    messengerInfo.pUserData = this;
+    // Chaining the messenger info also reports problems during instance creation itself.
+    m_instance = createBareInstance(m_validate, m_validate ? &messengerInfo : nullptr);
+    if (!m_validate) return;
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(m_instance, "vkCreateDebugUtilsMessengerEXT"));
+    if (!create) throw RuntimeError("VK_EXT_debug_utils is not available");
+    check(create(m_instance, &messengerInfo, nullptr, &m_messenger), "creating the debug messenger");
+}
+
+void Context::pickPhysicalDevice(const std::string& request) {
+    const auto devices = enumeratePhysicalDevices(m_instance);
+    if (devices.empty())
+        throw RuntimeError("no Vulkan device found (Debian: apt-get install mesa-vulkan-drivers)");
+    std::vector<DeviceInfo> infos;
+    for (uint32_t i = 0; i < devices.size(); ++i) infos.push_back(describe(devices[i], i));
+
+    int chosen = -1;
+    if (!request.empty()) {
+        const bool numeric = std::all_of(request.begin(), request.end(), ::isdigit);
+        for (const auto& info : infos) {
+            const bool match = numeric ? std::to_string(info.index) == request
+                                       : info.name.find(request) != std::string::npos;
+            if (match) { chosen = static_cast<int>(info.index); break; }
+        }
+        if (chosen < 0) {
+            std::string names;
+            for (const auto& info : infos) names += fmt::format("\n  {}: {}", info.index, info.name);
+            throw InputError(fmt::format("--device {}: no such device; available:{}", request, names));
+        }
+        if (!infos[chosen].suitable)
+            throw InputError(fmt::format("--device {}: '{}' lacks Vulkan 1.3 or a compute queue",
+                                         request, infos[chosen].name));
+    } else {
+        for (const auto& info : infos) {
+            if (!info.suitable) continue;
+            VkPhysicalDeviceProperties a{}, b{};
+            vkGetPhysicalDeviceProperties(devices[info.index], &a);
+            if (chosen >= 0) vkGetPhysicalDeviceProperties(devices[chosen], &b);
+            if (chosen < 0 || deviceRank(a.deviceType) < deviceRank(b.deviceType))
+                chosen = static_cast<int>(info.index);
+        }
+        if (chosen < 0) throw RuntimeError("no Vulkan 1.3 device with a compute queue found");
+    }
+    m_physicalDevice = devices[chosen];
+    vkGetPhysicalDeviceProperties(m_physicalDevice, &m_properties);
+    vkGetPhysicalDeviceMemoryProperties(m_physicalDevice, &m_memoryProperties);
+    m_deviceName = m_properties.deviceName;
+    findQueueFamily(m_physicalDevice, m_queueFamily);
+}
+
+void Context::createDevice() {
+    const float priority = 1.0f;
+    VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    queueInfo.queueFamilyIndex = m_queueFamily;
+    queueInfo.queueCount = 1;
+    queueInfo.pQueuePriorities = &priority;
+
+    // maintenance4 (required of every Vulkan 1.3 device): glslang targeting Vulkan 1.3 emits
+    // LocalSizeId for workgroup sizes.
+    VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    features13.maintenance4 = VK_TRUE;
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    features.pNext = &features13;
+    VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    info.pNext = &features;
+    info.queueCreateInfoCount = 1;
+    info.pQueueCreateInfos = &queueInfo;
+    check(vkCreateDevice(m_physicalDevice, &info, nullptr, &m_device), "creating the logical device");
+    vkGetDeviceQueue(m_device, m_queueFamily, 0, &m_queue);
+
+    VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    poolInfo.queueFamilyIndex = m_queueFamily;
+    check(vkCreateCommandPool(m_device, &poolInfo, nullptr, &m_commandPool), "creating a command pool");
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    check(vkCreateFence(m_device, &fenceInfo, nullptr, &m_fence), "creating a fence");
+}
+
+std::vector<std::string> Context::validationMessages() const {
+    std::lock_guard lock(m_messagesMutex);
+    return m_messages;
+}
+
+void Context::throwOnValidationMessages() const {
+    if (m_messageCount.load() == 0) return;
+    const auto messages = validationMessages();
+    throw RuntimeError(fmt::format("{} Vulkan validation message(s); first: {}", m_messageCount.load(),
+                                   messages.empty() ? "" : messages.front()));
+}
+
+uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
+                                 VkMemoryPropertyFlags preferred) const {
+    int fallback = -1;
+    for (uint32_t i = 0; i < m_memoryProperties.memoryTypeCount; ++i) {
+        if (!(typeBits & (1u << i))) continue;
+        const VkMemoryPropertyFlags flags = m_memoryProperties.memoryTypes[i].propertyFlags;
+        if ((flags & required) != required) continue;
+        if ((flags & preferred) == preferred) return i;
+        if (fallback < 0) fallback = static_cast<int>(i);
+    }
+    if (fallback < 0) throw RuntimeError("no suitable Vulkan memory type");
+    return static_cast<uint32_t>(fallback);
+}
+
+void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record,
+                            double timeoutSeconds) {
+    VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocInfo.commandPool = m_commandPool;
+    allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocInfo.commandBufferCount = 1;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    check(vkAllocateCommandBuffers(m_device, &allocInfo, &cmd), "allocating a command buffer");
+    // Freed on every path except a hung submission, whose buffer may still be in use.
+    struct Release {
+        VkDevice device; VkCommandPool pool; VkCommandBuffer cmd; bool pending = false;
+        ~Release() { if (!pending) vkFreeCommandBuffers(device, pool, 1, &cmd); }
+    } release{m_device, m_commandPool, cmd};
+
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    check(vkBeginCommandBuffer(cmd, &begin), "beginning a command buffer");
+    record(cmd);
+    check(vkEndCommandBuffer(cmd), "ending a command buffer");
+
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmd;
+    check(vkResetFences(m_device, 1, &m_fence), "resetting a fence");
+    check(vkQueueSubmit(m_queue, 1, &submit, m_fence), "submitting work");
+    const auto timeoutNs = static_cast<uint64_t>(timeoutSeconds * 1e9);
+    const VkResult result = vkWaitForFences(m_device, 1, &m_fence, VK_TRUE, timeoutNs);
+    release.pending = result == VK_TIMEOUT;
+    if (result == VK_TIMEOUT)
+        throw RuntimeError(fmt::format(
+            "the device did not finish a submission within {:.0f} s; treating it as hung", timeoutSeconds));
+    check(result, "waiting for the device");
+    if (m_validate) throwOnValidationMessages();
+}
+
+}  // namespace vkp::vk

@@ -1,0 +1,93 @@
+// The Vulkan instance, the chosen physical device, one compute+graphics queue and a command pool.
+// Device choice: discrete GPU, then integrated, then anything else (lavapipe); `--device` overrides.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace vkp::vk {
+
+struct ContextOptions {
+    bool validate = false;      // enable VK_LAYER_KHRONOS_validation; every message is an error
+    std::string device;         // "" = automatic; a decimal index or a substring of the name
+};
+
+struct DeviceInfo {
+    uint32_t index = 0;
+    std::string name;
+    std::string type;           // "discrete", "integrated", "cpu", ...
+    uint32_t apiVersion = 0;
+    bool suitable = false;      // Vulkan 1.3 with a compute queue
+};
+
+// Lists the physical devices (a throwaway instance without layers).
+std::vector<DeviceInfo> listDevices();
+
+class Context {
+public:
+    explicit Context(const ContextOptions& options = {});
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    VkInstance instance() const { return m_instance; }
+    VkPhysicalDevice physicalDevice() const { return m_physicalDevice; }
+    VkDevice device() const { return m_device; }
+    VkQueue queue() const { return m_queue; }
+    uint32_t queueFamily() const { return m_queueFamily; }
+    const VkPhysicalDeviceProperties& properties() const { return m_properties; }
+    const std::string& deviceName() const { return m_deviceName; }
+    bool validationEnabled() const { return m_validate; }
+
+    // Validation messages (warnings and errors) seen so far; tests assert this stays empty.
+    std::vector<std::string> validationMessages() const;
+    size_t validationMessageCount() const { return m_messageCount.load(); }
+    // Throws RuntimeError listing the messages if any arrived (used after each submit with --validate).
+    void throwOnValidationMessages() const;
+
+    uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
+                            VkMemoryPropertyFlags preferred) const;
+
+    // Records commands with `record`, submits them and waits on a fence with a timeout: a device
+    // that does not finish in `timeoutSeconds` is reported as hung instead of hanging the run.
+    void submitAndWait(const std::function<void(VkCommandBuffer)>& record,
+                       double timeoutSeconds = 600.0);
+
+private:
+    static VKAPI_ATTR VkBool32 VKAPI_CALL onDebugMessage(
+        VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
+        const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+
+    void destroy();
+    void createInstance();
+    void pickPhysicalDevice(const std::string& request);
+    void createDevice();
+
+    bool m_validate = false;
+    VkInstance m_instance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT m_messenger = VK_NULL_HANDLE;
+    VkPhysicalDevice m_physicalDevice = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties m_properties{};
+    VkPhysicalDeviceMemoryProperties m_memoryProperties{};
+    std::string m_deviceName;
+    uint32_t m_queueFamily = 0;
+    VkDevice m_device = VK_NULL_HANDLE;
+    VkQueue m_queue = VK_NULL_HANDLE;
+    VkCommandPool m_commandPool = VK_NULL_HANDLE;
+    VkFence m_fence = VK_NULL_HANDLE;
+
+    mutable std::atomic<size_t> m_messageCount{0};
+    mutable std::mutex m_messagesMutex;
+    std::vector<std::string> m_messages;  // guarded by m_messagesMutex
+};
+
+// True when VKPHOTON_VALIDATE=1 is set (the test suite sets it for every test).
+bool validationRequestedByEnvironment();
+
+}  // namespace vkp::vk

@@ -1,0 +1,116 @@
+// GPU data layouts shared by the host (C++/GLM) and the shaders (std430). Each struct is followed
+// by its size, asserted on the host. vec3 members always start at a multiple of 16 bytes so the
+// C++ (4-byte aligned vec3) and std430 (16-byte aligned vec3) layouts agree.
+#ifndef VKP_GPU_TYPES_GLSL
+#define VKP_GPU_TYPES_GLSL
+#include "compat.glsl"
+SHARED_BEGIN
+
+// Triangle positions in world space; traversal reads only this buffer. w is unused.
+struct GpuTriangle {
+    vec4 v0;
+    vec4 v1;
+    vec4 v2;
+};
+STATIC_ASSERT_SIZE(GpuTriangle, 48)
+
+// Shading attributes of the triangle with the same index as in the GpuTriangle buffer.
+struct GpuTriangleShading {
+    vec4 n0;                // world-space vertex normals (xyz)
+    vec4 n1;
+    vec4 n2;
+    vec4 uv01;              // uv of vertex 0 (xy) and 1 (zw)
+    vec2 uv2;
+    uint material;
+    float emitterPdfArea;   // light-selection probability / area for emissive triangles, else 0
+};
+STATIC_ASSERT_SIZE(GpuTriangleShading, 80)
+
+// Flattened BVH node: children are adjacent (leftOrFirst, leftOrFirst + 1) for inner nodes;
+// leaves (count > 0) hold triangles [leftOrFirst, leftOrFirst + count).
+struct GpuBvhNode {
+    vec3 boundsMin;
+    uint leftOrFirst;
+    vec3 boundsMax;
+    uint count;
+};
+STATIC_ASSERT_SIZE(GpuBvhNode, 32)
+
+const uint kMaterialDoubleSided = 1u;
+const uint kMaterialThinWalled = 2u;  // transmissive without KHR_materials_volume thickness
+
+struct GpuMaterial {
+    vec4 baseColor;         // linear RGBA factor
+    vec3 emissive;          // linear RGB radiance factor, emissive_strength applied
+    float metallic;
+    float roughness;        // perceptual roughness; alpha = roughness^2
+    float transmission;
+    float ior;
+    float thickness;
+    vec3 attenuationCoeff;  // Beer-Lambert sigma_a per metre: -ln(attenuationColor)/distance
+    uint flags;
+    int baseColorTexture;   // index into the texture table, -1 when absent
+    int metallicRoughnessTexture;
+    int emissiveTexture;
+    uint pad0;
+};
+STATIC_ASSERT_SIZE(GpuMaterial, 80)
+
+const uint kLightPoint = 0u;
+const uint kLightSpot = 1u;
+const uint kLightDirectional = 2u;
+const uint kLightTriangle = 3u;
+
+struct GpuLight {
+    vec3 position;          // point/spot position (world)
+    uint type;
+    vec3 direction;         // spot/directional: direction the light travels (world, unit)
+    float spotScale;        // glTF cone falloff: t = saturate(cos * scale + offset), falloff = t*t
+    vec3 intensity;         // W/sr (point, spot), W/m^2 (directional), unused for triangles
+    float spotOffset;
+    uint triangle;          // kLightTriangle: index of the emissive triangle
+    float selectPdf;        // probability of choosing this light for next-event estimation
+    float pad0;
+    float pad1;
+};
+STATIC_ASSERT_SIZE(GpuLight, 64)
+
+// Textures live in one buffer of packed RGBA8 texels; each entry describes one image.
+struct GpuTexture {
+    uint offset;            // first texel in the texel buffer
+    uint width;
+    uint height;
+    uint srgb;              // 1: colour data encoded with the sRGB transfer function
+};
+STATIC_ASSERT_SIZE(GpuTexture, 16)
+
+struct GpuCamera {
+    vec3 position;
+    float tanHalfFovY;
+    vec3 right;             // unit vectors of the camera frame (world)
+    float aspect;           // width / height
+    vec3 up;
+    float pad0;
+    vec3 forward;
+    float pad1;
+};
+STATIC_ASSERT_SIZE(GpuCamera, 64)
+
+const uint kPathFlagNoDirectLightSampling = 1u;  // BSDF sampling only (test/reference mode)
+
+// Push constants of pathtrace.comp.
+struct PathTraceParams {
+    GpuCamera camera;
+    uint width;
+    uint height;
+    uint firstSample;       // sample index of the first sample this dispatch adds per pixel
+    uint sampleCount;       // samples per pixel this dispatch adds
+    uint seed;
+    uint maxDepth;          // path vertices after the camera; Russian roulette ends most earlier
+    uint lightCount;
+    uint flags;
+};
+STATIC_ASSERT_SIZE(PathTraceParams, 96)
+
+SHARED_END
+#endif

@@ -1,0 +1,108 @@
+// The shared functions exercised by the shader unit harness, behind one dispatcher so that the
+// GPU kernel (tests/shaders/shared_functions_test.comp) and the C++ reference run identical code.
+// Results are returned as raw bits: integer results compare exactly, float results within a
+// tolerance (GPU transcendental and division precision is not IEEE-exact).
+#ifndef VKP_HARNESS_FUNCTIONS_GLSL
+#define VKP_HARNESS_FUNCTIONS_GLSL
+#include "compat.glsl"
+#include "bsdf.glsl"
+#include "halton.glsl"
+#include "hash.glsl"
+#include "sampling.glsl"
+SHARED_BEGIN
+
+struct HarnessInput {
+    vec4 a;
+    vec4 b;
+    uvec4 u;
+};
+STATIC_ASSERT_SIZE(HarnessInput, 48)
+
+const uint kHarnessPcgHash = 0u;
+const uint kHarnessRadicalInverseDigits = 1u;
+const uint kHarnessSamplerSequence = 2u;
+const uint kHarnessCosineHemisphere = 3u;
+const uint kHarnessGgxVisibleNormal = 4u;
+const uint kHarnessEvalBsdf = 5u;
+const uint kHarnessPdfBsdf = 6u;
+const uint kHarnessFresnelDielectric = 7u;
+const uint kHarnessOrthonormalBasis = 8u;
+const uint kHarnessSampleBsdf = 9u;
+const uint kHarnessFunctionCount = 10u;
+
+INLINE uvec4 floatBits(vec4 v) {
+    return uvec4(floatBitsToUint(v.x), floatBitsToUint(v.y), floatBitsToUint(v.z), floatBitsToUint(v.w));
+}
+
+INLINE BsdfParams harnessBsdfParams(HarnessInput in_) {
+    BsdfParams p;
+    p.baseColor = vec3(in_.b.x, in_.b.y, in_.b.z);
+    p.metallic = in_.b.w;
+    p.roughness = in_.a.w;
+    p.transmission = 0.0f;
+    p.ior = 1.0f + float(in_.u.y % 100u) * 0.01f;
+    p.thinWalled = 0u;
+    return p;
+}
+
+INLINE vec3 harnessDirection(vec2 u) {
+    vec3 w = sampleCosineHemisphere(u);
+    return normalize(vec3(w.x, w.y, max(w.z, 1.0e-3f)));
+}
+
+INLINE uvec4 evaluateHarnessFunction(uint function, HarnessInput in_) {
+    if (function == kHarnessPcgHash) {
+        return uvec4(pcgHash(in_.u.x), hashCombine(in_.u.x, in_.u.y), 0u, 0u);
+    }
+    if (function == kHarnessRadicalInverseDigits) {
+        uint limit = 0u;
+        uint base = haltonPrime(in_.u.z % kHaltonDimensions);
+        uint digits = scrambledRadicalInverseDigits(base, in_.u.x, in_.u.y, limit);
+        return uvec4(digits, limit, base, 0u);
+    }
+    if (function == kHarnessSamplerSequence) {
+        Sampler s = makeSampler(in_.u.x, in_.u.y);
+        s.dimension = in_.u.z % 40u;
+        float x = nextSample(s);
+        float y = nextSample(s);
+        return floatBits(vec4(x, y, float(s.dimension), 0.0f));
+    }
+    if (function == kHarnessCosineHemisphere) {
+        vec3 w = sampleCosineHemisphere(vec2(in_.a.x, in_.a.y));
+        return floatBits(vec4(w, cosineHemispherePdf(w.z)));
+    }
+    if (function == kHarnessGgxVisibleNormal) {
+        vec3 wo = harnessDirection(vec2(in_.a.x, in_.a.y));
+        float alpha = max(in_.a.w * in_.a.w, kMinAlpha);
+        vec3 h = sampleGgxVisibleNormal(wo, alpha, vec2(in_.a.z, in_.b.x));
+        return floatBits(vec4(h, ggxD(h, alpha)));
+    }
+    if (function == kHarnessEvalBsdf || function == kHarnessPdfBsdf) {
+        BsdfParams p = harnessBsdfParams(in_);
+        vec3 wo = harnessDirection(vec2(in_.a.x, in_.a.y));
+        vec3 wi = harnessDirection(vec2(in_.a.z, float(in_.u.x & 0xffffu) / 65536.0f));
+        if (function == kHarnessEvalBsdf) return floatBits(vec4(evalBsdf(p, wo, wi), 0.0f));
+        return floatBits(vec4(pdfBsdf(p, wo, wi), 0.0f, 0.0f, 0.0f));
+    }
+    if (function == kHarnessFresnelDielectric) {
+        float eta = 0.5f + 1.5f * in_.a.y;
+        return floatBits(vec4(fresnelDielectric(in_.a.x, eta), dielectricF0(1.0f + in_.a.z), 0.0f, 0.0f));
+    }
+    if (function == kHarnessOrthonormalBasis) {
+        vec3 n = normalize(sampleUniformSphere(vec2(in_.a.x, in_.a.y)));
+        vec3 t;
+        vec3 b;
+        orthonormalBasis(n, t, b);
+        return floatBits(vec4(t.x, t.y, t.z, dot(cross(t, b), n)));
+    }
+    if (function == kHarnessSampleBsdf) {
+        BsdfParams p = harnessBsdfParams(in_);
+        vec3 wo = harnessDirection(vec2(in_.a.x, in_.a.y));
+        BsdfSample s = sampleBsdf(p, wo, true, true, vec3(in_.a.z, in_.b.x, in_.b.y));
+        return floatBits(vec4(s.wi.x, s.wi.y, s.wi.z, s.pdf));
+    }
+    return uvec4(0u);
+}
+
+SHARED_END
+#endif

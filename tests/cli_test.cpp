@@ -1,0 +1,138 @@
+// End-to-end tests of the vkphoton binary: exit codes, messages, outputs on disk.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include "image/exr.h"
+
+namespace vkp {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+    int exitCode = -1;
+    std::string output;  // stdout and stderr
+};
+
+RunResult runVkphoton(const std::string& args) {
+    const std::string command = std::string(VKPHOTON_BINARY) + " " + args + " 2>&1";
+    RunResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    char buffer[4096];
+    size_t n;
+    while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+fs::path tempDir(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / ("vkphoton-cli-" + name + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+const std::string kBox = std::string(VKPHOTON_SCENES) + "/cornell-box.gltf";
+
+TEST(Cli, HelpOnEveryCommand) {
+    for (const char* args : {"--help", "render --help", "devices --help"}) {
+        const RunResult r = runVkphoton(args);
+        EXPECT_EQ(r.exitCode, 0) << args << "\n" << r.output;
+        EXPECT_NE(r.output.find("Usage"), std::string::npos) << args;
+    }
+}
+
+TEST(Cli, BadUsageExitsWithTwo) {
+    for (const char* args : {"", "render", "render a.gltf --spp 0", "render a.gltf --spp banana", "frobnicate"}) {
+        const RunResult r = runVkphoton(args);
+        EXPECT_EQ(r.exitCode, 2) << "'" << args << "'\n" << r.output;
+    }
+}
+
+TEST(Cli, MissingSceneExitsWithTwoAndNamesTheFile) {
+    const RunResult r = runVkphoton("render /nonexistent/scene.gltf --quiet");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("/nonexistent/scene.gltf"), std::string::npos) << r.output;
+}
+
+TEST(Cli, BadCameraIndexExitsWithTwo) {
+    const RunResult r = runVkphoton("render " + kBox + " --camera 7 --quiet --spp 1 --width 8 --height 8 -o " +
+                                    (tempDir("camera") / "x.exr").string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--camera 7"), std::string::npos) << r.output;
+}
+
+TEST(Cli, DevicesListsLavapipe) {
+    const RunResult r = runVkphoton("devices");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("llvmpipe"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownDeviceExitsWithTwo) {
+    const RunResult r = runVkphoton("render " + kBox + " --device no-such-gpu --quiet --spp 1");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("no-such-gpu"), std::string::npos) << r.output;
+}
+
+TEST(Cli, RenderWritesExrPngAndStats) {
+    const fs::path dir = tempDir("render");
+    const fs::path exr = dir / "sub" / "box.exr";
+    const fs::path stats = dir / "stats.json";
+    const RunResult r = runVkphoton("render " + kBox + " --validate --spp 4 --width 32 --height 24 --seed 3 -o " +
+                                    exr.string() + " --stats-json " + stats.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fs::exists(exr));
+    EXPECT_TRUE(fs::exists(dir / "sub" / "box.png"));
+    std::vector<std::pair<std::string, std::string>> attributes;
+    const ImageRgb image = readExr(exr, &attributes);
+    EXPECT_EQ(image.width, 32u);
+    EXPECT_EQ(image.height, 24u);
+    bool sawSpp = false, sawPartial = false;
+    for (const auto& [key, value] : attributes) {
+        if (key == "vkphoton/spp") { sawSpp = true; EXPECT_EQ(value, "4"); }
+        if (key == "vkphoton/partial") { sawPartial = true; EXPECT_EQ(value, "false"); }
+    }
+    EXPECT_TRUE(sawSpp);
+    EXPECT_TRUE(sawPartial);
+    std::ifstream in(stats);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["counters"]["samplesPerPixel"], 4);
+    EXPECT_GT(j["timings"]["renderSeconds"].get<double>(), 0.0);
+    // No temporary files left behind.
+    for (const auto& entry : fs::recursive_directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
+TEST(Cli, TimeLimitMarksThePartialImage) {
+    const fs::path dir = tempDir("partial");
+    const fs::path exr = dir / "box.exr";
+    const RunResult r = runVkphoton("render " + kBox + " --quiet --spp 100000 --width 16 --height 16 --time-limit 1 -o " +
+                                    exr.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::vector<std::pair<std::string, std::string>> attributes;
+    readExr(exr, &attributes);
+    bool partial = false;
+    for (const auto& [key, value] : attributes)
+        if (key == "vkphoton/partial") partial = value == "true";
+    EXPECT_TRUE(partial);
+}
+
+TEST(Cli, UnwritableOutputFailsWithoutLeavingFiles) {
+    const fs::path dir = tempDir("unwritable");
+    std::ofstream(dir / "file") << "x";
+    const RunResult r = runVkphoton("render " + kBox + " --quiet --spp 1 --width 8 --height 8 -o " +
+                                    (dir / "file" / "out.exr").string());
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "file" / "out.exr"));
+}
+
+}  // namespace
+}  // namespace vkp

@@ -1,0 +1,35 @@
+#include "gpu_test_support.h"
+
+#include "vk/shader_registry.h"
+
+namespace vkp::embedded {
+extern const vk::ShaderEntry* const vkphoton_test_shaders_table[];
+}
+
+namespace vkp::test {
+namespace {
+size_t g_seenMessages = 0;
+}
+
+vk::Context& gpu() {
+    static std::unique_ptr<vk::Context> context = [] {
+        vk::registerShaderTable(embedded::vkphoton_test_shaders_table);
+        vk::ContextOptions options;
+        options.validate = true;
+        return std::make_unique<vk::Context>(options);
+    }();
+    return *context;
+}
+
+void expectNoValidationMessages() {
+    vk::Context& context = gpu();
+    const size_t count = context.validationMessageCount();
+    if (count != g_seenMessages) {
+        const auto messages = context.validationMessages();
+        ADD_FAILURE() << (count - g_seenMessages) << " validation message(s); first recorded: "
+                      << (messages.empty() ? "" : messages.front());
+        g_seenMessages = count;
+    }
+}
+
+}  // namespace vkp::test

@@ -1,0 +1,25 @@
+// GPU test support: one lavapipe Vulkan context with validation for the whole test binary, the
+// test shaders registered, and a check that no validation message arrived during a test.
+#pragma once
+
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "vk/context.h"
+
+namespace vkp::test {
+
+// The shared context (created on first use, validation always on).
+vk::Context& gpu();
+
+// Fails the current test if the validation layer reported anything since the last call.
+void expectNoValidationMessages();
+
+// Base fixture for tests that use the GPU: checks validation after each test.
+class GpuTest : public ::testing::Test {
+protected:
+    void TearDown() override { expectNoValidationMessages(); }
+};
+
+}  // namespace vkp::test
