@@ -37,81 +37,111 @@ vec3 directLight(SurfaceHit hit, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 
     if (wi.z <= 0.0f || dot(ls.wi, sideNormal) <= 0.0f) return vec3(0.0f);  // light behind the surface
     vec3 f = evalBsdf(bsdf, wo, wi);
     if (f.r + f.g + f.b <= 0.0f) return vec3(0.0f);
-    vec3 origin = offsetRayOrigin(hit.position, hit.geometricNormal, ls.wi);
-    float tMax = ls.delta && ls.distance >= kInfinity ? kInfinity : ls.distance * 0.9999f;
-    if (traceAny(origin, ls.wi, tMax)) return vec3(0.0f);
+    if (!lightVisible(hit.position, hit.geometricNormal, ls)) return vec3(0.0f);
     float weight = ls.delta ? 1.0f : powerHeuristic(ls.pdf, pdfBsdf(bsdf, wo, wi));
     return f * wi.z * ls.radiance * (weight / ls.pdf);
 }
 
-vec3 tracePath(vec3 origin, vec3 dir, inout Sampler rng) {
-    vec3 radiance = vec3(0.0f);
-    vec3 throughput = vec3(1.0f);
-    bool lastDelta = true;       // camera rays count as delta: emission is added unweighted
-    float lastPdf = 0.0f;
-    vec3 mediumSigma = vec3(0.0f);  // absorption of the solid the ray is inside (Beer-Lambert)
-    bool useNee = (params.flags & kPathFlagNoDirectLightSampling) == 0u;
+// The state of one camera path between bounces.
+struct PathState {
+    vec3 origin;
+    vec3 dir;
+    vec3 throughput;
+    vec3 radiance;
+    vec3 mediumSigma;  // absorption of the solid the ray is inside (Beer-Lambert)
+    float lastPdf;     // solid-angle pdf of the last BSDF sample (for MIS at emitters)
+    bool lastDelta;    // camera rays and delta lobes: emission is added unweighted
+    uint depth;
+    Sampler rng;
+};
 
-    for (uint depth = 0u; depth <= params.maxDepth; ++depth) {
-        float tHit;
-        uint tri;
-        float b1;
-        float b2;
-        if (!traceClosest(origin, dir, kInfinity, tHit, tri, b1, b2)) break;
-        throughput *= exp(-mediumSigma * tHit);
-        SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
-        GpuMaterial material = materials[hit.material];
-
-        if (emitsTowards(material, hit.frontFace)) {
-            vec3 le = emittedRadiance(material, hit.uv);
-            if (le.r + le.g + le.b > 0.0f) {
-                float weight = 1.0f;
-                if (useNee && !lastDelta) {
-                    float cosLight = abs(dot(dir, hit.geometricNormal));
-                    float lightPdf = hit.emitterPdfArea * tHit * tHit / max(cosLight, 1.0e-8f);
-                    weight = powerHeuristic(lastPdf, lightPdf);
-                }
-                radiance += throughput * le * weight;
-            }
-        }
-        if (depth == params.maxDepth) break;
-
-        BsdfParams bsdf = bsdfParamsAt(material, hit.uv);
-        // Shading frame on the side the ray came from.
-        vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
-        vec3 t;
-        vec3 b;
-        orthonormalBasis(n, t, b);
-        vec3 wo = toLocal(-dir, t, b, n);
-        if (wo.z <= 0.0f) wo.z = 1.0e-4f;  // shading normal facing away: treat as grazing
-
-        if (useNee) radiance += throughput * directLight(hit, bsdf, wo, t, b, n, rng);
-        else { nextSample(rng); nextSample(rng); nextSample(rng); }
-
-        vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
-        BsdfSample bs = sampleBsdf(bsdf, wo, hit.frontFace, true, u);
-        float uRoulette = nextSample(rng);
-        if (bs.lobe == kLobeNone) break;
-        throughput *= bs.weight;
-        lastDelta = (bs.lobe & kLobeDelta) != 0u;
-        lastPdf = bs.pdf;
-        dir = normalize(toWorld(bs.wi, t, b, n));
-        origin = offsetRayOrigin(hit.position, hit.geometricNormal, dir);
-
-        // Entering or leaving a solid with KHR_materials_volume absorption.
-        if ((bs.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)
-            mediumSigma = hit.frontFace ? material.attenuationCoeff : vec3(0.0f);
-
-        // Russian roulette after a few bounces, survival by the throughput's largest component.
-        if (depth >= 3u) {
-            float survive = min(max(throughput.r, max(throughput.g, throughput.b)), 0.95f);
-            if (uRoulette >= survive) break;
-            throughput /= survive;
-        }
-    }
-    return radiance;
+PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
+    PathState st;
+    st.rng = makeSampler(sampleIndex, streamSeed);
+    vec2 jitter = nextSample2(st.rng);
+    st.origin = params.camera.position;
+    st.dir = cameraRayDirection(vec2(float(px) + jitter.x, float(py) + jitter.y));
+    st.throughput = vec3(1.0f);
+    st.radiance = vec3(0.0f);
+    st.mediumSigma = vec3(0.0f);
+    st.lastPdf = 0.0f;
+    st.lastDelta = true;
+    st.depth = 0u;
+    return st;
 }
 
+// Extends the path by one vertex: emission (MIS-weighted), next-event estimation, BSDF sampling
+// and Russian roulette. Returns false when the path has ended.
+bool extendPath(inout PathState st) {
+    bool useNee = (params.flags & kPathFlagNoDirectLightSampling) == 0u;
+    float tHit;
+    uint tri;
+    float b1;
+    float b2;
+    if (!traceClosest(st.origin, st.dir, kInfinity, tHit, tri, b1, b2)) return false;
+    st.throughput *= exp(-st.mediumSigma * tHit);
+    SurfaceHit hit = surfaceAt(tri, b1, b2, st.dir);
+    GpuMaterial material = materials[hit.material];
+
+    if (emitsTowards(material, hit.frontFace)) {
+        vec3 le = emittedRadiance(material, hit.uv);
+        if (le.r + le.g + le.b > 0.0f) {
+            float weight = 1.0f;
+            if (useNee && !st.lastDelta) {
+                float cosLight = abs(dot(st.dir, hit.geometricNormal));
+                float lightPdf = hit.emitterPdfArea * tHit * tHit / max(cosLight, 1.0e-8f);
+                weight = powerHeuristic(st.lastPdf, lightPdf);
+            }
+            st.radiance += st.throughput * le * weight;
+        }
+    }
+    if (st.depth == params.maxDepth) return false;
+
+    BsdfParams bsdf = bsdfParamsAt(material, hit.uv);
+    // Shading frame on the side the ray came from.
+    vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
+    vec3 t;
+    vec3 b;
+    orthonormalBasis(n, t, b);
+    vec3 wo = toLocal(-st.dir, t, b, n);
+    if (wo.z <= 0.0f) wo.z = 1.0e-4f;  // shading normal facing away: treat as grazing
+
+    if (useNee) {
+        st.radiance += st.throughput * directLight(hit, bsdf, wo, t, b, n, st.rng);
+    } else {
+        nextSample(st.rng);  // keep the sample dimensions of both modes aligned
+        nextSample(st.rng);
+        nextSample(st.rng);
+    }
+
+    vec3 u = vec3(nextSample(st.rng), nextSample(st.rng), nextSample(st.rng));
+    BsdfSample bs = sampleBsdf(bsdf, wo, hit.frontFace, true, u);
+    float uRoulette = nextSample(st.rng);
+    if (bs.lobe == kLobeNone) return false;
+    st.throughput *= bs.weight;
+    st.lastDelta = (bs.lobe & kLobeDelta) != 0u;
+    st.lastPdf = bs.pdf;
+    st.dir = normalize(toWorld(bs.wi, t, b, n));
+    st.origin = offsetRayOrigin(hit.position, hit.geometricNormal, st.dir);
+
+    // Entering or leaving a solid with KHR_materials_volume absorption.
+    if ((bs.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)
+        st.mediumSigma = hit.frontFace ? material.attenuationCoeff : vec3(0.0f);
+
+    // Russian roulette after a few bounces, survival by the throughput's largest component.
+    if (st.depth >= 3u) {
+        float survive = min(max(st.throughput.r, max(st.throughput.g, st.throughput.b)), 0.95f);
+        if (uRoulette >= survive) return false;
+        st.throughput /= survive;
+    }
+    st.depth += 1u;
+    return true;
+}
+
+// Path regeneration (Novak, Havran, Dachsbacher, "Path Regeneration for Interactive Path
+// Tracing", 2010): the loop advances one bounce per iteration and a lane whose path ended starts
+// its next sample at once, so lanes running in lock-step (8 per SIMD group on lavapipe) are not
+// held idle by the longest path of each sample. Per-sample arithmetic is unchanged.
 void main() {
     uint pixel = gl_GlobalInvocationID.x;
     if (pixel >= params.width * params.height) return;
@@ -119,16 +149,18 @@ void main() {
     uint py = pixel / params.width;
     uint streamSeed = hashCombine(params.seed, pixel);
     vec4 acc = film[pixel];
-    for (uint i = 0u; i < params.sampleCount; ++i) {
-        Sampler rng = makeSampler(params.firstSample + i, streamSeed);
-        vec2 jitter = nextSample2(rng);
-        vec3 dir = cameraRayDirection(vec2(float(px) + jitter.x, float(py) + jitter.y));
-        vec3 l = tracePath(params.camera.position, dir, rng);
+    uint done = 0u;
+    PathState st = startPath(params.firstSample, streamSeed, px, py);
+    while (done < params.sampleCount) {
+        if (extendPath(st)) continue;
+        vec3 l = st.radiance;
         if (any(isnan(l)) || any(isinf(l))) {
             atomicAdd(counters[0], 1u);
             l = vec3(0.0f);
         }
         acc += vec4(l, 1.0f);
+        done += 1u;
+        if (done < params.sampleCount) st = startPath(params.firstSample + done, streamSeed, px, py);
     }
     film[pixel] = acc;
 }

@@ -22,10 +22,15 @@ const uint kSceneBindingCount = 8u;
 #include "shared/intersect.glsl"
 #include "shared/bvh_traverse.glsl"
 
-// Offsets shadow and continuation rays off the surface, scaled by the hit point's magnitude.
+// Distance by which rays leave a surface at p, scaled by p's magnitude (float spacing grows
+// with it).
+float rayEpsilon(vec3 p) {
+    return 1.0e-4f * max(1.0f, max(abs(p.x), max(abs(p.y), abs(p.z))));
+}
+
+// Offsets shadow and continuation rays off the surface along the normal, on dir's side.
 vec3 offsetRayOrigin(vec3 p, vec3 n, vec3 dir) {
-    float scale = 1.0e-4f * max(1.0f, max(abs(p.x), max(abs(p.y), abs(p.z))));
-    return p + (dot(dir, n) >= 0.0f ? n : -n) * scale;
+    return p + (dot(dir, n) >= 0.0f ? n : -n) * rayEpsilon(p);
 }
 
 float srgbToLinear(float c) {
@@ -130,6 +135,7 @@ uint pickLight(float u, uint lightCount) {
 struct LightSample {
     vec3 wi;          // unit direction from the shading point towards the light
     float distance;   // to the light sample (kInfinity for directional lights)
+    vec3 position;    // the sampled point on the light (unused for directional lights)
     vec3 radiance;    // incident radiance (area lights) or irradiance factor (delta lights)
     float pdf;        // solid-angle pdf incl. selection (area lights); selection pdf (delta lights)
     bool delta;
@@ -144,6 +150,7 @@ LightSample sampleLight(uint index, vec3 x, vec2 u) {
     if (light.type == kLightDirectional) {
         ls.wi = -light.direction;
         ls.distance = kInfinity;
+        ls.position = vec3(0.0f);
         ls.radiance = light.intensity;
         return ls;
     }
@@ -157,6 +164,7 @@ LightSample sampleLight(uint index, vec3 x, vec2 u) {
         vec3 ng = c / (2.0f * area);
         vec3 d = p - x;
         float dist2 = dot(d, d);
+        ls.position = p;
         ls.distance = sqrt(dist2);
         ls.wi = d / ls.distance;
         float cosLight = dot(-ls.wi, ng);
@@ -172,6 +180,7 @@ LightSample sampleLight(uint index, vec3 x, vec2 u) {
     }
     vec3 d = light.position - x;
     float dist2 = dot(d, d);
+    ls.position = light.position;
     ls.distance = sqrt(dist2);
     ls.wi = d / ls.distance;
     ls.radiance = light.intensity / dist2;
@@ -180,6 +189,18 @@ LightSample sampleLight(uint index, vec3 x, vec2 u) {
         ls.radiance *= t * t;
     }
     return ls;
+}
+
+// Visibility between a surface point (with geometric normal ng) and a light sample: the shadow
+// ray leaves the surface like any other ray and stops short of the sampled point by the same
+// epsilon, so neither the surface nor the light's own triangle can occlude the sample.
+bool lightVisible(vec3 x, vec3 ng, LightSample ls) {
+    vec3 origin = offsetRayOrigin(x, ng, ls.wi);
+    if (ls.distance >= kInfinity) return !traceAny(origin, ls.wi, kInfinity);
+    vec3 toLight = ls.position - origin;
+    float distance = length(toLight);
+    float tMax = distance - 2.0f * rayEpsilon(ls.position);
+    return tMax <= 0.0f || !traceAny(origin, toLight / distance, tMax);
 }
 
 #endif

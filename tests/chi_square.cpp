@@ -46,7 +46,7 @@ double chiSquarePValue(double statistic, int dof) {
 
 ChiSquareResult chiSquareSphere(const std::function<bool(int, glm::vec3&)>& sample,
                                 const std::function<double(const glm::vec3&)>& pdf, int sampleCount,
-                                int thetaBins, int phiBins) {
+                                int thetaBins, int phiBins, int subdivisions) {
     const int bins = thetaBins * phiBins;
     std::vector<double> observed(bins + 1, 0.0), expected(bins + 1, 0.0);  // last: no sample
     for (int i = 0; i < sampleCount; ++i) {
@@ -60,7 +60,7 @@ ChiSquareResult chiSquareSphere(const std::function<bool(int, glm::vec3&)>& samp
         observed[t * phiBins + p] += 1.0;
     }
     // Integrate the pdf over each bin in (z, phi), where dOmega = dz dphi.
-    constexpr int kSub = 12;
+    const int kSub = subdivisions;
     double total = 0.0;
     for (int t = 0; t < thetaBins; ++t)
         for (int p = 0; p < phiBins; ++p) {

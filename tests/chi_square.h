@@ -22,9 +22,10 @@ double chiSquarePValue(double statistic, int degreesOfFreedom);
 
 // `sample(i, w)` draws the i-th sample into w (unit vector over the full sphere) and returns
 // false when the routine produced no sample (it then counts as mass outside the pdf's support).
-// `pdf(w)` is the claimed solid-angle density.
+// `pdf(w)` is the claimed solid-angle density, integrated over each bin on a
+// subdivisions x subdivisions grid (raise it for pdfs with sharp edges).
 ChiSquareResult chiSquareSphere(const std::function<bool(int, glm::vec3&)>& sample,
                                 const std::function<double(const glm::vec3&)>& pdf, int sampleCount,
-                                int thetaBins = 16, int phiBins = 32);
+                                int thetaBins = 16, int phiBins = 32, int subdivisions = 12);
 
 }  // namespace vkp::test

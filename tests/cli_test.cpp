@@ -6,7 +6,11 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <csignal>
+#include <spawn.h>
 #include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
 
 #include "image/exr.h"
 
@@ -91,7 +95,7 @@ TEST(Cli, RenderWritesExrPngAndStats) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(fs::exists(exr));
     EXPECT_TRUE(fs::exists(dir / "sub" / "box.png"));
-    std::vector<std::pair<std::string, std::string>> attributes;
+    ExrAttributes attributes;
     const ImageRgb image = readExr(exr, &attributes);
     EXPECT_EQ(image.width, 32u);
     EXPECT_EQ(image.height, 24u);
@@ -123,6 +127,35 @@ TEST(Cli, TimeLimitMarksThePartialImage) {
     for (const auto& [key, value] : attributes)
         if (key == "vkphoton/partial") partial = value == "true";
     EXPECT_TRUE(partial);
+}
+
+TEST(Cli, InterruptWritesThePartialImage) {
+    const fs::path dir = tempDir("sigint");
+    const fs::path exr = dir / "box.exr";
+    const std::string exrArg = exr.string();
+    std::vector<std::string> args{VKPHOTON_BINARY, "render", kBox, "--quiet", "--spp", "1000000", "--width", "16",
+                                  "--height", "16", "-o", exrArg};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    ASSERT_EQ(posix_spawn(&pid, VKPHOTON_BINARY, nullptr, nullptr, argv.data(), environ), 0);
+    std::this_thread::sleep_for(std::chrono::seconds(3));  // past start-up, into the render loop
+    kill(pid, SIGINT);
+    int status = 0;
+    ASSERT_EQ(waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130);
+    ASSERT_TRUE(fs::exists(exr));
+    ExrAttributes attributes;
+    readExr(exr, &attributes);
+    std::string partial, reason;
+    for (const auto& [key, value] : attributes) {
+        if (key == "vkphoton/partial") partial = value;
+        if (key == "vkphoton/stopReason") reason = value;
+    }
+    EXPECT_EQ(partial, "true");
+    EXPECT_EQ(reason, "interrupted");
 }
 
 TEST(Cli, UnwritableOutputFailsWithoutLeavingFiles) {

@@ -8,6 +8,7 @@
 #include "chi_square.h"
 #include "shared/bsdf.glsl"
 #include "shared/halton.glsl"
+#include "shared/intersect.glsl"
 #include "shared/sampling.glsl"
 
 namespace vkp {
@@ -199,6 +200,38 @@ TEST(Halton, UnscrambledMatchesRadicalInverse) {
         seen[static_cast<int>(static_cast<uint64_t>(digits) * 81 / limit)]++;
     }
     for (int s : seen) EXPECT_EQ(s, 1);
+}
+
+}  // namespace
+}  // namespace vkp
+
+namespace vkp {
+namespace {
+
+// Light sampling: directions from a shading point to uniform points on a triangle light have the
+// solid-angle pdf d^2 / (A |cos theta_light|) over the triangle's projection (what
+// scene_access.glsl's sampleLight divides by).
+TEST(Sampling, TriangleLightSolidAnglePdf) {
+    const glm::vec3 v0(-0.6f, -0.4f, 1.0f), v1(0.8f, -0.2f, 1.5f), v2(0.1f, 0.9f, 0.7f);
+    const glm::vec3 x(0.05f, 0.02f, 0.0f);
+    const glm::vec3 c = glm::cross(v1 - v0, v2 - v0);
+    const float area = 0.5f * glm::length(c);
+    const glm::vec3 ng = glm::normalize(c);
+    std::mt19937 rng(10);
+    const auto r = test::chiSquareSphere(
+        [&](int, glm::vec3& w) {
+            const glm::vec2 b = sampleTriangleBarycentrics(uniform2(rng));
+            const glm::vec3 p = (1.0f - b.x - b.y) * v0 + b.x * v1 + b.y * v2;
+            w = glm::normalize(p - x);
+            return true;
+        },
+        [&](const glm::vec3& w) {
+            float t, b1, b2;
+            if (!intersectTriangle(x, w, v0, v1, v2, 1e30f, t, b1, b2)) return 0.0;
+            return double(t) * t / (area * std::abs(glm::dot(w, ng)));
+        },
+        kSamples, 32, 32, 64);
+    EXPECT_GT(r.pValue, kSignificance) << r.details;
 }
 
 }  // namespace

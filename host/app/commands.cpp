@@ -1,5 +1,6 @@
 #include "app/commands.h"
 
+#include <array>
 #include <chrono>
 
 #include <fmt/format.h>
@@ -9,6 +10,7 @@
 #include "app/progress.h"
 #include "image/atomic_file.h"
 #include "image/exr.h"
+#include "image/metrics.h"
 #include "image/png.h"
 #include "scene/gltf_loader.h"
 #include "util/errors.h"
@@ -23,7 +25,7 @@ std::filesystem::path defaultOutput(const std::filesystem::path& scene) {
     return std::filesystem::path("out") / (scene.stem().string() + ".exr");
 }
 
-nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStats& stats,
+nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStats& stats, const ImageRgb& image,
                            double loadSeconds, double totalSeconds) {
     const RenderSettings& s = options.settings;
     nlohmann::json j;
@@ -41,6 +43,7 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
     j["counters"] = {{"samplesPerPixel", stats.samplesPerPixel}, {"cameraPaths", stats.cameraPaths},
                      {"nonFiniteSamples", stats.nonFiniteSamples},
                      {"pathsPerSecond", stats.renderSeconds > 0 ? stats.cameraPaths / stats.renderSeconds : 0.0}};
+    j["meanRadiance"] = meanRadiance(image);
     j["partial"] = stats.partial;
     j["stopReason"] = stats.stopReason;
     return j;
@@ -96,7 +99,7 @@ int runRender(const RenderCommandOptions& options) {
     writeExr(exrPath, result.image, attributes);
     writePng(pngPath, result.image);
     if (!options.statsJson.empty())
-        writeTextAtomically(options.statsJson, statsToJson(options, stats, loadSeconds, totalSeconds).dump(2) + "\n");
+        writeTextAtomically(options.statsJson, statsToJson(options, stats, result.image, loadSeconds, totalSeconds).dump(2) + "\n");
     if (stats.nonFiniteSamples > 0)
         fmt::print(stderr, "warning: {} sample(s) were NaN or infinite and were dropped\n", stats.nonFiniteSamples);
     if (!options.quiet)

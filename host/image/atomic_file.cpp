@@ -1,43 +1,132 @@
 #include "image/atomic_file.h"
 
-#include <fstream>
+#include <atomic>
+#include <cerrno>
+#include <stdexcept>
 #include <system_error>
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include "util/errors.h"
 
 namespace vkp {
+namespace {
 
-void writeAtomically(const std::filesystem::path& path,
-                     const std::function<void(const std::filesystem::path&)>& write) {
-    namespace fs = std::filesystem;
-    const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+namespace fs = std::filesystem;
+
+std::string errnoText(int error) { return std::error_code(error, std::generic_category()).message(); }
+
+[[noreturn]] void fail(const fs::path& path, const std::string& reason) {
+    throw RuntimeError(fmt::format("cannot write {}: {}", path.string(), reason));
+}
+
+// Checks the target and returns its folder, creating it if missing.
+fs::path prepareFolder(const fs::path& path) {
+    if (path.empty()) throw RuntimeError("cannot write a file with an empty path");
+    if (!path.has_filename()) fail(path, "the path names a directory, not a file");
     std::error_code ec;
+    const fs::file_status target = fs::symlink_status(path, ec);
+    // Renaming over a device or a FIFO (say -o /dev/null run as root) would replace the special
+    // file itself; a directory would fail later with a less helpful message.
+    if (fs::is_directory(fs::status(path, ec))) fail(path, "it is a directory");
+    if (fs::exists(target) && !fs::is_regular_file(target) && !fs::is_symlink(target))
+        fail(path, "it exists and is not a regular file");
+
+    const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    if (fs::is_directory(fs::status(dir, ec))) return dir;
+    // Name the component in the way: "a/file exists and is not a directory" says more than
+    // create_directories' "Not a directory".
+    for (fs::path p = dir; !p.empty(); p = p.parent_path()) {
+        const fs::file_status s = fs::status(p, ec);
+        if (fs::exists(s)) {
+            if (!fs::is_directory(s)) fail(path, fmt::format("{} exists and is not a directory", p.string()));
+            break;
+        }
+        if (p == p.parent_path()) break;  // the root
+    }
     fs::create_directories(dir, ec);
-    if (ec) throw RuntimeError(fmt::format("cannot write {}: cannot create {}: {}", path.string(), dir.string(), ec.message()));
-    const fs::path temp = dir / fmt::format(".{}.tmp-{}", path.filename().string(), ::getpid());
+    if (ec) fail(path, fmt::format("cannot create directory {}: {}", dir.string(), ec.message()));
+    return dir;
+}
+
+fs::path temporaryPath(const fs::path& dir, const fs::path& path) {
+    // The counter keeps two threads of one process writing the same target apart; the PID keeps
+    // processes apart.
+    static std::atomic<unsigned> counter{0};
+    std::string name = path.filename().string();
+    if (name.size() > 200) name.resize(200);  // stay under NAME_MAX (255) with the suffix
+    return dir / fmt::format(".{}.tmp-{}-{}", name, ::getpid(), counter.fetch_add(1));
+}
+
+void writeWholeFile(const fs::path& file, std::string_view bytes) {
+    // O_TRUNC, not O_EXCL: a run killed earlier with the same PID (common in containers) may
+    // have left this very name behind.
+    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0)
+        throw std::runtime_error(fmt::format("cannot create a file in {}: {}", file.parent_path().string(), errnoText(errno)));
+    size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            const int error = n < 0 ? errno : EIO;
+            ::close(fd);
+            throw std::runtime_error(errnoText(error));
+        }
+        done += size_t(n);
+    }
+    if (::close(fd) != 0) throw std::runtime_error(errnoText(errno));
+}
+
+// Flushes the finished file to disk before the rename, so that a crash right after the rename
+// cannot leave an empty or partial file under the target name.
+void syncToDisk(const fs::path& file) {
+    const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw std::runtime_error(fmt::format("cannot reopen the finished file: {}", errnoText(errno)));
+    const int result = ::fsync(fd);
+    const int error = errno;
+    ::close(fd);
+    // Some file systems cannot sync at all (EINVAL, ENOTSUP); the data is as safe as they allow.
+    if (result != 0 && error != EINVAL && error != ENOTSUP && error != ENOSYS)
+        throw std::runtime_error(fmt::format("cannot sync to disk: {}", errnoText(error)));
+}
+
+void commit(const fs::path& path, const std::function<void(const fs::path&)>& write) {
+    const fs::path dir = prepareFolder(path);
+    const fs::path temp = temporaryPath(dir, path);
+    std::string reason;
     try {
         write(temp);
+        syncToDisk(temp);
+        std::error_code ec;
+        fs::rename(temp, path, ec);
+        if (!ec) return;
+        reason = ec.message();
     } catch (const std::exception& e) {
-        fs::remove(temp, ec);
-        throw RuntimeError(fmt::format("cannot write {}: {}", path.string(), e.what()));
+        reason = e.what();
+    } catch (...) {
+        reason = "unknown error";
     }
-    fs::rename(temp, path, ec);
-    if (ec) {
-        fs::remove(temp, ec);
-        throw RuntimeError(fmt::format("cannot write {}: {}", path.string(), ec.message()));
-    }
+    std::error_code ignored;
+    fs::remove(temp, ignored);
+    fail(path, reason);
+}
+
+}  // namespace
+
+void writeBytesAtomically(const std::filesystem::path& path, std::string_view bytes) {
+    commit(path, [&](const fs::path& temp) { writeWholeFile(temp, bytes); });
 }
 
 void writeTextAtomically(const std::filesystem::path& path, const std::string& text) {
-    writeAtomically(path, [&](const std::filesystem::path& temp) {
-        std::ofstream out(temp, std::ios::binary);
-        out << text;
-        out.flush();
-        if (!out) throw std::runtime_error("write failed");
-    });
+    writeBytesAtomically(path, text);
+}
+
+void writeAtomically(const std::filesystem::path& path,
+                     const std::function<void(const std::filesystem::path&)>& write) {
+    commit(path, write);
 }
 
 }  // namespace vkp

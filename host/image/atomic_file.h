@@ -1,18 +1,27 @@
-// Writing a file so that readers never see it half-written: write a temporary file beside the
-// target, then rename it over the target. Parent directories are created as needed.
+// Writing a file so that readers never see it half-written: the content goes to a temporary file
+// beside the target (".NAME.tmp-PID-N"), which is flushed to disk and then renamed over the
+// target. A failed or interrupted write leaves the previous target, if any, untouched, and no
+// temporary file (short of the process being killed mid-write). Missing parent directories are
+// created.
 #pragma once
 
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <string_view>
 
 namespace vkp {
 
-// Calls `write(tempPath)` and renames the result to `path`. On any failure the temporary file
-// is removed and RuntimeError names `path` and the reason.
-void writeAtomically(const std::filesystem::path& path,
-                     const std::function<void(const std::filesystem::path&)>& write);
+// Writes `bytes` to `path` atomically. On any failure the temporary file is removed and
+// RuntimeError names `path` and the reason.
+void writeBytesAtomically(const std::filesystem::path& path, std::string_view bytes);
 
 void writeTextAtomically(const std::filesystem::path& path, const std::string& text);
+
+// For writers that insist on opening the file themselves: calls `write(tempPath)`, which must
+// create and fully write and close `tempPath` (or throw), then syncs it and renames it to `path`.
+// Failures as above; an exception from `write` becomes the reason.
+void writeAtomically(const std::filesystem::path& path,
+                     const std::function<void(const std::filesystem::path&)>& write);
 
 }  // namespace vkp

@@ -12,10 +12,15 @@ namespace vkp {
 
 using ExrAttributes = std::vector<std::pair<std::string, std::string>>;
 
-// Writes atomically (temporary file + rename); throws RuntimeError naming the path on failure.
+// Writes channels R, G, B as FLOAT with ZIP compression, each attribute as a string header
+// attribute (a later duplicate name wins). Writes atomically (see atomic_file.h); throws
+// RuntimeError naming the path on failure, including an image that is not well-formed or an
+// attribute name that OpenEXR rejects (empty, too long, or a standard non-string attribute).
 void writeExr(const std::filesystem::path& path, const ImageRgb& image, const ExrAttributes& attributes = {});
 
-// Reads the R, G, B channels (half or float) of an EXR; string attributes into `attributes`.
+// Reads the R, G, B channels (half, float or uint, converted to float; alpha and other channels
+// ignored) of a scan-line or tiled EXR, and its string attributes into `attributes` (sorted by
+// name, as OpenEXR keeps them). Throws InputError naming the path when the file cannot be read or lacks R, G or B.
 ImageRgb readExr(const std::filesystem::path& path, ExrAttributes* attributes = nullptr);
 
 }  // namespace vkp

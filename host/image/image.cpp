@@ -1,9 +1,16 @@
 #include "image/image.h"
 
 #include <cmath>
-#include <stdexcept>
 
 namespace vkp {
+
+ImageRgb makeImage(uint32_t width, uint32_t height) {
+    return ImageRgb{width, height, std::vector<float>(size_t(width) * height * 3, 0.0f)};
+}
+
+bool isWellFormed(const ImageRgb& image) {
+    return image.width > 0 && image.height > 0 && image.pixels.size() == size_t(image.width) * image.height * 3;
+}
 
 double meanValue(const ImageRgb& image) {
     if (image.pixels.empty()) return 0.0;
@@ -16,18 +23,6 @@ bool allFinite(const ImageRgb& image) {
     for (float v : image.pixels)
         if (!std::isfinite(v)) return false;
     return true;
-}
-
-double relativeMse(const ImageRgb& image, const ImageRgb& reference) {
-    if (image.width != reference.width || image.height != reference.height)
-        throw std::invalid_argument("relativeMse: images differ in size");
-    if (image.pixels.empty()) return 0.0;
-    double sum = 0.0;
-    for (size_t i = 0; i < image.pixels.size(); ++i) {
-        const double d = double(image.pixels[i]) - reference.pixels[i];
-        sum += d * d / (double(reference.pixels[i]) * reference.pixels[i] + 1e-2);
-    }
-    return sum / static_cast<double>(image.pixels.size());
 }
 
 }  // namespace vkp

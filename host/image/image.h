@@ -1,4 +1,4 @@
-// A linear RGB float image (row-major, top row first) and simple statistics over it.
+// A linear RGB float image (row-major, top row first) and simple checks over it.
 #pragma once
 
 #include <cstddef>
@@ -10,17 +10,20 @@ namespace vkp {
 struct ImageRgb {
     uint32_t width = 0;
     uint32_t height = 0;
-    std::vector<float> pixels;  // 3 floats per pixel
+    std::vector<float> pixels;  // 3 floats per pixel: R, G, B
 
     float* at(uint32_t x, uint32_t y) { return &pixels[3 * (size_t(y) * width + x)]; }
     const float* at(uint32_t x, uint32_t y) const { return &pixels[3 * (size_t(y) * width + x)]; }
 };
 
+// A black image of the given size.
+ImageRgb makeImage(uint32_t width, uint32_t height);
+// True when the image is non-empty and holds exactly width * height * 3 floats; the writers
+// refuse anything else rather than read past the end of `pixels`.
+bool isWellFormed(const ImageRgb& image);
 // Mean over all pixels and channels.
 double meanValue(const ImageRgb& image);
 // True when no value is NaN or infinite.
 bool allFinite(const ImageRgb& image);
-// Relative MSE: mean over pixels and channels of (a - b)^2 / (b^2 + 1e-2); b is the reference.
-double relativeMse(const ImageRgb& image, const ImageRgb& reference);
 
 }  // namespace vkp

@@ -1,9 +1,10 @@
 // Bounds-checked reading of glTF accessors: every offset, stride and count is checked against the
 // buffer view and the buffer before a byte is read, so a hostile file cannot read out of bounds.
+// Supports every component type (normalized or not, as KHR_mesh_quantization allows), interleaved
+// views, accessors without a bufferView (zeros) and sparse accessors.
 #pragma once
 
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -11,9 +12,9 @@
 
 namespace vkp {
 
-// Errors name the element: "accessors[5]: ...". The caller adds the file name.
+// Errors are InputErrors naming the element: "accessors[5]: ...". The caller adds the file name.
 std::vector<glm::vec3> readVec3Accessor(const tinygltf::Model& model, int accessor);
-std::vector<glm::vec2> readVec2Accessor(const tinygltf::Model& model, int accessor);  // float or normalized
-std::vector<uint32_t> readIndexAccessor(const tinygltf::Model& model, int accessor);
+std::vector<glm::vec2> readVec2Accessor(const tinygltf::Model& model, int accessor);
+std::vector<uint32_t> readIndexAccessor(const tinygltf::Model& model, int accessor);  // unsigned types only
 
 }  // namespace vkp

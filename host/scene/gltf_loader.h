@@ -13,6 +13,7 @@ struct GltfLimits {
     uint64_t maxFileBytes = 2ull << 30;       // the .gltf/.glb itself and each external buffer
     uint32_t maxImageDimension = 16384;       // width and height of any texture
     uint64_t maxImagePixels = 64ull << 20;    // width * height of any texture
+    uint64_t maxTotalImagePixels = 256ull << 20;  // all images of the file together (1 GiB as RGBA8)
     uint64_t maxTriangles = 1ull << 26;
 };
 

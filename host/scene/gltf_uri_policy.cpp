@@ -1,95 +1,70 @@
 #include "scene/gltf_uri_policy.h"
 
 #include <cctype>
-#include <cstring>
-#include <fstream>
-#include <iterator>
-#include <vector>
-
-#include <fmt/format.h>
-#include <nlohmann/json.hpp>
-
-#include "util/errors.h"
 
 namespace vkp {
 namespace {
 
-// The JSON text of a .gltf, or the JSON chunk of a .glb (header: magic, version, length; then
-// chunk length, chunk type "JSON", data).
-std::string jsonText(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw InputError(fmt::format("{}: cannot open the file", file.string()));
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0) {
-        if (bytes.size() < 20) throw InputError(fmt::format("{}: truncated GLB header", file.string()));
-        uint32_t chunkLength = 0, chunkType = 0;
-        std::memcpy(&chunkLength, bytes.data() + 12, 4);
-        std::memcpy(&chunkType, bytes.data() + 16, 4);
-        if (chunkType != 0x4E4F534Au || uint64_t(chunkLength) + 20 > bytes.size())
-            throw InputError(fmt::format("{}: the GLB's first chunk is not a complete JSON chunk", file.string()));
-        return bytes.substr(20, chunkLength);
-    }
-    return bytes;
+int hexValue(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
 }
 
-}  // namespace
-
-std::string uriRefusalReason(const std::string& uri) {
-    if (uri.rfind("data:", 0) == 0) return {};
-    if (uri.empty()) return "the URI is empty";
-    if (uri.find('\0') != std::string::npos) return "the URI contains a NUL byte";
-    if (uri.find("://") != std::string::npos) return "only relative file URIs and data: URIs are allowed";
-    if (uri[0] == '/' || uri[0] == '\\' || (uri.size() > 1 && uri[1] == ':'))
-        return "absolute paths are not allowed";
-    if (uri[0] == '~') return "'~' expansion is not allowed";
-    if (uri.find_first_of("$`") != std::string::npos) return "shell expansion characters ($ `) are not allowed";
-    // Reject ".." as a path component, in either separator style and percent-encoded.
-    std::string decoded;
-    for (size_t i = 0; i < uri.size(); ++i) {
-        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
-            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
-            decoded += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-            i += 2;
-        } else {
-            decoded += uri[i];
-        }
-    }
-    if (decoded.find_first_of("$`") != std::string::npos) return "shell expansion characters ($ `) are not allowed";
-    if (decoded[0] == '/' || decoded[0] == '\\') return "absolute paths are not allowed";
+// Why the (already percent-decoded) path is refused, or "".
+std::string pathRefusalReason(const std::string& path) {
+    if (path.empty()) return "the URI is empty";
+    for (const char c : path)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return "the URI contains control characters";
+    if (path[0] == '/' || path[0] == '\\') return "absolute paths are not allowed";
+    if (path[0] == '~') return "'~' expansion is not allowed";
+    if (path.find_first_of("$`") != std::string::npos) return "shell expansion characters ($ `) are not allowed";
+    // A ':' before the first separator is a scheme ("http:", "file:") or a drive letter ("C:").
+    const size_t colon = path.find(':');
+    if (colon != std::string::npos && colon < path.find_first_of("/\\"))
+        return "only relative paths and data: URIs are allowed (no schemes or drive letters)";
     size_t start = 0;
-    while (start <= decoded.size()) {
-        const size_t end = decoded.find_first_of("/\\", start);
-        const std::string part = decoded.substr(start, end == std::string::npos ? std::string::npos : end - start);
-        if (part == "..") return "'..' leaves the scene's folder";
+    while (true) {
+        const size_t end = path.find_first_of("/\\", start);
+        if (path.compare(start, end == std::string::npos ? std::string::npos : end - start, "..") == 0)
+            return "'..' leaves the scene's folder";
         if (end == std::string::npos) break;
         start = end + 1;
     }
     return {};
 }
 
-void checkExternalUris(const std::filesystem::path& file) {
-    nlohmann::json json;
-    try {
-        json = nlohmann::json::parse(jsonText(file));
-    } catch (const nlohmann::json::exception& e) {
-        throw InputError(fmt::format("{}: malformed JSON: {}", file.string(), e.what()));
-    }
-    if (!json.is_object()) throw InputError(fmt::format("{}: the top level is not a JSON object", file.string()));
-    for (const char* kind : {"buffers", "images"}) {
-        const auto it = json.find(kind);
-        if (it == json.end() || !it->is_array()) continue;
-        for (size_t i = 0; i < it->size(); ++i) {
-            const auto& entry = (*it)[i];
-            if (!entry.is_object() || !entry.contains("uri")) continue;
-            if (!entry["uri"].is_string())
-                throw InputError(fmt::format("{}: {}[{}].uri: not a string", file.string(), kind, i));
-            const std::string uri = entry["uri"].get<std::string>();
-            const std::string reason = uriRefusalReason(uri);
-            if (!reason.empty())
-                throw InputError(fmt::format("{}: {}[{}].uri \"{}\": refused: {}", file.string(), kind, i,
-                                             uri.size() > 80 ? uri.substr(0, 80) + "..." : uri, reason));
+}  // namespace
+
+bool isDataUri(const std::string& uri) { return uri.rfind("data:", 0) == 0; }
+
+std::string uriToRelativePath(const std::string& uri) {
+    std::string decoded;
+    decoded.reserve(uri.size());
+    for (size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && hexValue(uri[i + 1]) >= 0 && hexValue(uri[i + 2]) >= 0) {
+            decoded += static_cast<char>(hexValue(uri[i + 1]) * 16 + hexValue(uri[i + 2]));
+            i += 2;
+        } else if (uri[i] == '+') {
+            decoded += ' ';  // as tinygltf's (form-style) decoder does
+        } else {
+            decoded += uri[i];
         }
     }
+    return decoded;
+}
+
+std::string uriRefusalReason(const std::string& uri) {
+    if (isDataUri(uri)) return {};
+    // tinygltf decodes every '%' without checking its digits: refuse what it would mis-decode.
+    for (size_t i = 0; i < uri.size(); ++i)
+        if (uri[i] == '%' && (i + 2 >= uri.size() || hexValue(uri[i + 1]) < 0 || hexValue(uri[i + 2]) < 0))
+            return "malformed percent-escape";
+    // Check both spellings: the raw one (what a shell or another tool might see) and the decoded
+    // one (what is opened), so "%2e%2e/" and "%24HOME" are caught too.
+    if (std::string reason = pathRefusalReason(uri); !reason.empty()) return reason;
+    return pathRefusalReason(uriToRelativePath(uri));
 }
 
 }  // namespace vkp

@@ -1,18 +1,20 @@
 // Which external URIs a glTF file may reference: relative paths inside the file's folder only.
 #pragma once
 
-#include <filesystem>
 #include <string>
 
 namespace vkp {
 
 // Returns an empty string when `uri` is acceptable, else the reason it is refused: absolute
-// paths, ".." components, and anything a shell would expand ($, `, ~ at the start, ...).
-// data: URIs are always acceptable.
+// paths, URI schemes other than data:, ".." components (also percent-encoded), control
+// characters, and anything a shell would expand ($, `, ~ at the start). data: URIs are always
+// acceptable here (their payload is checked where it is decoded).
 std::string uriRefusalReason(const std::string& uri);
 
-// Refuses (InputError naming `file` and `element`) every buffer and image URI of the glTF JSON
-// (the JSON chunk for .glb) that uriRefusalReason() rejects; also reports malformed JSON.
-void checkExternalUris(const std::filesystem::path& file);
+// The relative path an acceptable, non-data URI names: percent-escapes decoded, the way tinygltf
+// decodes it before opening the file.
+std::string uriToRelativePath(const std::string& uri);
+
+bool isDataUri(const std::string& uri);
 
 }  // namespace vkp

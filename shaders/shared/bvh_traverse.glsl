@@ -1,104 +1,148 @@
-// GPU BVH traversal (GLSL only). The including shader declares the buffers
-//   readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };
-//   readonly buffer Triangles { GpuTriangle triangles[]; };
-// Ordered (near child first) stack traversal; kBvhMaxDepth bounds the stack (the host build
-// never exceeds it).
+// GPU BVH traversal (GLSL only; the host twin is closestHit/anyHit in host/bvh/bvh.cpp, which
+// walks the tree in the same order with the same intersect.glsl tests). The including shader
+// declares, before including this file:
+//   readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };   // host/bvh: root at 0, children adjacent
+//   readonly buffer Triangles { GpuTriangle triangles[]; }; // in BVH order (Bvh::triangleOrder)
+//
+// Ordered depth-first traversal with a per-invocation stack: at an inner node both child boxes
+// are tested, the nearer is visited next and the farther pushed with its entry distance, which is
+// re-checked against the closest hit so far when popped. The stack holds at most depth - 1
+// entries; the host build never makes a tree deeper than kBvhMaxDepth.
 #ifndef VKP_BVH_TRAVERSE_GLSL
 #define VKP_BVH_TRAVERSE_GLSL
 #ifndef __cplusplus
+#include "gpu_types.glsl"
 #include "intersect.glsl"
 #include "bvh_constants.glsl"
 
-bool traceClosest(vec3 org, vec3 dir, float tMax, out float tHit, out uint triHit, out float b1Hit,
-                  out float b2Hit) {
+// Triangle index reported by traceClosest when nothing is hit.
+const uint kBvhNoTriangle = 0xffffffffu;
+
+// A tree over no triangles is a single node with count 0 and leftOrFirst 0: an inner node can
+// never point at index 0 (the root), and no box encodes "empty" for the symmetric slab test.
+bool bvhIsEmptyRoot(GpuBvhNode root) {
+    return root.count == 0u && root.leftOrFirst == 0u;
+}
+
+// Closest hit with 0 < t < tMax. On a hit returns true with t, the index into triangles[] and
+// the barycentrics (b1, b2) of v1 and v2; on a miss returns false with t = tMax, tri =
+// kBvhNoTriangle. Among hits at exactly equal t the first one visited wins.
+bool traceClosest(vec3 org, vec3 dir, float tMax, out float t, out uint tri, out float b1,
+                  out float b2) {
+    t = tMax;
+    tri = kBvhNoTriangle;
+    b1 = 0.0f;
+    b2 = 0.0f;
     vec3 invDir = safeInverseDirection(dir);
-    tHit = tMax;
-    triHit = 0u;
-    b1Hit = 0.0f;
-    b2Hit = 0.0f;
-    bool found = false;
-    GpuBvhNode root = bvhNodes[0];
-    if (intersectAabb(org, invDir, root.boundsMin, root.boundsMax, tHit) >= kInfinity) return false;
-    uint stack[kBvhMaxDepth];
+    GpuBvhNode node = bvhNodes[0];
+    if (bvhIsEmptyRoot(node) ||
+        intersectAabb(org, invDir, node.boundsMin, node.boundsMax, tMax) >= kInfinity) {
+        return false;
+    }
+    uint stackNode[kBvhMaxDepth];
+    float stackEntry[kBvhMaxDepth];
     uint sp = 0u;
-    uint nodeIndex = 0u;
     while (true) {
-        GpuBvhNode node = bvhNodes[nodeIndex];
         if (node.count > 0u) {
-            for (uint i = node.leftOrFirst; i < node.leftOrFirst + node.count; ++i) {
-                GpuTriangle tri = triangles[i];
-                float t;
-                float b1;
-                float b2;
-                if (intersectTriangle(org, dir, tri.v0.xyz, tri.v1.xyz, tri.v2.xyz, tHit, t, b1, b2)) {
-                    tHit = t;
-                    triHit = i;
-                    b1Hit = b1;
-                    b2Hit = b2;
-                    found = true;
+            uint end = node.leftOrFirst + node.count;
+            for (uint i = node.leftOrFirst; i < end; ++i) {
+                GpuTriangle triangle = triangles[i];
+                float tCandidate;
+                float b1Candidate;
+                float b2Candidate;
+                if (intersectTriangle(org, dir, triangle.v0.xyz, triangle.v1.xyz, triangle.v2.xyz, t,
+                                      tCandidate, b1Candidate, b2Candidate)) {
+                    t = tCandidate;
+                    tri = i;
+                    b1 = b1Candidate;
+                    b2 = b2Candidate;
                 }
             }
         } else {
             uint left = node.leftOrFirst;
-            GpuBvhNode l = bvhNodes[left];
-            GpuBvhNode r = bvhNodes[left + 1u];
-            float dl = intersectAabb(org, invDir, l.boundsMin, l.boundsMax, tHit);
-            float dr = intersectAabb(org, invDir, r.boundsMin, r.boundsMax, tHit);
-            bool hitL = dl < kInfinity;
-            bool hitR = dr < kInfinity;
-            if (hitL && hitR) {
-                uint nearChild = dl <= dr ? left : left + 1u;
-                stack[sp++] = dl <= dr ? left + 1u : left;
-                nodeIndex = nearChild;
+            GpuBvhNode leftNode = bvhNodes[left];
+            GpuBvhNode rightNode = bvhNodes[left + 1u];
+            float entryLeft = intersectAabb(org, invDir, leftNode.boundsMin, leftNode.boundsMax, t);
+            float entryRight = intersectAabb(org, invDir, rightNode.boundsMin, rightNode.boundsMax, t);
+            bool hitLeft = entryLeft < kInfinity;
+            bool hitRight = entryRight < kInfinity;
+            if (hitLeft && hitRight) {
+                // Near child first; on equal entry distances the left one (deterministic).
+                bool rightFirst = entryRight < entryLeft;
+                stackNode[sp] = rightFirst ? left : left + 1u;
+                stackEntry[sp] = rightFirst ? entryLeft : entryRight;
+                ++sp;
+                node = rightFirst ? rightNode : leftNode;
                 continue;
             }
-            if (hitL || hitR) {
-                nodeIndex = hitL ? left : left + 1u;
+            if (hitLeft || hitRight) {
+                node = hitLeft ? leftNode : rightNode;
                 continue;
             }
         }
-        if (sp == 0u) break;
-        nodeIndex = stack[--sp];
+        // Pop the nearest pending subtree that can still hold a closer hit; the same bound as
+        // intersectAabb(..., t) would apply (exit widened by kAabbExitScale).
+        bool popped = false;
+        while (sp > 0u && !popped) {
+            --sp;
+            if (stackEntry[sp] <= t * kAabbExitScale) {
+                node = bvhNodes[stackNode[sp]];
+                popped = true;
+            }
+        }
+        if (!popped) break;
     }
-    return found;
+    return tri != kBvhNoTriangle;
 }
 
-// Any hit closer than tMax (shadow rays): stops at the first intersection found.
+// True when any triangle is hit with 0 < t < tMax (shadow and visibility rays); stops at the
+// first one found.
 bool traceAny(vec3 org, vec3 dir, float tMax) {
     vec3 invDir = safeInverseDirection(dir);
-    GpuBvhNode root = bvhNodes[0];
-    if (intersectAabb(org, invDir, root.boundsMin, root.boundsMax, tMax) >= kInfinity) return false;
-    uint stack[kBvhMaxDepth];
+    GpuBvhNode node = bvhNodes[0];
+    if (bvhIsEmptyRoot(node) ||
+        intersectAabb(org, invDir, node.boundsMin, node.boundsMax, tMax) >= kInfinity) {
+        return false;
+    }
+    uint stackNode[kBvhMaxDepth];
     uint sp = 0u;
-    uint nodeIndex = 0u;
     while (true) {
-        GpuBvhNode node = bvhNodes[nodeIndex];
         if (node.count > 0u) {
-            for (uint i = node.leftOrFirst; i < node.leftOrFirst + node.count; ++i) {
-                GpuTriangle tri = triangles[i];
-                float t;
-                float b1;
-                float b2;
-                if (intersectTriangle(org, dir, tri.v0.xyz, tri.v1.xyz, tri.v2.xyz, tMax, t, b1, b2)) return true;
+            uint end = node.leftOrFirst + node.count;
+            for (uint i = node.leftOrFirst; i < end; ++i) {
+                GpuTriangle triangle = triangles[i];
+                float tCandidate;
+                float b1Candidate;
+                float b2Candidate;
+                if (intersectTriangle(org, dir, triangle.v0.xyz, triangle.v1.xyz, triangle.v2.xyz, tMax,
+                                      tCandidate, b1Candidate, b2Candidate)) {
+                    return true;
+                }
             }
         } else {
             uint left = node.leftOrFirst;
-            GpuBvhNode l = bvhNodes[left];
-            GpuBvhNode r = bvhNodes[left + 1u];
-            bool hitL = intersectAabb(org, invDir, l.boundsMin, l.boundsMax, tMax) < kInfinity;
-            bool hitR = intersectAabb(org, invDir, r.boundsMin, r.boundsMax, tMax) < kInfinity;
-            if (hitL && hitR) {
-                stack[sp++] = left + 1u;
-                nodeIndex = left;
+            GpuBvhNode leftNode = bvhNodes[left];
+            GpuBvhNode rightNode = bvhNodes[left + 1u];
+            float entryLeft = intersectAabb(org, invDir, leftNode.boundsMin, leftNode.boundsMax, tMax);
+            float entryRight = intersectAabb(org, invDir, rightNode.boundsMin, rightNode.boundsMax, tMax);
+            bool hitLeft = entryLeft < kInfinity;
+            bool hitRight = entryRight < kInfinity;
+            if (hitLeft && hitRight) {
+                // Near child first: occluders close to the shading point are the common case.
+                bool rightFirst = entryRight < entryLeft;
+                stackNode[sp] = rightFirst ? left : left + 1u;
+                ++sp;
+                node = rightFirst ? rightNode : leftNode;
                 continue;
             }
-            if (hitL || hitR) {
-                nodeIndex = hitL ? left : left + 1u;
+            if (hitLeft || hitRight) {
+                node = hitLeft ? leftNode : rightNode;
                 continue;
             }
         }
         if (sp == 0u) break;
-        nodeIndex = stack[--sp];
+        --sp;
+        node = bvhNodes[stackNode[sp]];
     }
     return false;
 }

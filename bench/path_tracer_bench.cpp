@@ -1,0 +1,107 @@
+// Path tracer throughput on a shipped scene: camera rays/s (coherent), diffuse bounce rays/s
+// (incoherent), and path-tracer samples/s. Usage:
+//   build/bench/path_tracer_bench [SCENE] [--width W --height H --spp N --repeat R --device D]
+// Prints a Markdown table row set for docs/benchmarks.md.
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "passes/scene_buffers.h"
+#include "render/renderer.h"
+#include "scene/gltf_loader.h"
+#include "util/errors.h"
+#include "vk/buffer.h"
+#include "vk/compute_kernel.h"
+#include "vk/context.h"
+#include "vk/shader_registry.h"
+
+namespace vkp::embedded {
+extern const vk::ShaderEntry* const vkphoton_bench_shaders_table[];
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct RayPush {
+    vkp::gpu::GpuCamera camera;
+    uint32_t width, height, mode, seed;
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace vkp;
+    CLI::App app{"vkphoton path tracer throughput benchmark"};
+    std::string scenePath = std::string(VKPHOTON_SOURCE_DIR) + "/scenes/cornell-box.gltf";
+    uint32_t width = 512, height = 512, spp = 16, repeat = 5;
+    std::string device;
+    app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
+    app.add_option("--width", width)->capture_default_str();
+    app.add_option("--height", height)->capture_default_str();
+    app.add_option("--spp", spp, "samples per pixel for the path tracer run")->capture_default_str();
+    app.add_option("--repeat", repeat, "repetitions (the median is reported)")->capture_default_str();
+    app.add_option("--device", device);
+    CLI11_PARSE(app, argc, argv);
+
+    try {
+        vk::registerShaderTable(embedded::vkphoton_bench_shaders_table);
+        const Scene scene = loadGltf(scenePath);
+        vk::Context context({false, device});
+        const SceneArrays arrays = buildSceneArrays(scene);
+        const SceneBuffers buffers(context, arrays);
+        const uint64_t pixels = uint64_t(width) * height;
+        vk::Buffer result(context, "hit counts", pixels * sizeof(uint32_t), vk::kStorageUsage);
+        vk::ComputeKernel kernel(context, "ray_throughput.comp", 9, sizeof(RayPush));
+        kernel.bind(buffers.bindings());
+        kernel.bind(8, result);
+        RayPush push{makeGpuCamera(chooseCamera(scene, -1), width, height), width, height, 0, 0};
+
+        auto timeMode = [&](uint32_t mode) {
+            std::vector<double> times;
+            for (uint32_t r = 0; r < repeat + 1; ++r) {  // the first run warms up (JIT, caches)
+                push.mode = mode;
+                push.seed = r;
+                const auto start = Clock::now();
+                context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, vk::groupCount(pixels, 64), push); });
+                if (r > 0) times.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+            }
+            return median(times);
+        };
+        const double cameraSeconds = timeMode(0);
+        const double bounceSeconds = timeMode(1);
+        const auto hits = result.download<uint32_t>();
+        uint64_t bounceRays = 0;
+        for (uint32_t h : hits) bounceRays += h >= 1;
+        const double cameraMrays = pixels / cameraSeconds / 1e6;
+        const double bounceMrays = bounceRays / std::max(bounceSeconds - cameraSeconds, 1e-9) / 1e6;
+
+        Renderer renderer(context, scene);
+        RenderSettings settings;
+        settings.width = width;
+        settings.height = height;
+        settings.samplesPerPixel = spp;
+        std::vector<double> renderTimes;
+        for (uint32_t r = 0; r < std::max(1u, repeat / 2); ++r) renderTimes.push_back(renderer.render(settings).stats.renderSeconds);
+        const double pathsPerSecond = pixels * spp / median(renderTimes);
+
+        fmt::print("scene: {} ({} triangles), {}x{}, device: {}\n", scenePath, scene.triangles.size(), width, height,
+                   context.deviceName());
+        fmt::print("| measure | value |\n|---|---|\n");
+        fmt::print("| camera rays (closest hit) | {:.2f} Mrays/s |\n", cameraMrays);
+        fmt::print("| diffuse bounce rays (closest hit) | {:.2f} Mrays/s |\n", bounceMrays);
+        fmt::print("| path tracer, {} spp, max depth {} | {:.3f} Msamples/s |\n", spp, settings.maxDepth, pathsPerSecond / 1e6);
+        return 0;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,132 @@
+#include "scene/gltf_files.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <stb/stb_image.h>
+
+namespace vkp {
+
+namespace fs = std::filesystem;
+
+std::optional<fs::path> resolveInFolder(const fs::path& folder, const fs::path& candidate) {
+    std::error_code ec;
+    const fs::path root = fs::canonical(folder, ec);
+    if (ec) return std::nullopt;
+    const fs::path file = fs::canonical(candidate, ec);  // resolves links; fails when missing
+    if (ec || !fs::is_regular_file(file, ec)) return std::nullopt;
+    // Inside means: the folder's components are a prefix of the file's.
+    const auto [rootEnd, fileAt] = std::mismatch(root.begin(), root.end(), file.begin(), file.end());
+    if (rootEnd != root.end() || fileAt == file.end()) return std::nullopt;
+    return file;
+}
+
+GltfFileAccess::GltfFileAccess(fs::path folder, const GltfLimits& limits)
+    : m_folder(std::move(folder)), m_limits(limits) {}
+
+void GltfFileAccess::expectBufferLength(const fs::path& canonical, uint64_t byteLength) {
+    m_bufferLengths[canonical] = byteLength;
+}
+
+tinygltf::FsCallbacks GltfFileAccess::callbacks() {
+    return {&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, this};
+}
+
+tinygltf::LoadImageDataFunction GltfFileAccess::imageLoader() { return &loadImage; }
+
+bool GltfFileAccess::fileExists(const std::string& path, void* self) {
+    return resolveInFolder(static_cast<GltfFileAccess*>(self)->m_folder, path).has_value();
+}
+
+// tinygltf's default expands "~" and environment variables: a scene must not reach those.
+std::string GltfFileAccess::expandFilePath(const std::string& path, void*) { return path; }
+
+bool GltfFileAccess::readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                                   void* self) {
+    auto* access = static_cast<GltfFileAccess*>(self);
+    const auto fail = [&](const std::string& why) {
+        if (err) *err += why + "\n";
+        return false;
+    };
+    const auto file = resolveInFolder(access->m_folder, path);
+    if (!file) return fail(fmt::format("'{}' is missing or outside the scene's folder", path));
+    std::error_code ec;
+    uint64_t size = fs::file_size(*file, ec);
+    if (ec) return fail(fmt::format("cannot stat '{}': {}", path, ec.message()));
+    if (size > access->m_limits.maxFileBytes)
+        return fail(fmt::format("'{}' is larger than the {}-byte limit", path, access->m_limits.maxFileBytes));
+    if (const auto it = access->m_bufferLengths.find(*file); it != access->m_bufferLengths.end())
+        size = std::min(size, it->second);
+    std::ifstream in(*file, std::ios::binary);
+    out->resize(size);
+    if (!in || (size && !in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))))
+        return fail(fmt::format("cannot read '{}'", path));
+    return true;
+}
+
+bool GltfFileAccess::writeWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "the glTF loader never writes files\n";
+    return false;
+}
+
+bool GltfFileAccess::loadImage(tinygltf::Image* image, int index, std::string* err, std::string*, int, int,
+                               const unsigned char* bytes, int size, void* self) {
+    auto* access = static_cast<GltfFileAccess*>(self);
+    const std::string problem = access->decodeImage(*image, bytes, size);
+    if (problem.empty()) return true;
+    const std::string message = fmt::format("images[{}]: {}", index, problem);
+    if (access->m_imageError.empty()) access->m_imageError = message;
+    if (err) *err += message + "\n";
+    return false;
+}
+
+// Decodes a PNG or JPEG into tinygltf::Image with its own channel count (1-4) and bit depth
+// (8 or 16); the texture code converts to RGBA8. The header is checked against the limits
+// before anything is allocated. Returns what is wrong, or "".
+std::string GltfFileAccess::decodeImage(tinygltf::Image& image, const unsigned char* bytes, int size) {
+    static constexpr unsigned char kPngMagic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static constexpr unsigned char kJpegMagic[3] = {0xff, 0xd8, 0xff};
+    if (bytes == nullptr || size <= 0) return "no image data";
+    const bool png = size >= 8 && std::memcmp(bytes, kPngMagic, 8) == 0;
+    const bool jpeg = size >= 3 && std::memcmp(bytes, kJpegMagic, 3) == 0;
+    if (!png && !jpeg) return "not a PNG or JPEG image (the only formats glTF 2.0 allows)";
+    int width = 0, height = 0, components = 0;
+    // stb refuses PNGs over 1 GiB with a vague reason, so a PNG's size is read from its IHDR
+    // chunk (signature, length, "IHDR", big-endian width and height) to name the real problem.
+    if (png && size >= 24 && std::memcmp(bytes + 12, "IHDR", 4) == 0) {
+        const auto bigEndian = [&](int at) {
+            return uint32_t(bytes[at]) << 24 | uint32_t(bytes[at + 1]) << 16 | uint32_t(bytes[at + 2]) << 8 | bytes[at + 3];
+        };
+        width = static_cast<int>(std::min<uint32_t>(bigEndian(16), INT32_MAX));
+        height = static_cast<int>(std::min<uint32_t>(bigEndian(20), INT32_MAX));
+    } else if (!stbi_info_from_memory(bytes, size, &width, &height, &components)) {
+        return fmt::format("unreadable image header ({})", stbi_failure_reason());
+    }
+    if (width <= 0 || height <= 0 || static_cast<uint32_t>(width) > m_limits.maxImageDimension ||
+        static_cast<uint32_t>(height) > m_limits.maxImageDimension ||
+        uint64_t(width) * uint64_t(height) > m_limits.maxImagePixels)
+        return fmt::format("{}x{} pixels exceeds the image size limit ({} per side, {} pixels in all)", width, height,
+                           m_limits.maxImageDimension, m_limits.maxImagePixels);
+    // tinygltf decodes every image, used or not: many small files of huge images must not add up.
+    m_decodedPixels += uint64_t(width) * uint64_t(height);
+    if (m_decodedPixels > m_limits.maxTotalImagePixels)
+        return fmt::format("the file's images add up to more than the limit of {} pixels", m_limits.maxTotalImagePixels);
+    const bool sixteenBit = stbi_is_16_bit_from_memory(bytes, size);
+    void* pixels = sixteenBit ? static_cast<void*>(stbi_load_16_from_memory(bytes, size, &width, &height, &components, 0))
+                              : static_cast<void*>(stbi_load_from_memory(bytes, size, &width, &height, &components, 0));
+    if (pixels == nullptr) return fmt::format("cannot decode the image ({})", stbi_failure_reason());
+    const size_t byteCount = size_t(width) * size_t(height) * size_t(components) * (sixteenBit ? 2 : 1);
+    image.width = width;
+    image.height = height;
+    image.component = components;
+    image.bits = sixteenBit ? 16 : 8;
+    image.pixel_type = sixteenBit ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image.image.assign(static_cast<const unsigned char*>(pixels), static_cast<const unsigned char*>(pixels) + byteCount);
+    stbi_image_free(pixels);
+    return {};
+}
+
+}  // namespace vkp

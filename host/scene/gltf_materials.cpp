@@ -1,0 +1,183 @@
+#include "scene/gltf_materials.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "util/errors.h"
+
+namespace vkp {
+namespace {
+
+[[noreturn]] void fail(const std::string& element, const std::string& what) {
+    throw InputError(fmt::format("{}: {}", element, what));
+}
+
+const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const char* name) {
+    const auto it = extensions.find(name);
+    return it == extensions.end() ? nullptr : &it->second;
+}
+
+// A number of an extension object, or `fallback` when absent.
+double numberOr(const tinygltf::Value& object, const char* key, double fallback, const std::string& element) {
+    if (!object.IsObject() || !object.Has(key)) return fallback;
+    const tinygltf::Value& value = object.Get(key);
+    if (!value.IsNumber()) fail(fmt::format("{}.{}", element, key), "not a number");
+    return value.GetNumberAsDouble();
+}
+
+glm::vec3 vec3Or(const tinygltf::Value& object, const char* key, glm::vec3 fallback, const std::string& element) {
+    if (!object.IsObject() || !object.Has(key)) return fallback;
+    const tinygltf::Value& value = object.Get(key);
+    if (!value.IsArray() || value.ArrayLen() != 3) fail(fmt::format("{}.{}", element, key), "needs 3 numbers");
+    glm::vec3 v;
+    for (int k = 0; k < 3; ++k) {
+        if (!value.Get(k).IsNumber()) fail(fmt::format("{}.{}", element, key), "needs 3 numbers");
+        v[k] = static_cast<float>(value.Get(k).GetNumberAsDouble());
+    }
+    return v;
+}
+
+// 16-bit channels arrive in host order from stb; round to the nearest 8-bit value.
+uint8_t channel(const std::vector<unsigned char>& data, size_t at, bool sixteenBit) {
+    if (!sixteenBit) return data[at];
+    uint16_t v;
+    std::memcpy(&v, data.data() + at * 2, 2);
+    return static_cast<uint8_t>((uint32_t(v) * 255 + 32767) / 65535);
+}
+
+}  // namespace
+
+GltfMaterials::GltfMaterials(const tinygltf::Model& model, Scene& scene, Warn warn)
+    : m_model(model), m_scene(scene), m_warn(std::move(warn)) {}
+
+void GltfMaterials::convertAll() {
+    for (size_t i = 0; i < m_model.materials.size(); ++i) m_scene.materials.push_back(convert(static_cast<int>(i)));
+}
+
+uint32_t GltfMaterials::defaultMaterial() {
+    if (m_default < 0) {
+        m_default = static_cast<int>(m_scene.materials.size());
+        Material material;  // vkp::Material's defaults are glTF's
+        material.name = "default";
+        m_scene.materials.push_back(material);
+    }
+    return static_cast<uint32_t>(m_default);
+}
+
+Material GltfMaterials::convert(int index) {
+    const tinygltf::Material& source = m_model.materials[index];
+    const std::string element = fmt::format("materials[{}]", index);
+    const auto& pbr = source.pbrMetallicRoughness;
+    Material m;
+    m.name = source.name.empty() ? element : source.name;
+    if (pbr.baseColorFactor.size() != 4) fail(element + ".pbrMetallicRoughness.baseColorFactor", "needs 4 numbers");
+    m.baseColor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2], pbr.baseColorFactor[3]);
+    m.metallic = static_cast<float>(pbr.metallicFactor);
+    m.roughness = static_cast<float>(pbr.roughnessFactor);
+    if (source.emissiveFactor.size() != 3) fail(element + ".emissiveFactor", "needs 3 numbers");
+    m.emissive = glm::vec3(source.emissiveFactor[0], source.emissiveFactor[1], source.emissiveFactor[2]);
+    m.doubleSided = source.doubleSided;
+    const std::string pbrName = element + ".pbrMetallicRoughness";
+    m.baseColorTexture = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                 pbr.baseColorTexture.extensions, true, pbrName + ".baseColorTexture");
+    m.metallicRoughnessTexture = texture(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                                         pbr.metallicRoughnessTexture.extensions, false,
+                                         pbrName + ".metallicRoughnessTexture");
+    m.emissiveTexture = texture(source.emissiveTexture.index, source.emissiveTexture.texCoord,
+                                source.emissiveTexture.extensions, true, element + ".emissiveTexture");
+    readExtensions(source, element, m);
+    validate(element, m);
+    return m;
+}
+
+void GltfMaterials::readExtensions(const tinygltf::Material& source, const std::string& element, Material& m) {
+    const auto name = [&](const char* ext) { return fmt::format("{}.extensions.{}", element, ext); };
+    if (const auto* e = extension(source.extensions, "KHR_materials_emissive_strength"))
+        m.emissive *= static_cast<float>(numberOr(*e, "emissiveStrength", 1.0, name("KHR_materials_emissive_strength")));
+    if (const auto* e = extension(source.extensions, "KHR_materials_transmission"))
+        m.transmission = static_cast<float>(numberOr(*e, "transmissionFactor", 0.0, name("KHR_materials_transmission")));
+    if (const auto* e = extension(source.extensions, "KHR_materials_ior"))
+        m.ior = static_cast<float>(numberOr(*e, "ior", 1.5, name("KHR_materials_ior")));
+    if (const auto* e = extension(source.extensions, "KHR_materials_volume")) {
+        const std::string volume = name("KHR_materials_volume");
+        m.thickness = static_cast<float>(numberOr(*e, "thicknessFactor", 0.0, volume));
+        m.attenuationDistance = static_cast<float>(numberOr(*e, "attenuationDistance", INFINITY, volume));
+        m.attenuationColor = vec3Or(*e, "attenuationColor", glm::vec3(1.0f), volume);
+    }
+}
+
+// Non-finite or negative factors are refused; factors the spec bounds by 1 are clamped (with a
+// warning) because exporters write 1.0000001.
+void GltfMaterials::validate(const std::string& element, Material& m) {
+    const float values[] = {m.baseColor.x, m.baseColor.y, m.baseColor.z, m.baseColor.w, m.metallic, m.roughness,
+                            m.emissive.x,  m.emissive.y,  m.emissive.z,  m.transmission, m.ior, m.thickness,
+                            m.attenuationColor.x, m.attenuationColor.y, m.attenuationColor.z};
+    for (const float v : values)
+        if (!std::isfinite(v) || v < 0.0f) fail(element, "material factors must be finite and non-negative");
+    if (!(m.attenuationDistance > 0.0f)) fail(element + ".extensions.KHR_materials_volume.attenuationDistance", "must be positive");
+    if (m.ior != 0.0f && m.ior < 1.0f) fail(element + ".extensions.KHR_materials_ior.ior", fmt::format("{} is below 1", m.ior));
+    if (m.ior == 0.0f) m.ior = 1.0f;  // KHR_materials_ior allows 0, read as "no refraction boundary": ior 1
+    bool clamped = false;
+    const auto clampUnit = [&](float& v) {
+        clamped = clamped || v > 1.0f;
+        v = std::min(v, 1.0f);
+    };
+    for (int k = 0; k < 4; ++k) clampUnit(m.baseColor[k]);
+    for (int k = 0; k < 3; ++k) clampUnit(m.attenuationColor[k]);
+    clampUnit(m.metallic);
+    clampUnit(m.roughness);
+    clampUnit(m.transmission);
+    if (clamped) m_warn(element + ": factors above 1 (base colour, metallic, roughness, transmission, attenuation colour) clamped to 1");
+}
+
+int GltfMaterials::texture(int gltfTexture, int texCoord, const tinygltf::ExtensionMap& extensions, bool srgb,
+                           const std::string& element) {
+    if (gltfTexture < 0) return -1;
+    if (static_cast<size_t>(gltfTexture) >= m_model.textures.size())
+        fail(element, fmt::format("textures[{}] does not exist", gltfTexture));
+    if (texCoord != 0) m_warn(fmt::format("{}: uses TEXCOORD_{}; vkphoton reads TEXCOORD_0 for every texture", element, texCoord));
+    if (extension(extensions, "KHR_texture_transform")) m_warn(element + ": KHR_texture_transform is ignored");
+    const int source = m_model.textures[gltfTexture].source;
+    if (source < 0 || static_cast<size_t>(source) >= m_model.images.size())
+        fail(fmt::format("textures[{}]", gltfTexture), "has no PNG or JPEG source image");
+    const auto key = std::make_pair(source, srgb);
+    if (const auto it = m_textureOf.find(key); it != m_textureOf.end()) return it->second;
+    const int index = static_cast<int>(m_scene.textures.size());
+    m_scene.textures.push_back(convertImage(source, srgb));
+    m_textureOf[key] = index;
+    return index;
+}
+
+// Decoded image (1-4 channels, 8 or 16 bits) -> RGBA8, R in the low byte. Grey expands to RGB.
+Texture GltfMaterials::convertImage(int source, bool srgb) {
+    const tinygltf::Image& image = m_model.images[source];
+    const std::string element = fmt::format("images[{}]", source);
+    if (image.width <= 0 || image.height <= 0 || image.image.empty()) fail(element, "the image was not decoded");
+    if (image.component < 1 || image.component > 4 || (image.bits != 8 && image.bits != 16))
+        fail(element, fmt::format("unsupported pixel format ({} channels of {} bits)", image.component, image.bits));
+    const size_t pixels = size_t(image.width) * size_t(image.height);
+    const bool sixteenBit = image.bits == 16;
+    const size_t channels = static_cast<size_t>(image.component);
+    if (image.image.size() < pixels * channels * (sixteenBit ? 2 : 1)) fail(element, "decoded image data is truncated");
+    Texture t;
+    t.name = image.name.empty() ? element : image.name;
+    t.width = static_cast<uint32_t>(image.width);
+    t.height = static_cast<uint32_t>(image.height);
+    t.srgb = srgb;
+    t.rgba8.resize(pixels);
+    for (size_t p = 0; p < pixels; ++p) {
+        uint8_t c[4] = {0, 0, 0, 255};
+        for (size_t k = 0; k < channels; ++k) c[k] = channel(image.image, p * channels + k, sixteenBit);
+        if (channels <= 2) {  // grey, or grey + alpha
+            c[3] = channels == 2 ? c[1] : uint8_t(255);
+            c[1] = c[2] = c[0];
+        }
+        t.rgba8[p] = uint32_t(c[0]) | (uint32_t(c[1]) << 8) | (uint32_t(c[2]) << 16) | (uint32_t(c[3]) << 24);
+    }
+    return t;
+}
+
+}  // namespace vkp

@@ -1,0 +1,44 @@
+// glTF materials (metallic-roughness plus the supported KHR_materials_* extensions) and their
+// textures -> vkp::Material and vkp::Texture.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+#include <utility>
+
+#include <tiny_gltf.h>
+
+#include "scene/scene.h"
+
+namespace vkp {
+
+class GltfMaterials {
+public:
+    using Warn = std::function<void(const std::string&)>;
+
+    // Appends to scene.materials and scene.textures; `warn` gets "ELEMENT: message" lines.
+    GltfMaterials(const tinygltf::Model& model, Scene& scene, Warn warn);
+
+    // Converts every material of the file, so material i of the file is Scene::materials[i].
+    void convertAll();
+
+    // The glTF default material (base colour 1, metallic 1, roughness 1), appended on first use.
+    uint32_t defaultMaterial();
+
+private:
+    Material convert(int index);
+    void readExtensions(const tinygltf::Material& source, const std::string& element, Material& material);
+    void validate(const std::string& element, Material& material);
+    int texture(int gltfTexture, int texCoord, const tinygltf::ExtensionMap& extensions, bool srgb,
+                     const std::string& element);
+    Texture convertImage(int source, bool srgb);
+
+    const tinygltf::Model& m_model;
+    Scene& m_scene;
+    Warn m_warn;
+    std::map<std::pair<int, bool>, int> m_textureOf;  // (image, srgb) -> Scene::textures index
+    int m_default = -1;
+};
+
+}  // namespace vkp

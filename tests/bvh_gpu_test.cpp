@@ -1,0 +1,131 @@
+// GPU BVH traversal (shaders/shared/bvh_traverse.glsl, run by tests/shaders/bvh_trace_test.comp)
+// against brute force over all triangles, on a shipped scene, and shadow rays that must not be
+// occluded by the surfaces they start and end on.
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "bvh/bvh.h"
+#include "gpu_test_support.h"
+#include "scene/gltf_loader.h"
+#include "shared/intersect.glsl"
+#include "vk/buffer.h"
+#include "vk/compute_kernel.h"
+
+namespace vkp {
+namespace {
+
+struct TestRay {
+    glm::vec4 origin;     // w = tMax
+    glm::vec4 direction;
+};
+struct TestHit {         // tests/shaders/bvh_trace_test.comp
+    float t;
+    uint32_t triangle;
+    float b1;
+    float b2;
+    uint32_t anyHit;
+};
+static_assert(sizeof(TestHit) == 20);
+constexpr uint32_t kNoTriangle = 0xffffffffu;
+
+std::vector<TestHit> traceOnGpu(const Bvh& bvh, const std::vector<gpu::GpuTriangle>& tris,
+                                const std::vector<TestRay>& rays) {
+    vk::Context& context = test::gpu();
+    vk::Buffer rayBuffer = vk::makeStorageBuffer(context, "rays", rays);
+    vk::Buffer nodeBuffer = vk::makeStorageBuffer(context, "nodes", bvh.nodes);
+    vk::Buffer triBuffer = vk::makeStorageBuffer(context, "triangles", tris);
+    vk::Buffer hitBuffer(context, "hits", rays.size() * sizeof(TestHit), vk::kStorageUsage);
+    vk::ComputeKernel kernel(context, "bvh_trace_test.comp", 4, 4);
+    kernel.bind({&rayBuffer, &nodeBuffer, &triBuffer, &hitBuffer});
+    const auto count = static_cast<uint32_t>(rays.size());
+    context.submitAndWait([&](VkCommandBuffer cmd) {
+        kernel.record(cmd, vk::groupCount(count, 64), count);
+        vk::computeToHostBarrier(cmd);
+    });
+    return hitBuffer.download<TestHit>();
+}
+
+RayHit bruteForce(const std::vector<gpu::GpuTriangle>& tris, glm::vec3 org, glm::vec3 dir, float tMax) {
+    RayHit best;
+    best.t = tMax;
+    for (uint32_t i = 0; i < tris.size(); ++i) {
+        float t, b1, b2;
+        if (gpu::intersectTriangle(org, dir, glm::vec3(tris[i].v0), glm::vec3(tris[i].v1), glm::vec3(tris[i].v2),
+                                   best.t, t, b1, b2)) {
+            best.hit = true;
+            best.t = t;
+            best.triangle = i;
+        }
+    }
+    return best;
+}
+
+class BvhGpu : public test::GpuTest {};
+
+TEST_F(BvhGpu, ClosestHitEqualsBruteForceOnCornellGlass) {
+    const Scene scene = loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-glass.gltf");
+    ASSERT_GT(scene.triangles.size(), 1000u);
+    const Bvh bvh = buildBvh(scene.triangles);
+    const auto tris = gpuTriangles(scene.triangles, bvh);
+    std::mt19937 rng(42);
+    std::uniform_real_distribution<float> n(-1.0f, 1.0f);
+    const glm::vec3 c = scene.bounds.center(), e = scene.bounds.extent();
+    std::vector<TestRay> rays;
+    for (uint32_t i = 0; i < 10000; ++i) {
+        const float spread = i % 2 ? 0.45f : 1.5f;  // inside the room and outside it
+        const glm::vec3 o = c + spread * e * glm::vec3(n(rng), n(rng), n(rng));
+        glm::vec3 d(n(rng), n(rng), n(rng));
+        if (i % 17 == 0) d = glm::vec3(0.0f, n(rng) < 0 ? -1.0f : 1.0f, 0.0f);
+        if (glm::length(d) < 1e-3f) d = glm::vec3(0.3f, 0.5f, -0.8f);
+        rays.push_back({glm::vec4(o, i % 5 == 0 ? 0.5f : 1e30f), glm::vec4(glm::normalize(d), 0.0f)});
+    }
+    const auto hits = traceOnGpu(bvh, tris, rays);
+    uint32_t hitCount = 0;
+    for (uint32_t i = 0; i < rays.size(); ++i) {
+        const RayHit expected = bruteForce(tris, glm::vec3(rays[i].origin), glm::vec3(rays[i].direction), rays[i].origin.w);
+        const bool found = hits[i].triangle != kNoTriangle;
+        hitCount += expected.hit;
+        ASSERT_EQ(found, expected.hit) << "ray " << i;
+        EXPECT_EQ(hits[i].anyHit != 0, expected.hit) << "ray " << i;
+        if (!found) continue;
+        EXPECT_EQ(hits[i].t, expected.t) << "ray " << i;
+        if (hits[i].triangle != expected.triangle) {
+            EXPECT_EQ(hits[i].t, expected.t) << "ray " << i;
+        }
+    }
+    EXPECT_GT(hitCount, rays.size() / 4);
+    EXPECT_LT(hitCount, rays.size());
+}
+
+// Shadow rays between two facing quads, starting 1e-4 off one and ending just short of the
+// other, are never occluded (neither quad may block its own rays).
+TEST_F(BvhGpu, ShadowRaysBetweenFacingQuadsAreUnoccluded) {
+    std::vector<Triangle> tris(4);
+    const glm::vec3 a[4] = {{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}};  // floor, faces +y
+    const glm::vec3 b[4] = {{-1, 1, -1}, {1, 1, -1}, {1, 1, 1}, {-1, 1, 1}};  // ceiling, faces -y
+    const int quad[2][3] = {{0, 1, 2}, {0, 2, 3}};
+    for (int q = 0; q < 2; ++q)
+        for (int k = 0; k < 3; ++k) {
+            tris[q].p[k] = a[quad[q][k]];
+            tris[2 + q].p[k] = b[quad[q][k]];
+        }
+    const Bvh bvh = buildBvh(tris);
+    const auto gpuTris = gpuTriangles(tris, bvh);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-0.99f, 0.99f);
+    std::vector<TestRay> rays;
+    for (int i = 0; i < 4096; ++i) {
+        const glm::vec3 from(u(rng), 1.0f - 1e-4f, u(rng));
+        const glm::vec3 to(u(rng), 0.0f, u(rng));
+        const float d = glm::length(to - from);
+        rays.push_back({glm::vec4(from, d - 2e-4f), glm::vec4(glm::normalize(to - from), 0.0f)});
+    }
+    const auto hits = traceOnGpu(bvh, gpuTris, rays);
+    int occluded = 0;
+    for (const TestHit& h : hits) occluded += h.anyHit != 0 || h.triangle != kNoTriangle;
+    EXPECT_EQ(occluded, 0);
+}
+
+}  // namespace
+}  // namespace vkp

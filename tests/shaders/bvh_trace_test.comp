@@ -1,0 +1,52 @@
+// GPU side of the BVH test: traces each ray with traceClosest and traceAny
+// (shaders/shared/bvh_traverse.glsl); the host compares with closestHit/anyHit of host/bvh/bvh.h
+// (same tree, same intersect.glsl), which tests/bvh_test.cpp checks against brute force.
+//
+// Host layouts (std430, all 4-byte scalars):
+//   binding 0  TestRay { vec4 origin (xyz, w = tMax); vec4 direction (xyz, w unused) }  32 B
+//   binding 1  GpuBvhNode[]   (Bvh::nodes)
+//   binding 2  GpuTriangle[]  (gpuTriangles(), BVH order)
+//   binding 3  TestHit { float t; uint tri; float b1; float b2; uint anyHit; }         20 B
+//              miss: t = tMax, tri = 0xffffffff (kBvhNoTriangle), b1 = b2 = 0
+//   push constant: uint rayCount
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "shared/gpu_types.glsl"
+#include "shared/constants.glsl"
+
+layout(local_size_x = 64) in;
+
+struct TestRay {
+    vec4 origin;
+    vec4 direction;
+};
+
+struct TestHit {
+    float t;
+    uint tri;
+    float b1;
+    float b2;
+    uint anyHit;
+};
+
+layout(std430, set = 0, binding = 0) readonly buffer Rays { TestRay rays[]; };
+layout(std430, set = 0, binding = 1) readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };
+layout(std430, set = 0, binding = 2) readonly buffer Triangles { GpuTriangle triangles[]; };
+layout(std430, set = 0, binding = 3) writeonly buffer Hits { TestHit hits[]; };
+layout(push_constant) uniform Push { uint rayCount; } push;
+
+#include "shared/bvh_traverse.glsl"
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= push.rayCount) return;
+    TestRay ray = rays[i];
+    vec3 org = ray.origin.xyz;
+    vec3 dir = ray.direction.xyz;
+    float tMax = ray.origin.w;
+    TestHit h;
+    traceClosest(org, dir, tMax, h.t, h.tri, h.b1, h.b2);
+    h.anyHit = traceAny(org, dir, tMax) ? 1u : 0u;
+    hits[i] = h;
+}
