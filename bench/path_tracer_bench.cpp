@@ -42,12 +42,14 @@ int main(int argc, char** argv) {
     using namespace vkp;
     CLI::App app{"vkphoton path tracer throughput benchmark"};
     std::string scenePath = std::string(VKPHOTON_SOURCE_DIR) + "/scenes/cornell-box.gltf";
-    uint32_t width = 512, height = 512, spp = 16, repeat = 5;
+    uint32_t width = 512, height = 512, spp = 16, repeat = 5, raySize = 1024;
     std::string device;
     app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
     app.add_option("--width", width)->capture_default_str();
     app.add_option("--height", height)->capture_default_str();
     app.add_option("--spp", spp, "samples per pixel for the path tracer run")->capture_default_str();
+    app.add_option("--ray-size", raySize, "image side for the ray-throughput runs (enough rays for stable timings)")
+        ->capture_default_str();
     app.add_option("--repeat", repeat, "repetitions (the median is reported)")->capture_default_str();
     app.add_option("--device", device);
     CLI11_PARSE(app, argc, argv);
@@ -58,12 +60,12 @@ int main(int argc, char** argv) {
         vk::Context context({false, device});
         const SceneArrays arrays = buildSceneArrays(scene);
         const SceneBuffers buffers(context, arrays);
-        const uint64_t pixels = uint64_t(width) * height;
-        vk::Buffer result(context, "hit counts", pixels * sizeof(uint32_t), vk::kStorageUsage);
+        const uint64_t rayPixels = uint64_t(raySize) * raySize;
+        vk::Buffer result(context, "hit counts", rayPixels * sizeof(uint32_t), vk::kStorageUsage);
         vk::ComputeKernel kernel(context, "ray_throughput.comp", 9, sizeof(RayPush));
         kernel.bind(buffers.bindings());
         kernel.bind(8, result);
-        RayPush push{makeGpuCamera(chooseCamera(scene, -1), width, height), width, height, 0, 0};
+        RayPush push{makeGpuCamera(chooseCamera(scene, -1), raySize, raySize), raySize, raySize, 0, 0};
 
         auto timeMode = [&](uint32_t mode) {
             std::vector<double> times;
@@ -71,7 +73,7 @@ int main(int argc, char** argv) {
                 push.mode = mode;
                 push.seed = r;
                 const auto start = Clock::now();
-                context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, vk::groupCount(pixels, 64), push); });
+                context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, vk::groupCount(rayPixels, 64), push); });
                 if (r > 0) times.push_back(std::chrono::duration<double>(Clock::now() - start).count());
             }
             return median(times);
@@ -81,9 +83,10 @@ int main(int argc, char** argv) {
         const auto hits = result.download<uint32_t>();
         uint64_t bounceRays = 0;
         for (uint32_t h : hits) bounceRays += h >= 1;
-        const double cameraMrays = pixels / cameraSeconds / 1e6;
+        const double cameraMrays = rayPixels / cameraSeconds / 1e6;
         const double bounceMrays = bounceRays / std::max(bounceSeconds - cameraSeconds, 1e-9) / 1e6;
 
+        const uint64_t pixels = uint64_t(width) * height;
         Renderer renderer(context, scene);
         RenderSettings settings;
         settings.width = width;
@@ -93,8 +96,8 @@ int main(int argc, char** argv) {
         for (uint32_t r = 0; r < std::max(1u, repeat / 2); ++r) renderTimes.push_back(renderer.render(settings).stats.renderSeconds);
         const double pathsPerSecond = pixels * spp / median(renderTimes);
 
-        fmt::print("scene: {} ({} triangles), {}x{}, device: {}\n", scenePath, scene.triangles.size(), width, height,
-                   context.deviceName());
+        fmt::print("scene: {} ({} triangles), rays at {}x{}, path tracer at {}x{}, device: {}\n", scenePath,
+                   scene.triangles.size(), raySize, raySize, width, height, context.deviceName());
         fmt::print("| measure | value |\n|---|---|\n");
         fmt::print("| camera rays (closest hit) | {:.2f} Mrays/s |\n", cameraMrays);
         fmt::print("| diffuse bounce rays (closest hit) | {:.2f} Mrays/s |\n", bounceMrays);

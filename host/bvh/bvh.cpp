@@ -335,9 +335,11 @@ std::vector<gpu::GpuTriangle> gpuTriangles(std::span<const Triangle> triangles, 
     return out;
 }
 
-// Mirrors traceClosest in shaders/shared/bvh_traverse.glsl statement by statement.
-RayHit closestHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org,
-                  glm::vec3 dir, float tMax) {
+namespace {
+
+// Mirrors traverseBvh in shaders/shared/bvh_traverse.glsl (same intersection code, same order).
+RayHit traverse(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org, glm::vec3 dir,
+                float tMax, bool anyHit) {
     RayHit hit;
     hit.t = tMax;
     if (isEmptyTree(bvh)) return hit;
@@ -356,6 +358,7 @@ RayHit closestHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, g
                 if (gpu::intersectTriangle(org, dir, glm::vec3(tri.v0), glm::vec3(tri.v1), glm::vec3(tri.v2),
                                            hit.t, t, b1, b2)) {
                     hit = {true, t, i, b1, b2};
+                    if (anyHit) return hit;
                 }
             }
         } else {
@@ -392,51 +395,16 @@ RayHit closestHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, g
     return hit;
 }
 
-// Mirrors traceAny in shaders/shared/bvh_traverse.glsl.
+}  // namespace
+
+RayHit closestHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org, glm::vec3 dir,
+                  float tMax) {
+    return traverse(bvh, triangles, org, dir, tMax, false);
+}
+
 bool anyHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org, glm::vec3 dir,
             float tMax) {
-    if (isEmptyTree(bvh)) return false;
-    const glm::vec3 invDir = gpu::safeInverseDirection(dir);
-    const gpu::GpuBvhNode* node = &bvh.nodes[0];
-    if (gpu::intersectAabb(org, invDir, node->boundsMin, node->boundsMax, tMax) >= gpu::kInfinity) return false;
-    std::array<uint32_t, gpu::kBvhMaxDepth> stackNode;
-    uint32_t sp = 0;
-    while (true) {
-        if (node->count > 0) {
-            const uint32_t end = node->leftOrFirst + node->count;
-            for (uint32_t i = node->leftOrFirst; i < end; ++i) {
-                const gpu::GpuTriangle& tri = triangles[i];
-                float t, b1, b2;
-                if (gpu::intersectTriangle(org, dir, glm::vec3(tri.v0), glm::vec3(tri.v1), glm::vec3(tri.v2), tMax,
-                                           t, b1, b2)) {
-                    return true;
-                }
-            }
-        } else {
-            const uint32_t left = node->leftOrFirst;
-            const gpu::GpuBvhNode* leftNode = &bvh.nodes[left];
-            const gpu::GpuBvhNode* rightNode = &bvh.nodes[left + 1];
-            const float entryLeft = gpu::intersectAabb(org, invDir, leftNode->boundsMin, leftNode->boundsMax, tMax);
-            const float entryRight = gpu::intersectAabb(org, invDir, rightNode->boundsMin, rightNode->boundsMax, tMax);
-            const bool hitLeft = entryLeft < gpu::kInfinity;
-            const bool hitRight = entryRight < gpu::kInfinity;
-            if (hitLeft && hitRight) {
-                const bool rightFirst = entryRight < entryLeft;
-                stackNode[sp] = rightFirst ? left : left + 1;
-                ++sp;
-                node = rightFirst ? rightNode : leftNode;
-                continue;
-            }
-            if (hitLeft || hitRight) {
-                node = hitLeft ? leftNode : rightNode;
-                continue;
-            }
-        }
-        if (sp == 0) break;
-        --sp;
-        node = &bvh.nodes[stackNode[sp]];
-    }
-    return false;
+    return traverse(bvh, triangles, org, dir, tMax, true).hit;
 }
 
 double sahCost(const Bvh& bvh, float traversalCost) {

@@ -1,6 +1,6 @@
 // GPU BVH traversal (GLSL only; the host twin is closestHit/anyHit in host/bvh/bvh.cpp, which
 // walks the tree in the same order with the same intersect.glsl tests). The including shader
-// declares, before including this file:
+// declares, before including this file (traceClosest and traceAny wrap traverseBvh):
 //   readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };   // host/bvh: root at 0, children adjacent
 //   readonly buffer Triangles { GpuTriangle triangles[]; }; // in BVH order (Bvh::triangleOrder)
 //
@@ -24,11 +24,12 @@ bool bvhIsEmptyRoot(GpuBvhNode root) {
     return root.count == 0u && root.leftOrFirst == 0u;
 }
 
-// Closest hit with 0 < t < tMax. On a hit returns true with t, the index into triangles[] and
-// the barycentrics (b1, b2) of v1 and v2; on a miss returns false with t = tMax, tri =
-// kBvhNoTriangle. Among hits at exactly equal t the first one visited wins.
-bool traceClosest(vec3 org, vec3 dir, float tMax, out float t, out uint tri, out float b1,
-                  out float b2) {
+// Walks the tree for hits with 0 < t < tMax. Closest-hit mode (anyHit false) returns the
+// nearest hit: t, the index into triangles[] and the barycentrics (b1, b2) of v1 and v2; among
+// hits at exactly equal t the first one visited wins. Any-hit mode returns at the first hit
+// found (shadow and visibility rays). On a miss: false, t = tMax, tri = kBvhNoTriangle.
+bool traverseBvh(vec3 org, vec3 dir, float tMax, bool anyHit, out float t, out uint tri, out float b1,
+                 out float b2) {
     t = tMax;
     tri = kBvhNoTriangle;
     b1 = 0.0f;
@@ -56,6 +57,7 @@ bool traceClosest(vec3 org, vec3 dir, float tMax, out float t, out uint tri, out
                     tri = i;
                     b1 = b1Candidate;
                     b2 = b2Candidate;
+                    if (anyHit) return true;
                 }
             }
         } else {
@@ -67,7 +69,8 @@ bool traceClosest(vec3 org, vec3 dir, float tMax, out float t, out uint tri, out
             bool hitLeft = entryLeft < kInfinity;
             bool hitRight = entryRight < kInfinity;
             if (hitLeft && hitRight) {
-                // Near child first; on equal entry distances the left one (deterministic).
+                // Near child first (occluders near the origin are the common case for shadow rays
+                // too); on equal entry distances the left one (deterministic).
                 bool rightFirst = entryRight < entryLeft;
                 stackNode[sp] = rightFirst ? left : left + 1u;
                 stackEntry[sp] = rightFirst ? entryLeft : entryRight;
@@ -95,57 +98,18 @@ bool traceClosest(vec3 org, vec3 dir, float tMax, out float t, out uint tri, out
     return tri != kBvhNoTriangle;
 }
 
-// True when any triangle is hit with 0 < t < tMax (shadow and visibility rays); stops at the
-// first one found.
+bool traceClosest(vec3 org, vec3 dir, float tMax, out float t, out uint tri, out float b1, out float b2) {
+    return traverseBvh(org, dir, tMax, false, t, tri, b1, b2);
+}
+
 bool traceAny(vec3 org, vec3 dir, float tMax) {
-    vec3 invDir = safeInverseDirection(dir);
-    GpuBvhNode node = bvhNodes[0];
-    if (bvhIsEmptyRoot(node) ||
-        intersectAabb(org, invDir, node.boundsMin, node.boundsMax, tMax) >= kInfinity) {
-        return false;
-    }
-    uint stackNode[kBvhMaxDepth];
-    uint sp = 0u;
-    while (true) {
-        if (node.count > 0u) {
-            uint end = node.leftOrFirst + node.count;
-            for (uint i = node.leftOrFirst; i < end; ++i) {
-                GpuTriangle triangle = triangles[i];
-                float tCandidate;
-                float b1Candidate;
-                float b2Candidate;
-                if (intersectTriangle(org, dir, triangle.v0.xyz, triangle.v1.xyz, triangle.v2.xyz, tMax,
-                                      tCandidate, b1Candidate, b2Candidate)) {
-                    return true;
-                }
-            }
-        } else {
-            uint left = node.leftOrFirst;
-            GpuBvhNode leftNode = bvhNodes[left];
-            GpuBvhNode rightNode = bvhNodes[left + 1u];
-            float entryLeft = intersectAabb(org, invDir, leftNode.boundsMin, leftNode.boundsMax, tMax);
-            float entryRight = intersectAabb(org, invDir, rightNode.boundsMin, rightNode.boundsMax, tMax);
-            bool hitLeft = entryLeft < kInfinity;
-            bool hitRight = entryRight < kInfinity;
-            if (hitLeft && hitRight) {
-                // Near child first: occluders close to the shading point are the common case.
-                bool rightFirst = entryRight < entryLeft;
-                stackNode[sp] = rightFirst ? left : left + 1u;
-                ++sp;
-                node = rightFirst ? rightNode : leftNode;
-                continue;
-            }
-            if (hitLeft || hitRight) {
-                node = hitLeft ? leftNode : rightNode;
-                continue;
-            }
-        }
-        if (sp == 0u) break;
-        --sp;
-        node = bvhNodes[stackNode[sp]];
-    }
-    return false;
+    float t;
+    uint tri;
+    float b1;
+    float b2;
+    return traverseBvh(org, dir, tMax, true, t, tri, b1, b2);
 }
 
 #endif
+
 #endif
