@@ -47,7 +47,7 @@ fs::path tempDir(const std::string& name) {
 const std::string kBox = std::string(VKPHOTON_SCENES) + "/cornell-box.gltf";
 
 TEST(Cli, HelpOnEveryCommand) {
-    for (const char* args : {"--help", "render --help", "devices --help"}) {
+    for (const char* args : {"--help", "render --help", "photons --help", "devices --help"}) {
         const RunResult r = runVkphoton(args);
         EXPECT_EQ(r.exitCode, 0) << args << "\n" << r.output;
         EXPECT_NE(r.output.find("Usage"), std::string::npos) << args;
@@ -156,6 +156,29 @@ TEST(Cli, InterruptWritesThePartialImage) {
     }
     EXPECT_EQ(partial, "true");
     EXPECT_EQ(reason, "interrupted");
+}
+
+TEST(Cli, PhotonsWritesAPlyPointCloud) {
+    const fs::path dir = tempDir("photons");
+    const fs::path ply = dir / "glass.ply";
+    const RunResult r = runVkphoton("photons " + std::string(VKPHOTON_SCENES) + "/cornell-glass.gltf --validate --photons 5000 -o " +
+                                    ply.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("caustic"), std::string::npos) << r.output;
+    std::ifstream in(ply, std::ios::binary);
+    std::string header, line;
+    while (std::getline(in, line) && line != "end_header") header += line + "\n";
+    EXPECT_EQ(header.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u) << header;
+    const auto at = header.find("element vertex ");
+    ASSERT_NE(at, std::string::npos);
+    const long vertices = std::stol(header.substr(at + 15));
+    EXPECT_GT(vertices, 5000);  // primary photons alone are about one per path
+    const auto bodyStart = in.tellg();
+    in.seekg(0, std::ios::end);
+    EXPECT_EQ(static_cast<long>(in.tellg() - bodyStart), vertices * (9 * 4 + 1));
+    // Bad input: wrong extension, bad counts.
+    EXPECT_EQ(runVkphoton("photons " + kBox + " -o " + (dir / "x.txt").string()).exitCode, 2);
+    EXPECT_EQ(runVkphoton("photons " + kBox + " --photons 0").exitCode, 2);
 }
 
 TEST(Cli, UnwritableOutputFailsWithoutLeavingFiles) {

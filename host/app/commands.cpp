@@ -11,6 +11,8 @@
 #include "image/atomic_file.h"
 #include "image/exr.h"
 #include "image/metrics.h"
+#include "render/photon_export.h"
+#include "render/photon_tracer.h"
 #include "image/png.h"
 #include "scene/gltf_loader.h"
 #include "util/errors.h"
@@ -108,6 +110,36 @@ int runRender(const RenderCommandOptions& options) {
                    stats.renderSeconds, stats.renderSeconds > 0 ? stats.cameraPaths / stats.renderSeconds / 1e6 : 0.0);
     if (context.validationEnabled()) context.throwOnValidationMessages();
     return interruptRequested().load() ? 130 : kExitOk;
+}
+
+int runPhotons(const PhotonsCommandOptions& options) {
+    const std::filesystem::path output = options.output.empty()
+        ? std::filesystem::path("out") / (options.scene.stem().string() + "-photons.ply")
+        : options.output;
+    if (output.extension() != ".ply")
+        throw InputError(fmt::format("-o {}: the photon map is written as .ply", output.string()));
+    const Scene scene = loadGltf(options.scene);
+    vk::Context context({options.validate, options.device});
+    const SceneArrays arrays = buildSceneArrays(scene);
+    const SceneBuffers buffers(context, arrays);
+    PhotonTracer tracer(context, scene, arrays, buffers);
+    PhotonSettings settings;
+    settings.paths = options.photons;
+    settings.maxDeposits = options.maxDeposits;
+    settings.seed = options.seed;
+    const auto start = std::chrono::steady_clock::now();
+    const PhotonCounters c = tracer.trace(settings);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto photons = tracer.downloadPhotons();
+    writePhotonPly(output, photons, tracer.nominalPhotonPower());
+    if (!options.quiet)
+        fmt::print(stderr,
+                   "traced {} photon paths in {:.2f} s on {}: stored {} caustic, {} global, {} primary; "
+                   "absorbed {}, lost {}, truncated {}; wrote {}\n",
+                   c.emitted, seconds, context.deviceName(), c.storedCaustic, c.storedGlobal, c.storedPrimary,
+                   c.absorbed, c.lost, c.truncated, output.string());
+    if (context.validationEnabled()) context.throwOnValidationMessages();
+    return kExitOk;
 }
 
 int runDevices() {

@@ -18,7 +18,19 @@ struct RenderCommandOptions {
     bool quiet = false;
 };
 
+struct PhotonsCommandOptions {
+    std::filesystem::path scene;
+    std::filesystem::path output;       // .ply; empty: out/<scene name>-photons.ply
+    uint32_t photons = 200000;          // photon paths to emit
+    uint32_t maxDeposits = 8;
+    uint32_t seed = 0;
+    std::string device;
+    bool validate = false;
+    bool quiet = false;
+};
+
 int runRender(const RenderCommandOptions& options);
+int runPhotons(const PhotonsCommandOptions& options);
 int runDevices();
 
 }  // namespace vkp

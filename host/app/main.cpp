@@ -1,4 +1,4 @@
-// vkphoton command line: `render` and `devices`. Exit codes: 0 ok, 1 runtime failure, 2 bad usage
+// vkphoton command line: `render`, `photons` and `devices`. Exit codes: 0 ok, 1 runtime failure, 2 bad usage
 // or bad input.
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -31,6 +31,17 @@ int main(int argc, char** argv) {
     bool bsdfOnly = false;
     renderCmd->add_flag("--no-nee", bsdfOnly, "Disable next-event estimation (BSDF sampling only; a reference)");
 
+    PhotonsCommandOptions photons;
+    CLI::App* photonsCmd = app.add_subcommand("photons", "Trace photons and write the photon maps as a PLY point cloud");
+    photonsCmd->add_option("scene", photons.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+    photonsCmd->add_option("-o,--output", photons.output, "Output .ply [default: out/SCENE-photons.ply]");
+    photonsCmd->add_option("--photons", photons.photons, "Photon paths to emit")->capture_default_str()->check(CLI::Range(1u, 1u << 26));
+    photonsCmd->add_option("--max-deposits", photons.maxDeposits, "Stored photons per path at most")->capture_default_str()->check(CLI::Range(1u, 64u));
+    photonsCmd->add_option("--seed", photons.seed, "Random seed")->capture_default_str();
+    photonsCmd->add_option("--device", photons.device, "Vulkan device: index or name substring");
+    photonsCmd->add_flag("--validate", photons.validate, "Enable the Khronos validation layer; any message is an error");
+    photonsCmd->add_flag("--quiet", photons.quiet, "No summary output");
+
     app.add_subcommand("devices", "List the Vulkan devices");
 
     try {
@@ -43,6 +54,7 @@ int main(int argc, char** argv) {
 
     try {
         if (renderCmd->parsed()) return runRender(render);
+        if (photonsCmd->parsed()) return runPhotons(photons);
         return runDevices();
     } catch (const InputError& e) {
         fmt::print(stderr, "error: {}\n", e.what());

@@ -1,0 +1,23 @@
+// Photon tracing pass (shaders/photon_trace.comp): reads the scene buffers, writes photon records
+// into fixed per-path slots and adds to the photon counters.
+#pragma once
+
+#include "passes/scene_buffers.h"
+#include "shared/photon.glsl"
+#include "vk/buffer.h"
+#include "vk/compute_kernel.h"
+
+namespace vkp {
+
+class PhotonTracePass {
+public:
+    PhotonTracePass(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& photons,
+                    const vk::Buffer& counters);
+
+    void record(VkCommandBuffer cmd, const gpu::PhotonTraceParams& params) const;
+
+private:
+    vk::ComputeKernel m_kernel;
+};
+
+}  // namespace vkp

@@ -1,0 +1,59 @@
+#include "render/photon_tracer.h"
+
+#include <fmt/format.h>
+
+#include "passes/photon_trace_pass.h"
+#include "util/errors.h"
+#include "vk/compute_kernel.h"
+#include "vk/context.h"
+
+namespace vkp {
+
+PhotonTracer::PhotonTracer(vk::Context& context, const Scene& scene, const SceneArrays& arrays,
+                           const SceneBuffers& buffers)
+    : m_context(context), m_buffers(buffers), m_sceneCenter(scene.bounds.center()),
+      m_sceneRadius(std::max(0.5f * glm::length(scene.bounds.extent()), 1e-6f)), m_totalPower(arrays.totalLightPower),
+      m_counters(context, "photon counters", gpu::kPhotonCounterCount * sizeof(uint32_t), vk::kStorageUsage) {
+    if (!(m_totalPower > 0.0)) throw InputError("the scene's lights emit no power: no photons to trace");
+}
+
+PhotonCounters PhotonTracer::trace(const PhotonSettings& settings) {
+    if (settings.paths == 0 || settings.maxDeposits == 0)
+        throw InputError("photon tracing needs at least one path and one deposit per path");
+    const uint64_t slots = uint64_t(settings.paths) * settings.maxDeposits;
+    const VkDeviceSize bytes = slots * sizeof(gpu::GpuPhoton);
+    if (!m_photons || m_photons.size() != bytes)
+        m_photons = vk::Buffer(m_context, "photon map", bytes, vk::kStorageUsage);
+    PhotonTracePass pass(m_context, m_buffers, m_photons, m_counters);
+
+    gpu::PhotonTraceParams params{};
+    params.sceneCenter = m_sceneCenter;
+    params.sceneRadius = m_sceneRadius;
+    params.firstPath = settings.firstPath;
+    params.pathCount = settings.paths;
+    params.maxDeposits = settings.maxDeposits;
+    params.seed = settings.seed;
+    params.lightCount = m_buffers.lightCount();
+    params.totalPower = static_cast<float>(m_totalPower);
+    m_context.submitAndWait([&](VkCommandBuffer cmd) {
+        m_photons.fillZero(cmd);
+        m_counters.fillZero(cmd);
+        vk::transferToComputeBarrier(cmd);
+        pass.record(cmd, params);
+        vk::computeToHostBarrier(cmd);
+    });
+    m_nominalPower = m_totalPower / settings.paths;
+
+    const auto c = m_counters.download<uint32_t>();
+    PhotonCounters counters;
+    counters.emitted = settings.paths;
+    counters.storedCaustic = c[gpu::kPhotonCounterStoredCaustic];
+    counters.storedGlobal = c[gpu::kPhotonCounterStoredGlobal];
+    counters.storedPrimary = c[gpu::kPhotonCounterStoredPrimary];
+    counters.absorbed = c[gpu::kPhotonCounterAbsorbed];
+    counters.lost = c[gpu::kPhotonCounterLost];
+    counters.truncated = c[gpu::kPhotonCounterTruncated];
+    return counters;
+}
+
+}  // namespace vkp

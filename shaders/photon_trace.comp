@@ -1,0 +1,186 @@
+// Photon tracing (Jensen's first pass, as in shared/papers/004): photon path i is generated
+// entirely from Halton point i — light choice by power, position on the light, direction, then
+// per bounce BSDF sampling and Russian roulette with unmodified power — so any path can be
+// regenerated (and later retraced in place) from its index alone.
+//
+// Photons are stored at every hit whose surface has a non-delta (diffuse or glossy) component,
+// in the fixed slot (path - firstPath) * maxDeposits + k of the k-th stored photon of the path,
+// so the result does not depend on scheduling. Flags: primary (first hit after the light),
+// caustic (light -> one or more delta bounces -> here: L S+ D); all others are global photons.
+// Power is stored relative to the nominal photon power totalPower / pathCount.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "scene_access.glsl"
+#include "shared/halton.glsl"
+#include "shared/photon.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(std430, set = 0, binding = 8) writeonly buffer Photons { GpuPhoton photons[]; };
+layout(std430, set = 0, binding = 9) buffer Counters { uint counters[]; };
+
+layout(push_constant) uniform Push { PhotonTraceParams params; };
+
+// Photon paths share one scrambling of the Halton sequence per run: the sample index alone
+// tells paths apart (the periodicity selective photon tracing relies on).
+const uint kPhotonStream = 0x50484f54u;  // "PHOT"
+
+struct EmittedPhoton {
+    vec3 origin;
+    vec3 dir;
+    vec3 flux;     // watts carried by this photon (before dividing by the number of paths)
+    vec3 normal;   // surface normal at the emission point (zero for punctual lights)
+};
+
+// Samples the emission of light `index` from 4 sample dimensions. flux is the light's emitted
+// power as seen through this sample: (emitted radiance or intensity) / (pdf of the sample),
+// divided by the light's selection probability.
+EmittedPhoton emitPhoton(uint index, vec2 uPosition, vec2 uDirection, float uSide) {
+    GpuLight light = lights[index];
+    EmittedPhoton e;
+    e.normal = vec3(0.0f);
+    if (light.type == kLightTriangle) {
+        GpuTriangle t = triangles[light.triangle];
+        GpuTriangleShading s = shading[light.triangle];
+        vec2 b = sampleTriangleBarycentrics(uPosition);
+        vec3 c = cross(t.v1.xyz - t.v0.xyz, t.v2.xyz - t.v0.xyz);
+        float area = 0.5f * length(c);
+        vec3 n = c / (2.0f * area);
+        GpuMaterial m = materials[s.material];
+        float sides = 1.0f;
+        if ((m.flags & kMaterialDoubleSided) != 0u) {
+            sides = 2.0f;
+            if (uSide < 0.5f) n = -n;
+        }
+        vec3 tangent;
+        vec3 bitangent;
+        orthonormalBasis(n, tangent, bitangent);
+        e.origin = (1.0f - b.x - b.y) * t.v0.xyz + b.x * t.v1.xyz + b.y * t.v2.xyz;
+        e.origin = offsetRayOrigin(e.origin, n, n);
+        e.dir = toWorld(sampleCosineHemisphere(uDirection), tangent, bitangent, n);
+        e.normal = n;
+        vec2 uv = (1.0f - b.x - b.y) * s.uv01.xy + b.x * s.uv01.zw + b.y * s.uv2;
+        // Le cos / (1/A * cos/pi * 1/sides): cosine sampling cancels the cosine.
+        e.flux = emittedRadiance(m, uv) * (kPi * area * sides) / light.selectPdf;
+        return e;
+    }
+    if (light.type == kLightDirectional) {
+        // A disk of the scene's bounding radius perpendicular to the light, outside the scene.
+        vec3 tangent;
+        vec3 bitangent;
+        orthonormalBasis(light.direction, tangent, bitangent);
+        float r = params.sceneRadius * sqrt(uPosition.x);
+        float phi = kTwoPi * uPosition.y;
+        e.origin = params.sceneCenter - light.direction * (2.0f * params.sceneRadius) +
+                   r * (cos(phi) * tangent + sin(phi) * bitangent);
+        e.dir = light.direction;
+        e.flux = light.intensity * (kPi * params.sceneRadius * params.sceneRadius) / light.selectPdf;
+        return e;
+    }
+    e.origin = light.position;
+    if (light.type == kLightSpot) {
+        // Uniform in the outer cone, weighted by the smooth falloff.
+        float cosOuter = -light.spotOffset / light.spotScale;
+        vec3 tangent;
+        vec3 bitangent;
+        orthonormalBasis(light.direction, tangent, bitangent);
+        vec3 local = sampleUniformCone(uDirection, cosOuter);
+        e.dir = toWorld(local, tangent, bitangent, light.direction);
+        float f = clamp(local.z * light.spotScale + light.spotOffset, 0.0f, 1.0f);
+        e.flux = light.intensity * (f * f * kTwoPi * (1.0f - cosOuter)) / light.selectPdf;
+        return e;
+    }
+    e.dir = sampleUniformSphere(uDirection);
+    e.flux = light.intensity * (4.0f * kPi) / light.selectPdf;
+    return e;
+}
+
+// A surface keeps photons when it can scatter light diffusely or glossily (not purely delta).
+bool storesPhotons(BsdfParams p) {
+    bool purelyDelta = specularIsDelta(p) && p.metallic >= 1.0f;
+    return p.transmission < 1.0f && !purelyDelta;
+}
+
+void main() {
+    uint local = gl_GlobalInvocationID.x;
+    if (local >= params.pathCount || params.lightCount == 0u) return;
+    Sampler rng = makeSampler(params.firstPath + local, hashCombine(params.seed, kPhotonStream));
+    float uLight = nextSample(rng);
+    vec2 uPosition = nextSample2(rng);
+    vec2 uDirection = nextSample2(rng);
+    float uSide = nextSample(rng);
+    uint lightIndex = pickLight(uLight, params.lightCount);
+    EmittedPhoton e = emitPhoton(lightIndex, uPosition, uDirection, uSide);
+    // Relative to the nominal photon power totalPower / pathCount.
+    vec3 power = e.flux / params.totalPower;
+
+    uint slot = local * params.maxDeposits;
+    uint stored = 0u;
+    bool onlySpecularSoFar = true;  // every bounce since the light was a delta lobe
+    vec3 origin = e.origin;
+    vec3 dir = e.dir;
+    vec3 mediumSigma = vec3(0.0f);
+    uint outcome = kPhotonCounterTruncated;  // unless a break below says otherwise
+    for (uint depth = 0u; depth < 64u; ++depth) {
+        float tHit;
+        uint tri;
+        float b1;
+        float b2;
+        if (!traceClosest(origin, dir, kInfinity, tHit, tri, b1, b2)) {
+            outcome = kPhotonCounterLost;
+            break;
+        }
+        power *= exp(-mediumSigma * tHit);
+        SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
+        GpuMaterial material = materials[hit.material];
+        BsdfParams bsdf = bsdfParamsAt(material, hit.uv);
+        vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
+
+        if (storesPhotons(bsdf)) {
+            if (stored == params.maxDeposits) {
+                outcome = kPhotonCounterTruncated;
+                break;
+            }
+            uint flags = kPhotonValid;
+            uint counter = kPhotonCounterStoredGlobal;
+            if (depth == 0u) {
+                flags |= kPhotonPrimary;
+                counter = kPhotonCounterStoredPrimary;
+            } else if (onlySpecularSoFar) {
+                flags |= kPhotonCaustic;
+                counter = kPhotonCounterStoredCaustic;
+            }
+            photons[slot + stored] = makePhoton(hit.position, power, -dir, n, flags, lightIndex);
+            stored += 1u;
+            atomicAdd(counters[counter], 1u);
+        }
+
+        vec3 t;
+        vec3 b;
+        orthonormalBasis(n, t, b);
+        vec3 wo = toLocal(-dir, t, b, n);
+        if (wo.z <= 0.0f) wo.z = 1.0e-4f;
+        vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
+        float uRoulette = nextSample(rng);
+        BsdfSample bs = sampleBsdf(bsdf, wo, hit.frontFace, false, u);
+        if (bs.lobe == kLobeNone) {
+            outcome = kPhotonCounterAbsorbed;
+            break;
+        }
+        // Russian roulette with (nearly) unmodified power: survive with the probability of the
+        // scattering weight's largest channel; the power only changes by the weight's colour.
+        float survive = min(max(bs.weight.r, max(bs.weight.g, bs.weight.b)), 1.0f);
+        if (uRoulette >= survive) {
+            outcome = kPhotonCounterAbsorbed;
+            break;
+        }
+        power *= bs.weight / survive;
+        onlySpecularSoFar = onlySpecularSoFar && (bs.lobe & kLobeDelta) != 0u;
+        dir = normalize(toWorld(bs.wi, t, b, n));
+        origin = offsetRayOrigin(hit.position, hit.geometricNormal, dir);
+        if ((bs.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)
+            mediumSigma = hit.frontFace ? material.attenuationCoeff : vec3(0.0f);
+    }
+    atomicAdd(counters[outcome], 1u);
+}

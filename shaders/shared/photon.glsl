@@ -1,0 +1,98 @@
+// The compact photon record (32 bytes) and its packing. Shared by the photon tracing pass, the
+// hash grid and the gathers; the host reads it for export and tests.
+#ifndef VKP_PHOTON_GLSL
+#define VKP_PHOTON_GLSL
+#include "compat.glsl"
+#include "constants.glsl"
+SHARED_BEGIN
+
+const uint kPhotonValid = 1u;    // the slot holds a stored photon (slots of absorbed paths stay 0)
+const uint kPhotonCaustic = 2u;  // path light -> specular+ -> here (L S+ D): the caustic map
+const uint kPhotonPrimary = 4u;  // first hit after the light (direct): skipped by indirect estimates
+
+// Power is stored relative to the nominal photon power of the map (total emitted power / photons
+// emitted, kept by the host), as half floats: values near 1, 11-bit precision.
+struct GpuPhoton {
+    vec3 position;        // world space
+    uint powerRG;         // packHalf2x16(relative power r, g)
+    uint powerBFlags;     // low 16 bits: half relative power b; high 16 bits: kPhoton* flags
+    uint direction;       // octahedral unit vector (16+16 bits): towards where the photon came from
+    uint normal;          // octahedral unit vector (16+16 bits): surface normal on the arrival side
+    uint lightIndex;      // index of the emitting light (GpuLight buffer)
+};
+STATIC_ASSERT_SIZE(GpuPhoton, 32)
+
+// Octahedral encoding of unit vectors (Cigolle et al., "A Survey of Efficient Representations for
+// Independent Unit Vectors", JCGT 2014), 16 bits per coordinate.
+INLINE vec2 signNotZero(vec2 v) {
+    return vec2(v.x >= 0.0f ? 1.0f : -1.0f, v.y >= 0.0f ? 1.0f : -1.0f);
+}
+
+INLINE uint encodeOctahedral(vec3 n) {
+    float l1 = abs(n.x) + abs(n.y) + abs(n.z);
+    vec2 p = vec2(n.x, n.y) / l1;
+    if (n.z < 0.0f) {
+        vec2 s = signNotZero(p);
+        p = vec2((1.0f - abs(p.y)) * s.x, (1.0f - abs(p.x)) * s.y);
+    }
+    return packSnorm2x16(p);
+}
+
+INLINE vec3 decodeOctahedral(uint packed) {
+    vec2 p = unpackSnorm2x16(packed);
+    vec3 n = vec3(p.x, p.y, 1.0f - abs(p.x) - abs(p.y));
+    if (n.z < 0.0f) {
+        vec2 s = signNotZero(vec2(n.x, n.y));
+        n = vec3((1.0f - abs(n.y)) * s.x, (1.0f - abs(n.x)) * s.y, n.z);
+    }
+    return normalize(n);
+}
+
+INLINE GpuPhoton makePhoton(vec3 position, vec3 relativePower, vec3 direction, vec3 normal, uint flags,
+                            uint lightIndex) {
+    GpuPhoton p;
+    p.position = position;
+    p.powerRG = packHalf2x16(vec2(relativePower.x, relativePower.y));
+    p.powerBFlags = (packHalf2x16(vec2(relativePower.z, 0.0f)) & 0xffffu) | (flags << 16u);
+    p.direction = encodeOctahedral(direction);
+    p.normal = encodeOctahedral(normal);
+    p.lightIndex = lightIndex;
+    return p;
+}
+
+INLINE vec3 photonRelativePower(GpuPhoton p) {
+    vec2 rg = unpackHalf2x16(p.powerRG);
+    float b = unpackHalf2x16(p.powerBFlags & 0xffffu).x;
+    return vec3(rg.x, rg.y, b);
+}
+
+INLINE uint photonFlags(GpuPhoton p) {
+    return p.powerBFlags >> 16u;
+}
+
+// Counters written by photon_trace.comp (indices into its counter buffer).
+const uint kPhotonCounterStoredCaustic = 0u;
+const uint kPhotonCounterStoredGlobal = 1u;    // after at least one diffuse/glossy bounce
+const uint kPhotonCounterStoredPrimary = 2u;   // direct (first-hit) photons
+const uint kPhotonCounterAbsorbed = 3u;        // paths ended by Russian roulette or a black surface
+const uint kPhotonCounterLost = 4u;            // paths that left the scene
+const uint kPhotonCounterTruncated = 5u;       // paths that reached maxDeposits stored photons
+const uint kPhotonCounterCount = 8u;
+
+// Push constants of photon_trace.comp.
+struct PhotonTraceParams {
+    vec3 sceneCenter;     // bounding sphere of the scene (directional lights emit from its disk)
+    float sceneRadius;
+    uint firstPath;       // Halton index of the first photon path of this dispatch
+    uint pathCount;
+    uint maxDeposits;     // photon slots per path: slot = (path - firstPath) * maxDeposits + k
+    uint seed;
+    uint lightCount;
+    float totalPower;     // watts, luminance-weighted sum over the lights (SceneArrays)
+    uint pad0;
+    uint pad1;
+};
+STATIC_ASSERT_SIZE(PhotonTraceParams, 48)
+
+SHARED_END
+#endif
