@@ -7,6 +7,7 @@
 
 #include "scene_access.glsl"
 #include "shared/halton.glsl"
+#include "camera_and_lights.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -15,32 +16,6 @@ layout(std430, set = 0, binding = 9) buffer Counters { uint counters[]; };
 // counters[0]: samples that produced a non-finite value (dropped)
 
 layout(push_constant) uniform Push { PathTraceParams params; };
-
-vec3 cameraRayDirection(vec2 pixel) {
-    GpuCamera cam = params.camera;
-    vec2 ndc = vec2(2.0f * pixel.x / float(params.width) - 1.0f,
-                    1.0f - 2.0f * pixel.y / float(params.height));
-    return normalize(cam.forward + ndc.x * cam.aspect * cam.tanHalfFovY * cam.right +
-                     ndc.y * cam.tanHalfFovY * cam.up);
-}
-
-// Next-event estimation at a non-delta surface point (MIS-weighted for area lights).
-vec3 directLight(SurfaceHit hit, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n,
-                 inout Sampler rng) {
-    float uPick = nextSample(rng);
-    vec2 uLight = nextSample2(rng);
-    if (params.lightCount == 0u) return vec3(0.0f);
-    LightSample ls = sampleLight(pickLight(uPick, params.lightCount), hit.position, uLight);
-    if (ls.pdf <= 0.0f) return vec3(0.0f);
-    vec3 wi = toLocal(ls.wi, t, b, n);
-    vec3 sideNormal = hit.frontFace ? hit.geometricNormal : -hit.geometricNormal;
-    if (wi.z <= 0.0f || dot(ls.wi, sideNormal) <= 0.0f) return vec3(0.0f);  // light behind the surface
-    vec3 f = evalBsdf(bsdf, wo, wi);
-    if (f.r + f.g + f.b <= 0.0f) return vec3(0.0f);
-    if (!lightVisible(hit.position, hit.geometricNormal, ls)) return vec3(0.0f);
-    float weight = ls.delta ? 1.0f : powerHeuristic(ls.pdf, pdfBsdf(bsdf, wo, wi));
-    return f * wi.z * ls.radiance * (weight / ls.pdf);
-}
 
 // The state of one camera path between bounces.
 struct PathState {
@@ -60,7 +35,7 @@ PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
     st.rng = makeSampler(sampleIndex, streamSeed);
     vec2 jitter = nextSample2(st.rng);
     st.origin = params.camera.position;
-    st.dir = cameraRayDirection(vec2(float(px) + jitter.x, float(py) + jitter.y));
+    st.dir = cameraRayDirection(params.camera, params.width, params.height, vec2(float(px) + jitter.x, float(py) + jitter.y));
     st.throughput = vec3(1.0f);
     st.radiance = vec3(0.0f);
     st.mediumSigma = vec3(0.0f);
@@ -107,7 +82,7 @@ bool extendPath(inout PathState st) {
     if (wo.z <= 0.0f) wo.z = 1.0e-4f;  // shading normal facing away: treat as grazing
 
     if (useNee) {
-        st.radiance += st.throughput * directLight(hit, bsdf, wo, t, b, n, st.rng);
+        st.radiance += st.throughput * directLight(hit, bsdf, wo, t, b, n, params.lightCount, true, st.rng);
     } else {
         nextSample(st.rng);  // keep the sample dimensions of both modes aligned
         nextSample(st.rng);

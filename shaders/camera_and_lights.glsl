@@ -1,0 +1,34 @@
+// GLSL-only helpers shared by the camera-path integrators (pathtrace.comp, visible_points.comp):
+// camera rays and next-event estimation. Include after scene_access.glsl and shared/halton.glsl.
+#ifndef VKP_CAMERA_AND_LIGHTS_GLSL
+#define VKP_CAMERA_AND_LIGHTS_GLSL
+
+// Pinhole camera ray through a (sub)pixel position (0..width, 0..height, y down).
+vec3 cameraRayDirection(GpuCamera cam, uint width, uint height, vec2 pixel) {
+    vec2 ndc = vec2(2.0f * pixel.x / float(width) - 1.0f, 1.0f - 2.0f * pixel.y / float(height));
+    return normalize(cam.forward + ndc.x * cam.aspect * cam.tanHalfFovY * cam.right +
+                     ndc.y * cam.tanHalfFovY * cam.up);
+}
+
+// Next-event estimation at a non-delta surface point: one light chosen by power, one sample on
+// it, a shadow ray. With `mis` the contribution of area lights is weighted by the power heuristic
+// against BSDF sampling (the caller then MIS-weights emission found by BSDF rays); without it the
+// estimate stands alone. Always draws 3 sample dimensions.
+vec3 directLight(SurfaceHit hit, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n, uint lightCount, bool mis,
+                 inout Sampler rng) {
+    float uPick = nextSample(rng);
+    vec2 uLight = nextSample2(rng);
+    if (lightCount == 0u) return vec3(0.0f);
+    LightSample ls = sampleLight(pickLight(uPick, lightCount), hit.position, uLight);
+    if (ls.pdf <= 0.0f) return vec3(0.0f);
+    vec3 wi = toLocal(ls.wi, t, b, n);
+    vec3 sideNormal = hit.frontFace ? hit.geometricNormal : -hit.geometricNormal;
+    if (wi.z <= 0.0f || dot(ls.wi, sideNormal) <= 0.0f) return vec3(0.0f);  // light behind the surface
+    vec3 f = evalBsdf(bsdf, wo, wi);
+    if (f.r + f.g + f.b <= 0.0f) return vec3(0.0f);
+    if (!lightVisible(hit.position, hit.geometricNormal, ls)) return vec3(0.0f);
+    float weight = ls.delta || !mis ? 1.0f : powerHeuristic(ls.pdf, pdfBsdf(bsdf, wo, wi));
+    return f * wi.z * ls.radiance * (weight / ls.pdf);
+}
+
+#endif
