@@ -1,0 +1,23 @@
+// Visible-point pass (shaders/visible_points.comp): reads the scene, adds emission and direct
+// light at the first non-delta surface to the film, writes one GpuVisiblePoint per pixel.
+#pragma once
+
+#include "passes/scene_buffers.h"
+#include "shared/visible_point.glsl"
+#include "vk/buffer.h"
+#include "vk/compute_kernel.h"
+
+namespace vkp {
+
+class VisiblePointPass {
+public:
+    VisiblePointPass(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& film,
+                     const vk::Buffer& visiblePoints);
+
+    void record(VkCommandBuffer cmd, const gpu::VisiblePointParams& params) const;
+
+private:
+    vk::ComputeKernel m_kernel;
+};
+
+}  // namespace vkp

@@ -1,0 +1,102 @@
+// First pass of the photon integrator, one camera sample per pixel: follows the camera path
+// through delta bounces (mirrors, smooth glass) to the first surface with a diffuse or glossy
+// component, adds what needs no photons to the film — emission seen directly or through delta
+// bounces, and direct light at the visible point by next-event estimation — and stores the
+// visible point for the photon estimates (caustics, indirect light) that follow.
+//
+// A surface that is partly delta and partly not (a smooth clear coat over a diffuse base) becomes
+// the visible point: its delta part is not followed further (one visible point per sample).
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "scene_access.glsl"
+#include "shared/halton.glsl"
+#include "shared/photon.glsl"
+#include "shared/visible_point.glsl"
+#include "camera_and_lights.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(std430, set = 0, binding = 8) buffer Film { vec4 film[]; };  // rgb sum, sample count
+layout(std430, set = 0, binding = 9) writeonly buffer VisiblePoints { GpuVisiblePoint visiblePoints[]; };
+
+layout(push_constant) uniform Push { VisiblePointParams params; };
+
+// The camera samples of the photon integrator use their own Halton stream per pixel.
+const uint kVisiblePointStream = 0x56495350u;  // "VISP"
+
+bool hasNonDeltaComponent(BsdfParams p) {
+    bool purelyDelta = specularIsDelta(p) && p.metallic >= 1.0f;
+    return p.transmission < 1.0f && !purelyDelta;
+}
+
+void main() {
+    uint pixel = gl_GlobalInvocationID.x;
+    if (pixel >= params.width * params.height) return;
+    Sampler rng = makeSampler(params.sampleIndex, hashCombine(hashCombine(params.seed, kVisiblePointStream), pixel));
+    vec2 jitter = nextSample2(rng);
+    vec3 origin = params.camera.position;
+    vec3 dir = cameraRayDirection(params.camera, params.width, params.height,
+                                  vec2(float(pixel % params.width) + jitter.x, float(pixel / params.width) + jitter.y));
+    vec3 throughput = vec3(1.0f);
+    vec3 radiance = vec3(0.0f);
+    vec3 mediumSigma = vec3(0.0f);
+    GpuVisiblePoint vp;  // all fields written, so invalid points are zero bytes but for pixel
+    vp.position = vec3(0.0f);
+    vp.material = 0u;
+    vp.throughput = vec3(0.0f);
+    vp.shadingNormal = 0u;
+    vp.uv = vec2(0.0f);
+    vp.wo = 0u;
+    vp.geometricNormal = 0u;
+    vp.flags = 0u;
+    vp.pixel = pixel;
+    vp.pad0 = 0u;
+    vp.pad1 = 0u;
+
+    for (uint depth = 0u; depth <= params.maxSpecularDepth; ++depth) {
+        float tHit;
+        uint tri;
+        float b1;
+        float b2;
+        if (!traceClosest(origin, dir, kInfinity, tHit, tri, b1, b2)) break;
+        throughput *= exp(-mediumSigma * tHit);
+        SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
+        GpuMaterial material = materials[hit.material];
+        // Every vertex so far was reached by a delta bounce: emission counts in full.
+        if (emitsTowards(material, hit.frontFace)) radiance += throughput * emittedRadiance(material, hit.uv);
+
+        BsdfParams bsdf = bsdfParamsAt(material, hit.uv);
+        vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
+        vec3 t;
+        vec3 b;
+        orthonormalBasis(n, t, b);
+        vec3 wo = toLocal(-dir, t, b, n);
+        if (wo.z <= 0.0f) wo.z = 1.0e-4f;
+
+        if (hasNonDeltaComponent(bsdf)) {
+            radiance += throughput * directLight(hit, bsdf, wo, t, b, n, params.lightCount, false, rng);
+            vp.position = hit.position;
+            vp.material = hit.material;
+            vp.throughput = throughput;
+            vp.shadingNormal = encodeOctahedral(n);
+            vp.uv = hit.uv;
+            vp.wo = encodeOctahedral(-dir);
+            vp.geometricNormal = encodeOctahedral(hit.frontFace ? hit.geometricNormal : -hit.geometricNormal);
+            vp.flags = kVisiblePointValid | (hit.frontFace ? kVisiblePointFrontFace : 0u);
+            break;
+        }
+        if (depth == params.maxSpecularDepth) break;
+        vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
+        BsdfSample bs = sampleBsdf(bsdf, wo, hit.frontFace, true, u);
+        if (bs.lobe == kLobeNone) break;
+        throughput *= bs.weight;
+        dir = normalize(toWorld(bs.wi, t, b, n));
+        origin = offsetRayOrigin(hit.position, hit.geometricNormal, dir);
+        if ((bs.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)
+            mediumSigma = hit.frontFace ? material.attenuationCoeff : vec3(0.0f);
+    }
+    if (any(isnan(radiance)) || any(isinf(radiance))) radiance = vec3(0.0f);
+    film[pixel] += vec4(radiance, 1.0f);
+    visiblePoints[pixel] = vp;
+}
