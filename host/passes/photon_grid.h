@@ -1,0 +1,57 @@
+// The photon hash grid pass (shaders/grid_*.comp): reads photon records in their fixed slots and
+// writes the photons a map keeps, sorted by the hash of their cell, with the start of every
+// bucket — a counting sort (count, GPU prefix sum, scatter, per-bucket sort for determinism, copy), no
+// CPU round trip and no linked lists. Gathers read it through shaders/photon_gather.glsl.
+#pragma once
+
+#include <cstdint>
+
+#include "passes/prefix_scan.h"
+#include "shared/photon_grid.glsl"
+#include "vk/buffer.h"
+#include "vk/compute_kernel.h"
+
+namespace vkp {
+
+struct PhotonGridSettings {
+    float cellSize = 0.05f;       // world units; gathers of radius r visit ceil(2r / cellSize + 1)^3 cells
+    uint32_t requiredFlags = 0;   // kPhoton* flags a photon must carry to enter the map
+    uint32_t rejectedFlags = 0;   // flags that keep it out
+};
+
+class PhotonGrid {
+public:
+    // A grid over the `slotCount` photon slots of `photons` (empty slots are skipped).
+    PhotonGrid(vk::Context& context, const vk::Buffer& photons, uint32_t slotCount, const PhotonGridSettings& settings);
+
+    // Records the build; the caller places a barrier before (after the photon writes) and after.
+    void record(VkCommandBuffer cmd) const;
+
+    const vk::Buffer& cellStart() const { return m_cellStart; }  // tableSize + 1 entries
+    const vk::Buffer& photons() const { return m_gridPhotons; }   // bucket order
+    uint32_t tableSize() const { return m_params.tableMask + 1; }
+    const PhotonGridSettings& settings() const { return m_settings; }
+    // What a gather shader needs to find its photons, with the watts of a relative power of 1.
+    gpu::PhotonGridView view(float photonPower) const;
+    // Photons in the grid, read back from the device (after the build has completed).
+    uint32_t downloadPhotonCount() const;
+
+    // Table size for a buffer of `slotCount` slots: a power of two near half the slot count.
+    static uint32_t tableSizeFor(uint32_t slotCount);
+
+private:
+    vk::Context& m_context;
+    PhotonGridSettings m_settings;
+    gpu::PhotonGridParams m_params{};
+    vk::Buffer m_cellStart;
+    vk::Buffer m_cursor;
+    vk::Buffer m_sortedSlots;
+    vk::Buffer m_gridPhotons;
+    PrefixScan m_scan;
+    vk::ComputeKernel m_count;
+    vk::ComputeKernel m_scatter;
+    vk::ComputeKernel m_sortCells;
+    vk::ComputeKernel m_copy;
+};
+
+}  // namespace vkp

@@ -1,0 +1,34 @@
+// Exclusive prefix sum of a uint buffer on the GPU (shaders/scan_blocks.comp, scan_add.comp):
+// blocks of kScanBlockSize items are scanned in workgroup memory, their totals are scanned the
+// same way (recursively), and the scanned totals are added back. Three levels cover 16 M items.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "vk/buffer.h"
+#include "vk/compute_kernel.h"
+
+namespace vkp {
+
+class PrefixScan {
+public:
+    // Scans the first `count` uints of `data` in place when recorded.
+    PrefixScan(vk::Context& context, const vk::Buffer& data, uint32_t count);
+
+    // Records the scan, barriers between its dispatches included; the caller places a barrier
+    // before (for the writes that filled `data`) and after.
+    void record(VkCommandBuffer cmd) const;
+
+private:
+    struct Level {
+        uint32_t count;                            // items scanned at this level
+        vk::Buffer blockSums;                      // one per block: scanned by the next level
+        std::unique_ptr<vk::ComputeKernel> scan;   // scan_blocks.comp over this level's items
+        std::unique_ptr<vk::ComputeKernel> add;    // scan_add.comp: adds the scanned block sums
+    };
+    std::vector<Level> m_levels;
+};
+
+}  // namespace vkp

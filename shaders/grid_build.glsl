@@ -1,0 +1,26 @@
+// GLSL-only bindings shared by the photon-grid build kernels (host/passes/photon_grid.h):
+// counting sort of the selected photons by the hash of their cell.
+#ifndef VKP_GRID_BUILD_GLSL
+#define VKP_GRID_BUILD_GLSL
+
+#include "shared/photon.glsl"
+#include "shared/photon_grid.glsl"
+
+layout(std430, set = 0, binding = 0) readonly buffer Photons { GpuPhoton photons[]; };  // fixed slots
+// tableSize + 1 entries: counts per bucket, then (scanned) the first sorted index of each bucket;
+// the last entry ends as the number of photons in the grid.
+layout(std430, set = 0, binding = 1) buffer CellStart { uint cellStart[]; };
+layout(std430, set = 0, binding = 2) buffer Cursor { uint cursor[]; };            // scatter positions
+layout(std430, set = 0, binding = 3) buffer SortedSlots { uint sortedSlots[]; };  // slot per sorted photon
+layout(std430, set = 0, binding = 4) writeonly buffer GridPhotons { GpuPhoton gridPhotons[]; };
+
+layout(push_constant) uniform Push { PhotonGridParams params; };
+
+// The bucket of slot `slot`, or ~0u when the map does not keep that photon.
+uint bucketOfSlot(uint slot) {
+    GpuPhoton p = photons[slot];
+    if (!photonSelected(photonFlags(p), params.requiredFlags, params.rejectedFlags)) return ~0u;
+    return gridHash(gridCell(p.position, params.invCellSize), params.tableMask);
+}
+
+#endif

@@ -1,0 +1,12 @@
+// Photon grid build, step 5: copies the photon records into bucket order.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "grid_build.glsl"
+
+layout(local_size_x = 64) in;
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i < cellStart[params.tableMask + 1u]) gridPhotons[i] = photons[sortedSlots[i]];
+}

@@ -1,0 +1,16 @@
+// Photon grid build, step 3 (after the prefix sum of the counts, cursor = a copy of cellStart):
+// writes each selected photon's slot into its bucket's range. The order inside a bucket depends
+// on scheduling; grid_sort_cells.comp makes it deterministic.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "grid_build.glsl"
+
+layout(local_size_x = 64) in;
+
+void main() {
+    uint slot = gl_GlobalInvocationID.x;
+    if (slot >= params.slotCount) return;
+    uint bucket = bucketOfSlot(slot);
+    if (bucket != ~0u) sortedSlots[atomicAdd(cursor[bucket], 1u)] = slot;
+}

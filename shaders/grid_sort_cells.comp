@@ -1,0 +1,33 @@
+// Photon grid build, step 4: one invocation per bucket sorts the bucket's slots ascending (Shell
+// sort with Ciura's gaps: buckets hold a handful to a few thousand photons, already nearly in
+// order), so the grid — and every sum a gather forms over it — is the same on every run.
+// Every step keeps the range a permutation: should lavapipe's shared loop-iteration limit (see
+// docs/photon-mapping.md) cut a huge bucket's sort short, no photon is lost, only the order.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "grid_build.glsl"
+
+layout(local_size_x = 64) in;
+
+const uint kGaps[8] = uint[8](701u, 301u, 132u, 57u, 23u, 10u, 4u, 1u);
+
+void main() {
+    uint bucket = gl_GlobalInvocationID.x;
+    if (bucket > params.tableMask) return;
+    uint begin = cellStart[bucket];
+    uint end = cellStart[bucket + 1u];
+    uint n = end - begin;
+    for (uint g = 0u; g < 8u; ++g) {
+        uint gap = kGaps[g];
+        for (uint i = gap; i < n; ++i) {
+            uint value = sortedSlots[begin + i];
+            uint j = i;
+            while (j >= gap && sortedSlots[begin + j - gap] > value) {
+                sortedSlots[begin + j] = sortedSlots[begin + j - gap];
+                j -= gap;
+            }
+            sortedSlots[begin + j] = value;
+        }
+    }
+}

@@ -1,0 +1,17 @@
+// Exclusive prefix sum, last step: adds each block's scanned offset to its items.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "shared/photon_grid.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(std430, set = 0, binding = 0) buffer Data { uint data[]; };
+layout(std430, set = 0, binding = 1) readonly buffer BlockOffsets { uint blockOffsets[]; };
+
+layout(push_constant) uniform Push { uint count; } push;
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i < push.count) data[i] += blockOffsets[i / kScanBlockSize];
+}

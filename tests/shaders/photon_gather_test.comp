@@ -1,0 +1,54 @@
+// Test kernel for shaders/photon_gather.glsl: runs a fixed-radius gather and a k-nearest gather
+// for each query; tests/photon_grid_test.cpp compares both with brute force on the host.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "shared/sampling.glsl"
+#include "shared/bsdf.glsl"
+#define PHOTON_GRID_BINDING 3
+#include "photon_gather.glsl"
+
+layout(local_size_x = 64) in;
+
+struct GatherQuery {
+    vec3 position;
+    float radius;
+    vec3 normal;
+    uint k;
+};
+
+layout(std430, set = 0, binding = 0) readonly buffer Queries { GatherQuery queries[]; };
+layout(std430, set = 0, binding = 1) writeonly buffer FixedResults { vec4 fixedResults[]; };   // sum, count
+layout(std430, set = 0, binding = 2) writeonly buffer NearestResults { uint nearestResults[]; };  // see below
+
+layout(push_constant) uniform Push {
+    PhotonGridView grid;
+    BsdfParams bsdf;
+    uint count;
+    float coneK;
+    uint requiredFlags;
+    uint rejectedFlags;
+} push;
+
+void main() {
+    uint q = gl_GlobalInvocationID.x;
+    if (q >= push.count) return;
+    GatherQuery query = queries[q];
+    vec3 n = query.normal;
+    vec3 t;
+    vec3 b;
+    orthonormalBasis(n, t, b);
+    vec3 wo = normalize(vec3(0.3f, -0.2f, 1.0f));
+    FixedRadiusGather fixedGather = gatherFixedRadius(push.grid, query.position, query.radius, push.coneK,
+                                                      push.requiredFlags, push.rejectedFlags, push.bsdf, wo, t, b, n);
+    fixedResults[q] = vec4(fixedGather.weightedPower, float(fixedGather.count));
+
+    // Per query: found, radius2 (float bits), then the photons' lightIndex fields (their ids).
+    float radius2;
+    uint found = gatherNearest(push.grid, query.position, n, query.k, query.radius, push.requiredFlags,
+                               push.rejectedFlags, radius2);
+    uint base = q * (kMaxGatherK + 2u);
+    nearestResults[base] = found;
+    nearestResults[base + 1u] = floatBitsToUint(radius2);
+    for (uint j = 0u; j < found; ++j) nearestResults[base + 2u + j] = gridPhotons[heapIndex[j]].lightIndex;
+}
