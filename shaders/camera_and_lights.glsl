@@ -31,4 +31,12 @@ vec3 directLight(SurfaceHit hit, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 
     return f * wi.z * ls.radiance * (weight / ls.pdf);
 }
 
+// MIS weight (power heuristic) of emission that a BSDF-sampled ray with solid-angle pdf
+// `bsdfPdf` found at `hit`, distance tHit along dir, against next-event estimation of that point.
+float emissionMisWeight(SurfaceHit hit, vec3 dir, float tHit, float bsdfPdf) {
+    float cosLight = abs(dot(dir, hit.geometricNormal));
+    float lightPdf = hit.emitterPdfArea * tHit * tHit / max(cosLight, 1.0e-8f);
+    return powerHeuristic(bsdfPdf, lightPdf);
+}
+
 #endif

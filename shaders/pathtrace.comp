@@ -62,11 +62,7 @@ bool extendPath(inout PathState st) {
         vec3 le = emittedRadiance(material, hit.uv);
         if (le.r + le.g + le.b > 0.0f) {
             float weight = 1.0f;
-            if (useNee && !st.lastDelta) {
-                float cosLight = abs(dot(st.dir, hit.geometricNormal));
-                float lightPdf = hit.emitterPdfArea * tHit * tHit / max(cosLight, 1.0e-8f);
-                weight = powerHeuristic(st.lastPdf, lightPdf);
-            }
+            if (useNee && !st.lastDelta) weight = emissionMisWeight(hit, st.dir, tHit, st.lastPdf);
             st.radiance += st.throughput * le * weight;
         }
     }

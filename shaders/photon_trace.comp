@@ -3,10 +3,10 @@
 // per bounce BSDF sampling and Russian roulette with unmodified power — so any path can be
 // regenerated (and later retraced in place) from its index alone.
 //
-// Photons are stored at every hit whose surface has a non-delta (diffuse or glossy) component,
-// in the fixed slot (path - firstPath) * maxDeposits + k of the k-th stored photon of the path,
+// Photons are stored at every hit on a surface that stores photons (diffuse or broadly glossy;
+// shared/bsdf.glsl storesPhotons), in the fixed slot (path - firstPath) * maxDeposits + k of the k-th stored photon of the path,
 // so the result does not depend on scheduling. Flags: primary (first hit after the light),
-// caustic (light -> one or more delta bounces -> here: L S+ D); all others are global photons.
+// caustic (light -> one or more mirror-like bounces -> here: L S+ D); all others are global photons.
 // Power is stored relative to the nominal photon power totalPower / pathCount.
 #version 460
 #extension GL_GOOGLE_include_directive : require
@@ -96,12 +96,6 @@ EmittedPhoton emitPhoton(uint index, vec2 uPosition, vec2 uDirection, float uSid
     return e;
 }
 
-// A surface keeps photons when it can scatter light diffusely or glossily (not purely delta).
-bool storesPhotons(BsdfParams p) {
-    bool purelyDelta = specularIsDelta(p) && p.metallic >= 1.0f;
-    return p.transmission < 1.0f && !purelyDelta;
-}
-
 void main() {
     uint local = gl_GlobalInvocationID.x;
     if (local >= params.pathCount || params.lightCount == 0u) return;
@@ -176,7 +170,7 @@ void main() {
             break;
         }
         power *= bs.weight / survive;
-        onlySpecularSoFar = onlySpecularSoFar && (bs.lobe & kLobeDelta) != 0u;
+        onlySpecularSoFar = onlySpecularSoFar && ((bs.lobe & kLobeDelta) != 0u || !storesPhotons(bsdf));
         dir = normalize(toWorld(bs.wi, t, b, n));
         origin = offsetRayOrigin(hit.position, hit.geometricNormal, dir);
         if ((bs.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)

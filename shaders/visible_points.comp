@@ -1,8 +1,9 @@
 // First pass of the photon integrator, one camera sample per pixel: follows the camera path
-// through delta bounces (mirrors, smooth glass) to the first surface with a diffuse or glossy
-// component, adds what needs no photons to the film — emission seen directly or through delta
-// bounces, and direct light at the visible point by next-event estimation — and stores the
-// visible point for the photon estimates (caustics, indirect light) that follow.
+// through mirror-like bounces (smooth glass, mirrors, polished metal) to the first surface that
+// stores photons (shared/bsdf.glsl storesPhotons), adds what needs no photons to the film —
+// emission seen directly or through those bounces, and direct light by next-event estimation at
+// the visible point and at polished-metal vertices — and stores the visible point for the photon
+// estimates (caustics, indirect light) that follow.
 //
 // A surface that is partly delta and partly not (a smooth clear coat over a diffuse base) becomes
 // the visible point: its delta part is not followed further (one visible point per sample).
@@ -25,11 +26,6 @@ layout(push_constant) uniform Push { VisiblePointParams params; };
 // The camera samples of the photon integrator use their own Halton stream per pixel.
 const uint kVisiblePointStream = 0x56495350u;  // "VISP"
 
-bool hasNonDeltaComponent(BsdfParams p) {
-    bool purelyDelta = specularIsDelta(p) && p.metallic >= 1.0f;
-    return p.transmission < 1.0f && !purelyDelta;
-}
-
 void main() {
     uint pixel = gl_GlobalInvocationID.x;
     if (pixel >= params.width * params.height) return;
@@ -41,6 +37,8 @@ void main() {
     vec3 throughput = vec3(1.0f);
     vec3 radiance = vec3(0.0f);
     vec3 mediumSigma = vec3(0.0f);
+    bool lastDelta = true;  // the camera ray, then: was the last bounce a delta lobe
+    float lastPdf = 0.0f;   // solid-angle pdf of the last bounce (polished metal)
     GpuVisiblePoint vp;  // all fields written, so invalid points are zero bytes but for pixel
     vp.position = vec3(0.0f);
     vp.material = 0u;
@@ -63,8 +61,12 @@ void main() {
         throughput *= exp(-mediumSigma * tHit);
         SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
         GpuMaterial material = materials[hit.material];
-        // Every vertex so far was reached by a delta bounce: emission counts in full.
-        if (emitsTowards(material, hit.frontFace)) radiance += throughput * emittedRadiance(material, hit.uv);
+        // Emission behind delta bounces counts in full; behind a polished-metal bounce it is
+        // weighted against that vertex's next-event estimate.
+        if (emitsTowards(material, hit.frontFace)) {
+            float weight = lastDelta ? 1.0f : emissionMisWeight(hit, dir, tHit, lastPdf);
+            radiance += throughput * emittedRadiance(material, hit.uv) * weight;
+        }
 
         BsdfParams bsdf = bsdfParamsAt(material, hit.uv);
         vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
@@ -74,7 +76,7 @@ void main() {
         vec3 wo = toLocal(-dir, t, b, n);
         if (wo.z <= 0.0f) wo.z = 1.0e-4f;
 
-        if (hasNonDeltaComponent(bsdf)) {
+        if (storesPhotons(bsdf)) {
             radiance += throughput * directLight(hit, bsdf, wo, t, b, n, params.lightCount, false, rng);
             vp.position = hit.position;
             vp.material = hit.material;
@@ -87,10 +89,15 @@ void main() {
             break;
         }
         if (depth == params.maxSpecularDepth) break;
+        // A polished metal: direct light by next-event estimation (MIS), then on by its lobe.
+        if (!specularIsDelta(bsdf))
+            radiance += throughput * directLight(hit, bsdf, wo, t, b, n, params.lightCount, true, rng);
         vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
         BsdfSample bs = sampleBsdf(bsdf, wo, hit.frontFace, true, u);
         if (bs.lobe == kLobeNone) break;
         throughput *= bs.weight;
+        lastDelta = (bs.lobe & kLobeDelta) != 0u;
+        lastPdf = bs.pdf;
         dir = normalize(toWorld(bs.wi, t, b, n));
         origin = offsetRayOrigin(hit.position, hit.geometricNormal, dir);
         if ((bs.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)

@@ -142,6 +142,18 @@ INLINE float specularSelectProbability(BsdfParams p, float cosO) {
     return clamp(spec / (spec + diff), 0.1f, 0.9f);
 }
 
+// Below this perceptual roughness a metal's glossy lobe is too narrow for photon density
+// estimation: photon paths, camera paths and final gather rays follow it like a mirror.
+const float kPhotonGlossyRoughness = 0.2f;
+
+// The surface scatters light diffusely or broadly enough for photon estimates: it stores photons,
+// becomes a visible point and ends a final gather ray. Otherwise (smooth glass, mirrors, polished
+// metal) paths go on through it and photons that left it are caustic photons.
+INLINE bool storesPhotons(BsdfParams p) {
+    bool mirrorLike = p.metallic >= 1.0f && (specularIsDelta(p) || p.roughness < kPhotonGlossyRoughness);
+    return p.transmission < 1.0f && !mirrorLike;
+}
+
 // Non-delta part of the BSDF (f, without the cosine) for local wo, wi; both on the +z side.
 INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
