@@ -23,6 +23,8 @@ layout(std430, set = 0, binding = PHOTON_GRID_BINDING + 1) readonly buffer GridP
 
 // Queries visit at most this many cells per axis (a radius far above the cell size is clamped).
 const int kMaxGatherCellsPerAxis = 8;
+// k-nearest queries visit rings of cells up to this Chebyshev distance from the query's cell.
+const int kMaxGatherRings = 3;
 
 void gatherCellRange(PhotonGridView g, vec3 x, float r, out ivec3 lo, out ivec3 hi) {
     lo = gridCell(x - vec3(r), g.invCellSize);
@@ -152,15 +154,18 @@ uint gatherNearest(PhotonGridView g, vec3 x, vec3 n, uint k, float maxRadius, ui
     s.count = 0u;
     s.capacity = clamp(k, 1u, kMaxGatherK);
     s.radius2 = maxRadius * maxRadius;
-    ivec3 lo;
-    ivec3 hi;
-    gatherCellRange(g, x, maxRadius, lo, hi);
-    for (int cz = lo.z; cz <= hi.z; ++cz)
-        for (int cy = lo.y; cy <= hi.y; ++cy)
-            for (int cx = lo.x; cx <= hi.x; ++cx) {
-                ivec3 c = ivec3(cx, cy, cz);
-                if (cellDistance2(g, c, x) <= s.radius2) gatherNearestInCell(g, c, x, n, required, rejected, s);
-            }
+    // Cells in rings of growing Chebyshev distance around x's cell: once k photons are found the
+    // radius shrinks to the k-th distance and the outer rings' cells are mostly skipped.
+    ivec3 center = gridCell(x, g.invCellSize);
+    int rings = min(int(ceil(maxRadius * g.invCellSize)), kMaxGatherRings);
+    for (int ring = 0; ring <= rings; ++ring)
+        for (int dz = -ring; dz <= ring; ++dz)
+            for (int dy = -ring; dy <= ring; ++dy)
+                for (int dx = -ring; dx <= ring; ++dx) {
+                    ivec3 c = center + ivec3(dx, dy, dz);
+                    if (max(abs(dx), max(abs(dy), abs(dz))) == ring && cellDistance2(g, c, x) <= s.radius2)
+                        gatherNearestInCell(g, c, x, n, required, rejected, s);
+                }
     radius2 = s.count == s.capacity ? heapDistance2[0] : maxRadius * maxRadius;
     return s.count;
 }

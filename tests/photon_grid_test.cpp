@@ -215,7 +215,9 @@ TEST_F(PhotonGridTest, EveryMapPhotonLandsInItsBucketAndRebuildsAreIdentical) {
         ASSERT_LE(starts[bucket], starts[bucket + 1]);
         for (uint32_t i = starts[bucket]; i < starts[bucket + 1]; ++i) {
             EXPECT_EQ(gpu::gridHash(gpu::gridCell(sorted[i].position, inv), grid.tableSize() - 1), bucket);
-            if (i > starts[bucket]) EXPECT_LT(sorted[i - 1].lightIndex, sorted[i].lightIndex) << "slot order";
+            if (i > starts[bucket]) {
+                EXPECT_LT(sorted[i - 1].lightIndex, sorted[i].lightIndex) << "slot order";
+            }
             gotIds.push_back(sorted[i].lightIndex);
         }
     }

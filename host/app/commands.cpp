@@ -32,10 +32,20 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
     const RenderSettings& s = options.settings;
     nlohmann::json j;
     j["scene"] = options.scene.string();
-    j["integrator"] = "path";
+    j["integrator"] = stats.integrator;
     j["settings"] = {{"width", s.width}, {"height", s.height}, {"spp", s.samplesPerPixel},
                      {"seed", s.seed}, {"maxDepth", s.maxDepth}, {"timeLimit", s.timeLimitSeconds},
                      {"nextEventEstimation", s.nextEventEstimation}};
+    if (s.integrator == Integrator::Photon) {
+        const PhotonRenderSettings& p = s.photon;
+        j["settings"]["photon"] = {{"photons", p.globalPaths}, {"causticPhotons", p.causticPaths},
+                                   {"gatherRays", p.gatherRays}, {"gatherK", p.gatherK},
+                                   {"radius", stats.gatherRadius}, {"globalRadius", stats.globalRadius}, {"progressive", p.progressive},
+                                   {"alpha", p.alpha}};
+        j["photons"] = {{"pathsTraced", stats.photonPathsTraced}, {"globalStored", stats.globalPhotons},
+                        {"causticStored", stats.causticPhotons}, {"dropped", stats.photonsDropped},
+                        {"mapBytes", stats.photonMapBytes}, {"seconds", stats.photonSeconds}};
+    }
     j["device"] = stats.device;
     j["scene_stats"] = {{"triangles", stats.triangles}, {"lights", stats.lights},
                         {"gpuBytes", stats.gpuSceneBytes}};
@@ -87,7 +97,7 @@ int runRender(const RenderCommandOptions& options) {
     const RenderSettings& s = options.settings;
     std::vector<std::pair<std::string, std::string>> attributes{
         {"vkphoton/scene", options.scene.string()},
-        {"vkphoton/integrator", "path"},
+        {"vkphoton/integrator", stats.integrator},
         {"vkphoton/spp", std::to_string(stats.samplesPerPixel)},
         {"vkphoton/sppRequested", std::to_string(s.samplesPerPixel)},
         {"vkphoton/seed", std::to_string(s.seed)},
@@ -104,6 +114,10 @@ int runRender(const RenderCommandOptions& options) {
         writeTextAtomically(options.statsJson, statsToJson(options, stats, result.image, loadSeconds, totalSeconds).dump(2) + "\n");
     if (stats.nonFiniteSamples > 0)
         fmt::print(stderr, "warning: {} sample(s) were NaN or infinite and were dropped\n", stats.nonFiniteSamples);
+    if (!options.quiet && s.integrator == Integrator::Photon)
+        fmt::print(stderr, "photon maps: {} global and {} caustic photons from {} paths in {:.2f} s ({} MB); radius {:.4g}\n",
+                   stats.globalPhotons, stats.causticPhotons, stats.photonPathsTraced, stats.photonSeconds,
+                   stats.photonMapBytes >> 20, stats.gatherRadius);
     if (!options.quiet)
         fmt::print(stderr, "wrote {} and {} ({} spp{}, {:.2f} s rendering, {:.2f} Mpaths/s)\n", exrPath.string(),
                    pngPath.string(), stats.samplesPerPixel, stats.partial ? ", partial: " + stats.stopReason : "",

@@ -1,5 +1,8 @@
 // vkphoton command line: `render`, `photons` and `devices`. Exit codes: 0 ok, 1 runtime failure, 2 bad usage
 // or bad input.
+#include <map>
+#include <string>
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -30,6 +33,18 @@ int main(int argc, char** argv) {
     renderCmd->add_flag("--quiet", render.quiet, "No progress output");
     bool bsdfOnly = false;
     renderCmd->add_flag("--no-nee", bsdfOnly, "Disable next-event estimation (BSDF sampling only; a reference)");
+    const std::map<std::string, Integrator> integrators{{"path", Integrator::Path}, {"photon", Integrator::Photon}};
+    renderCmd->add_option("--integrator", s.integrator, "path (path tracing, the reference) or photon (photon mapping)")
+        ->transform(CLI::CheckedTransformer(integrators, CLI::ignore_case))->default_str("path");
+    PhotonRenderSettings& ph = s.photon;
+    CLI::Option_group* photonGroup = renderCmd->add_option_group("photon integrator");
+    photonGroup->add_option("--photons", ph.globalPaths, "Photon paths for the global map (per pass with --progressive)")->capture_default_str()->check(CLI::Range(1u, 1u << 26));
+    photonGroup->add_option("--caustic-photons", ph.causticPaths, "Photon paths for the caustic map (0: no caustic map)")->capture_default_str()->check(CLI::Range(0u, 1u << 26));
+    photonGroup->add_option("--gather-rays", ph.gatherRays, "Final gather rays per sample (0: read the global map at the visible point)")->capture_default_str()->check(CLI::Range(0u, 1024u));
+    photonGroup->add_option("--gather-k", ph.gatherK, "Nearest photons per global-map estimate")->capture_default_str()->check(CLI::Range(1u, 64u));
+    photonGroup->add_option("--radius", ph.radius, "Caustic gather radius and initial progressive radius, world units [default: 1.5% of the scene's bounding radius]")->check(CLI::PositiveNumber);
+    photonGroup->add_flag("--progressive", ph.progressive, "Stochastic progressive photon mapping: a fresh photon pass per sample, shrinking radii (converges to the path tracer)");
+    photonGroup->add_option("--alpha", ph.alpha, "Progressive radius reduction: fraction of new photons kept per pass")->capture_default_str()->check(CLI::Range(0.01f, 0.99f));
 
     PhotonsCommandOptions photons;
     CLI::App* photonsCmd = app.add_subcommand("photons", "Trace photons and write the photon maps as a PLY point cloud");

@@ -27,10 +27,7 @@ PhotonGrid::PhotonGrid(vk::Context& context, const vk::Buffer& photons, uint32_t
                        const PhotonGridSettings& settings)
     : m_context(context), m_settings(settings),
       m_params([&] {
-          if (!(settings.cellSize > 0.0f) || !std::isfinite(settings.cellSize))
-              throw InputError(fmt::format("photon grid: the cell size must be positive (got {})", settings.cellSize));
           gpu::PhotonGridParams p{};
-          p.invCellSize = 1.0f / settings.cellSize;
           p.tableMask = tableSizeFor(slotCount) - 1;
           p.slotCount = slotCount;
           p.requiredFlags = settings.requiredFlags;
@@ -48,11 +45,19 @@ PhotonGrid::PhotonGrid(vk::Context& context, const vk::Buffer& photons, uint32_t
       m_scatter(context, "grid_scatter.comp", 5, sizeof(gpu::PhotonGridParams)),
       m_sortCells(context, "grid_sort_cells.comp", 5, sizeof(gpu::PhotonGridParams)),
       m_copy(context, "grid_copy.comp", 5, sizeof(gpu::PhotonGridParams)) {
+    setCellSize(settings.cellSize);
     const std::vector<const vk::Buffer*> bindings{&photons, &m_cellStart, &m_cursor, &m_sortedSlots, &m_gridPhotons};
     m_count.bind(bindings);
     m_scatter.bind(bindings);
     m_sortCells.bind(bindings);
     m_copy.bind(bindings);
+}
+
+void PhotonGrid::setCellSize(float cellSize) {
+    if (!(cellSize > 0.0f) || !std::isfinite(cellSize))
+        throw InputError(fmt::format("photon grid: the cell size must be positive (got {})", cellSize));
+    m_settings.cellSize = cellSize;
+    m_params.invCellSize = 1.0f / cellSize;
 }
 
 void PhotonGrid::record(VkCommandBuffer cmd) const {

@@ -24,6 +24,9 @@ public:
     // A grid over the `slotCount` photon slots of `photons` (empty slots are skipped).
     PhotonGrid(vk::Context& context, const vk::Buffer& photons, uint32_t slotCount, const PhotonGridSettings& settings);
 
+    // Changes the cell size for the next build (the table and buffers stay).
+    void setCellSize(float cellSize);
+
     // Records the build; the caller places a barrier before (after the photon writes) and after.
     void record(VkCommandBuffer cmd) const;
 

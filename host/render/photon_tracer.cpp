@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include "passes/photon_trace_pass.h"
 #include "util/errors.h"
 #include "vk/compute_kernel.h"
 #include "vk/context.h"
@@ -22,9 +21,11 @@ PhotonCounters PhotonTracer::trace(const PhotonSettings& settings) {
         throw InputError("photon tracing needs at least one path and one deposit per path");
     const uint64_t slots = uint64_t(settings.paths) * settings.maxDeposits;
     const VkDeviceSize bytes = slots * sizeof(gpu::GpuPhoton);
-    if (!m_photons || m_photons.size() != bytes)
-        m_photons = vk::Buffer(m_context, "photon map", bytes, vk::kStorageUsage);
-    PhotonTracePass pass(m_context, m_buffers, m_photons, m_counters);
+    if (!m_photons || m_photons.size() < bytes) {
+        m_pass.reset();
+        m_photons = vk::Buffer(m_context, "photon slots", bytes, vk::kStorageUsage);
+        m_pass = std::make_unique<PhotonTracePass>(m_context, m_buffers, m_photons, m_counters);
+    }
 
     gpu::PhotonTraceParams params{};
     params.sceneCenter = m_sceneCenter;
@@ -39,10 +40,11 @@ PhotonCounters PhotonTracer::trace(const PhotonSettings& settings) {
         m_photons.fillZero(cmd);
         m_counters.fillZero(cmd);
         vk::transferToComputeBarrier(cmd);
-        pass.record(cmd, params);
+        m_pass->record(cmd, params);
         vk::computeToHostBarrier(cmd);
     });
     m_nominalPower = m_totalPower / settings.paths;
+    m_slotCount = slots;
 
     const auto c = m_counters.download<uint32_t>();
     PhotonCounters counters;
@@ -54,6 +56,12 @@ PhotonCounters PhotonTracer::trace(const PhotonSettings& settings) {
     counters.lost = c[gpu::kPhotonCounterLost];
     counters.truncated = c[gpu::kPhotonCounterTruncated];
     return counters;
+}
+
+std::vector<gpu::GpuPhoton> PhotonTracer::downloadPhotons() const {
+    std::vector<gpu::GpuPhoton> photons(m_slotCount);
+    m_photons.download(photons.data(), m_slotCount * sizeof(gpu::GpuPhoton));
+    return photons;
 }
 
 }  // namespace vkp

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "passes/photon_trace_pass.h"
 #include "passes/scene_buffers.h"
 #include "shared/photon.glsl"
 #include "vk/buffer.h"
@@ -26,21 +28,34 @@ struct PhotonCounters {
     uint64_t absorbed = 0;
     uint64_t lost = 0;
     uint64_t truncated = 0;
+
+    PhotonCounters& operator+=(const PhotonCounters& o) {
+        emitted += o.emitted;
+        storedCaustic += o.storedCaustic;
+        storedGlobal += o.storedGlobal;
+        storedPrimary += o.storedPrimary;
+        absorbed += o.absorbed;
+        lost += o.lost;
+        truncated += o.truncated;
+        return *this;
+    }
 };
 
 class PhotonTracer {
 public:
     PhotonTracer(vk::Context& context, const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers);
 
-    // Traces `settings.paths` paths; the photon buffer holds paths * maxDeposits slots (empty
-    // slots have no kPhotonValid flag). Refuses (InputError) a buffer beyond the device's
+    // Traces `settings.paths` paths; the first paths * maxDeposits slots of the photon buffer hold
+    // their photons (empty slots have no kPhotonValid flag). The buffer only grows, so a shorter
+    // trace keeps it (and what is bound to it). Refuses (InputError) a buffer beyond the device's
     // storage-buffer range.
     PhotonCounters trace(const PhotonSettings& settings);
 
     const vk::Buffer& photons() const { return m_photons; }
     // Watts carried by a photon of relative power 1: total light power / paths.
     double nominalPhotonPower() const { return m_nominalPower; }
-    std::vector<gpu::GpuPhoton> downloadPhotons() const { return m_photons.download<gpu::GpuPhoton>(); }
+    uint64_t slotCount() const { return m_slotCount; }  // slots written by the last trace
+    std::vector<gpu::GpuPhoton> downloadPhotons() const;
 
 private:
     vk::Context& m_context;
@@ -50,7 +65,9 @@ private:
     double m_totalPower;
     vk::Buffer m_photons;
     vk::Buffer m_counters;
+    std::unique_ptr<PhotonTracePass> m_pass;  // bound to m_photons: rebuilt when it is reallocated
     double m_nominalPower = 0.0;
+    uint64_t m_slotCount = 0;
 };
 
 }  // namespace vkp

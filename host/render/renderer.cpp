@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 
 #include <fmt/format.h>
 
 #include "passes/path_trace_pass.h"
+#include "render/photon_integrator.h"
+#include "render/sample_loop.h"
 #include "util/errors.h"
 #include "vk/context.h"
 
@@ -19,9 +20,10 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Each submission aims at this much device time, so progress, the time limit and Ctrl-C are
-// honoured promptly while few submissions keep the per-dispatch overhead small.
-constexpr double kTargetBatchSeconds = 0.3;
+// Samples per pixel one path-tracing dispatch adds. lavapipe ends every loop of a shader
+// invocation once all of them together have run 65535 iterations (docs/photon-mapping.md), and a
+// sample costs a few hundred traversal steps: more samples per dispatch would cut paths short.
+constexpr uint32_t kMaxSamplesPerDispatch = 8;
 
 }  // namespace
 
@@ -48,6 +50,19 @@ RenderResult Renderer::render(const RenderSettings& settings, const ProgressCall
                               const std::atomic<bool>* stop) {
     if (settings.width == 0 || settings.height == 0)
         throw InputError("the image must be at least 1x1 pixels");
+    RenderResult result;
+    if (settings.integrator == Integrator::Photon) {
+        PhotonIntegrator integrator(m_context, m_scene, m_arrays, m_buffers);
+        result = integrator.render(settings, progress, stop);
+    } else {
+        result = renderPath(settings, progress, stop);
+    }
+    fillSceneStats(result.stats);
+    return result;
+}
+
+RenderResult Renderer::renderPath(const RenderSettings& settings, const ProgressCallback& progress,
+                                  const std::atomic<bool>* stop) {
     const uint64_t pixels = uint64_t(settings.width) * settings.height;
     vk::Buffer film(m_context, "film", pixels * sizeof(glm::vec4), vk::kStorageUsage);
     vk::Buffer counters(m_context, "counters", 16 * sizeof(uint32_t), vk::kStorageUsage);
@@ -67,61 +82,37 @@ RenderResult Renderer::render(const RenderSettings& settings, const ProgressCall
         counters.fillZero(cmd);
         vk::transferToComputeBarrier(cmd);
     });
+    const SampleLoopResult loop = runSampleLoop(settings, 4096, progress, stop, [&](uint32_t first, uint32_t count) {
+        m_context.submitAndWait([&](VkCommandBuffer cmd) {
+            for (uint32_t done = 0; done < count; done += kMaxSamplesPerDispatch) {
+                params.firstSample = first + done;
+                params.sampleCount = std::min(kMaxSamplesPerDispatch, count - done);
+                pass.record(cmd, params);
+                vk::computeBarrier(cmd);
+            }
+            vk::computeToHostBarrier(cmd);
+        });
+    });
 
     RenderResult result;
     RenderStats& stats = result.stats;
-    stats.stopReason = "complete";
-    const auto start = Clock::now();
-    uint32_t done = 0;
-    uint32_t batch = 1;
-    while (done < settings.samplesPerPixel) {
-        if (stop && stop->load()) { stats.stopReason = "interrupted"; break; }
-        if (settings.timeLimitSeconds > 0.0 && secondsSince(start) >= settings.timeLimitSeconds) {
-            stats.stopReason = "time limit";
-            break;
-        }
-        params.firstSample = done;
-        params.sampleCount = std::min(batch, settings.samplesPerPixel - done);
-        const auto batchStart = Clock::now();
-        m_context.submitAndWait([&](VkCommandBuffer cmd) {
-            pass.record(cmd, params);
-            vk::computeBarrier(cmd);
-            vk::computeToHostBarrier(cmd);
-        });
-        const double batchSeconds = secondsSince(batchStart);
-        done += params.sampleCount;
-        // Grow or shrink the next batch towards the target time per submission.
-        const double perSample = batchSeconds / params.sampleCount;
-        double next = perSample > 0.0 ? kTargetBatchSeconds / perSample : 2.0 * batch;
-        if (settings.timeLimitSeconds > 0.0)
-            next = std::min(next, std::max(1.0, (settings.timeLimitSeconds - secondsSince(start)) / perSample));
-        batch = static_cast<uint32_t>(std::clamp(next, 1.0, 4096.0));
-        if (progress) progress({done, settings.samplesPerPixel, secondsSince(start)});
-    }
-    stats.renderSeconds = secondsSince(start);
-    stats.samplesPerPixel = done;
-    stats.partial = done < settings.samplesPerPixel;
-    stats.cameraPaths = pixels * done;
+    stats.stopReason = loop.stopReason;
+    stats.renderSeconds = loop.seconds;
+    stats.samplesPerPixel = loop.samplesDone;
+    stats.partial = loop.samplesDone < settings.samplesPerPixel;
+    stats.cameraPaths = pixels * loop.samplesDone;
+    stats.nonFiniteSamples = counters.download<uint32_t>()[0];
+    result.image = resolveFilm(film.download<glm::vec4>(), settings.width, settings.height);
+    return result;
+}
+
+void Renderer::fillSceneStats(RenderStats& stats) const {
     stats.device = m_context.deviceName();
     stats.triangles = m_arrays.triangles.size();
     stats.lights = m_arrays.lights.size();
     stats.gpuSceneBytes = m_buffers.bytes();
     stats.bvhSeconds = m_arrays.bvhBuildSeconds;
     stats.uploadSeconds = m_uploadSeconds;
-
-    const auto sums = film.download<glm::vec4>();
-    stats.nonFiniteSamples = counters.download<uint32_t>()[0];
-    result.image.width = settings.width;
-    result.image.height = settings.height;
-    result.image.pixels.resize(pixels * 3);
-    for (uint64_t i = 0; i < pixels; ++i) {
-        const glm::vec4 s = sums[i];
-        const float inv = s.w > 0.0f ? 1.0f / s.w : 0.0f;
-        result.image.pixels[3 * i + 0] = s.x * inv;
-        result.image.pixels[3 * i + 1] = s.y * inv;
-        result.image.pixels[3 * i + 2] = s.z * inv;
-    }
-    return result;
 }
 
 }  // namespace vkp

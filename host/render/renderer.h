@@ -14,7 +14,27 @@
 namespace vkp {
 namespace vk { class Context; }
 
+enum class Integrator {
+    Path,    // path tracing with next-event estimation and MIS (the reference)
+    Photon,  // two-pass photon mapping (render/photon_integrator.h)
+};
+
+// Settings of the photon integrator (--integrator photon).
+struct PhotonRenderSettings {
+    uint32_t globalPaths = 200000;    // --photons: paths traced for the global map (per pass when progressive)
+    uint32_t causticPaths = 500000;   // --caustic-photons: paths traced for the caustic map (0: none)
+    uint32_t gatherRays = 4;          // --gather-rays per sample; 0 reads the global map at the visible point
+    uint32_t gatherK = 32;            // --gather-k nearest photons per global-map estimate
+    float radius = 0.0f;              // --radius (world units); 0: 1.5 % of the scene's bounding radius
+    float coneK = 1.1f;               // cone filter constant of the caustic estimate
+    bool progressive = false;         // --progressive: SPPM, a fresh photon pass per sample
+    float alpha = 0.7f;               // SPPM's fraction of new photons kept per pass
+    uint32_t maxDeposits = 8;         // stored photons per global path at most
+};
+
 struct RenderSettings {
+    Integrator integrator = Integrator::Path;
+    PhotonRenderSettings photon;
     uint32_t width = 512;
     uint32_t height = 512;
     uint32_t samplesPerPixel = 64;
@@ -43,6 +63,16 @@ struct RenderStats {
     uint64_t nonFiniteSamples = 0;    // dropped samples that were NaN or infinite
     uint64_t cameraPaths = 0;
     bool partial = false;             // stopped before the requested sample count
+    std::string integrator = "path";
+    // Photon integrator only.
+    uint64_t photonPathsTraced = 0;
+    uint64_t globalPhotons = 0;       // in the global map (last pass when progressive)
+    uint64_t causticPhotons = 0;
+    uint64_t photonsDropped = 0;      // beyond a map's capacity
+    uint64_t photonMapBytes = 0;
+    double photonSeconds = 0.0;       // tracing, compaction and grid builds
+    float gatherRadius = 0.0f;        // caustic radius / initial SPPM radius, world units
+    float globalRadius = 0.0f;        // largest k-nearest search radius in the global map
     std::string stopReason;           // "complete", "time limit", "interrupted"
 };
 
@@ -60,12 +90,16 @@ class Renderer {
 public:
     Renderer(vk::Context& context, const Scene& scene);
 
-    // Renders with the path tracer. `stop` (may be null) ends the render early after the
+    // Renders with the chosen integrator. `stop` (may be null) ends the render early after the
     // current batch; the image then holds the samples accumulated so far.
     RenderResult render(const RenderSettings& settings, const ProgressCallback& progress = {},
                         const std::atomic<bool>* stop = nullptr);
 
 private:
+    RenderResult renderPath(const RenderSettings& settings, const ProgressCallback& progress,
+                            const std::atomic<bool>* stop);
+    void fillSceneStats(RenderStats& stats) const;
+
     vk::Context& m_context;
     const Scene& m_scene;
     double m_uploadSeconds = 0.0;  // set while m_buffers is built: declared before it

@@ -60,5 +60,23 @@ struct PhotonGridView {
 };
 STATIC_ASSERT_SIZE(PhotonGridView, 16)
 
+// Push constants of the compaction kernels (compact_*.comp).
+struct PhotonCompactParams {
+    uint slotCount;       // slots in the chunk
+    uint scannedCount;    // entries of the rank scan before its total (>= slotCount)
+    uint capacity;        // photons the dense map can hold
+    uint requiredFlags;
+    uint rejectedFlags;
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+STATIC_ASSERT_SIZE(PhotonCompactParams, 32)
+
+// Entries of a photon map's state buffer.
+const uint kPhotonMapStateCount = 0u;    // photons in the map
+const uint kPhotonMapStateDropped = 1u;  // selected photons that did not fit (capacity)
+const uint kPhotonMapStateSize = 4u;
+
 SHARED_END
 #endif

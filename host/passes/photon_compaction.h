@@ -1,0 +1,35 @@
+// Photon compaction pass (shaders/compact_*.comp): reads the photon slots of one traced chunk
+// and appends the photons a map keeps to a dense map buffer, in slot order (mark, GPU prefix
+// sum, scatter, advance the map's end), so chunks of paths fill one map of millions of photons
+// while each chunk's slot buffer stays within the device's storage-buffer range.
+#pragma once
+
+#include "passes/prefix_scan.h"
+#include "shared/photon_grid.glsl"
+#include "vk/buffer.h"
+#include "vk/compute_kernel.h"
+
+namespace vkp {
+
+class PhotonCompaction {
+public:
+    // Chunks of up to `maxSlots` slots of `slots`; `state` holds kPhotonMapStateSize uints
+    // (count, dropped), zeroed by the caller before the first chunk. `params.slotCount` is unused.
+    PhotonCompaction(vk::Context& context, const vk::Buffer& slots, uint32_t maxSlots, const vk::Buffer& map,
+                     const vk::Buffer& state, const gpu::PhotonCompactParams& params);
+
+    // Records the append of the first `slotCount` slots; the caller places a barrier before
+    // (after the slot writes) and after.
+    void record(VkCommandBuffer cmd, uint32_t slotCount) const;
+
+private:
+    gpu::PhotonCompactParams m_params;
+    uint32_t m_maxSlots;
+    vk::Buffer m_ranks;
+    PrefixScan m_scan;
+    vk::ComputeKernel m_mark;
+    vk::ComputeKernel m_scatter;
+    vk::ComputeKernel m_advance;
+};
+
+}  // namespace vkp

@@ -1,0 +1,71 @@
+// One photon map on the GPU: photon paths traced in chunks (render/photon_tracer.h), the photons
+// the map keeps appended densely in path order (passes/photon_compaction.h), and the hash grid
+// over them (passes/photon_grid.h). Chunking keeps each chunk's slot buffer within the device's
+// maxStorageBufferRange, so a map can hold millions of photons.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "passes/photon_compaction.h"
+#include "passes/photon_grid.h"
+#include "render/photon_tracer.h"
+
+namespace vkp {
+
+struct PhotonMapSettings {
+    uint32_t paths = 200000;      // photon paths emitted per build
+    uint32_t maxDeposits = 8;     // stored photons per path at most (1 suffices for caustics:
+                                  // a caustic photon is always a path's first deposit)
+    uint32_t seed = 0;
+    uint32_t requiredFlags = 0;   // which photons the map keeps (PhotonGridSettings)
+    uint32_t rejectedFlags = 0;
+    float cellSize = 0.05f;
+    // When set, chooses the grid's cell size from the number of photons stored by each build.
+    std::function<float(uint64_t storedPhotons)> cellSizeFor;
+    uint32_t chunkPaths = 0;      // paths per traced chunk; 0: a chunk of about 2 M slots
+};
+
+struct PhotonMapStats {
+    PhotonCounters traced;        // over all chunks
+    uint64_t stored = 0;          // photons in the map
+    uint64_t dropped = 0;         // kept photons beyond the map's capacity
+    uint32_t chunks = 0;
+    float cellSize = 0.0f;
+    double traceSeconds = 0.0;    // tracing and compaction
+    double gridSeconds = 0.0;
+};
+
+class PhotonMap {
+public:
+    PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers,
+              const PhotonMapSettings& settings);
+
+    // Traces settings.paths paths with Halton indices firstPath... into a fresh map and builds
+    // its grid (progressive passes call it again with fresh index ranges).
+    PhotonMapStats build(uint32_t firstPath);
+
+    const PhotonGrid& grid() const { return *m_grid; }
+    // Watts carried by a photon of relative power 1 (total light power / paths of one build).
+    float photonPower() const { return m_photonPower; }
+    uint32_t capacity() const { return m_capacity; }
+    uint64_t bytes() const;
+    // The map's photons, in path order (after a build).
+    std::vector<gpu::GpuPhoton> downloadPhotons() const;
+
+private:
+    vk::Context& m_context;
+    PhotonMapSettings m_settings;
+    PhotonTracer m_tracer;
+    uint32_t m_chunkPaths;
+    float m_photonPower;
+    uint32_t m_capacity;
+    vk::Buffer m_map;
+    vk::Buffer m_state;
+    std::unique_ptr<PhotonGrid> m_grid;
+    std::unique_ptr<PhotonCompaction> m_compaction;  // bound to the tracer's slots (allocated by the first chunk)
+};
+
+}  // namespace vkp

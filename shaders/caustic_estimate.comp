@@ -1,0 +1,30 @@
+// Caustics at the visible points (Jensen's L_caustic; shared/papers/004): the caustic map's
+// photons within a fixed radius, weighted by the BSDF and the cone filter,
+// L = sum f_r dPhi w / ((1 - 2/(3k)) pi r^2), times the camera path's throughput, added to the film.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "scene_access.glsl"
+#include "visible_point_access.glsl"
+#include "shared/photon_render.glsl"
+#define PHOTON_GRID_BINDING 10
+#include "photon_gather.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(std430, set = 0, binding = 8) buffer Film { vec4 film[]; };
+layout(std430, set = 0, binding = 9) readonly buffer VisiblePoints { GpuVisiblePoint visiblePoints[]; };
+
+layout(push_constant) uniform Push { CausticEstimateParams params; };
+
+void main() {
+    uint pixel = gl_GlobalInvocationID.x;
+    if (pixel >= params.width * params.height) return;
+    GpuVisiblePoint vp = visiblePoints[pixel];
+    if ((vp.flags & kVisiblePointValid) == 0u) return;
+    VisibleSurface s = visibleSurface(vp);
+    FixedRadiusGather g = gatherFixedRadius(params.grid, vp.position, params.radius, params.coneK, kPhotonCaustic, 0u,
+                                            s.bsdf, s.wo, s.t, s.b, s.n);
+    vec3 radiance = g.weightedPower * (params.grid.photonPower / coneFilterArea(params.radius, params.coneK));
+    film[pixel] += vec4(finiteOrZero(vp.throughput * radiance), 0.0f);
+}

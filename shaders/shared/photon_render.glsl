@@ -1,0 +1,63 @@
+// Push constants and per-pixel state of the photon integrator's estimate passes (caustics,
+// final gather, progressive update), which read the visible points (visible_point.glsl).
+#ifndef VKP_PHOTON_RENDER_GLSL
+#define VKP_PHOTON_RENDER_GLSL
+#include "compat.glsl"
+#include "photon_grid.glsl"
+SHARED_BEGIN
+
+// caustic_estimate.comp: L_c = sum f_r dPhi w_cone / ((1 - 2/(3k)) pi r^2) over the caustic map.
+struct CausticEstimateParams {
+    PhotonGridView grid;
+    uint width;
+    uint height;
+    float radius;         // world units
+    float coneK;          // cone filter constant k >= 1 (Jensen 1996)
+};
+STATIC_ASSERT_SIZE(CausticEstimateParams, 32)
+
+// final_gather.comp: one dispatch per gather ray (rayIndex of gatherRays) adds
+// (1 / gatherRays) f cos / pdf * L_global(y) at the visible point; gatherRays = 0 reads the global
+// map at the visible point itself instead (non-primary, non-caustic photons).
+struct FinalGatherParams {
+    PhotonGridView grid;
+    uint width;
+    uint height;
+    uint sampleIndex;     // the visible points' camera sample index
+    uint seed;
+    uint gatherRays;
+    uint rayIndex;
+    uint k;               // nearest photons per estimate (<= kMaxGatherK)
+    float maxRadius;      // world units
+    uint maxSpecularDepth;
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+STATIC_ASSERT_SIZE(FinalGatherParams, 64)
+
+// sppm_update.comp: stochastic progressive photon mapping (Hachisuka & Jensen 2009), one update
+// of every pixel's statistics per photon pass.
+struct SppmParams {
+    PhotonGridView grid;
+    uint width;
+    uint height;
+    float alpha;          // fraction of new photons kept (eq. 6), 0 < alpha < 1
+    uint pad0;
+};
+STATIC_ASSERT_SIZE(SppmParams, 32)
+
+// Per pixel: accumulated flux tau (watts, weighted by the camera path's throughput), the photon
+// count N and the squared radius R^2 (eq. 5-7).
+struct SppmPixel {
+    vec3 flux;
+    float photons;
+    float radius2;
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+STATIC_ASSERT_SIZE(SppmPixel, 32)
+
+SHARED_END
+#endif

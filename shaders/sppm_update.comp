@@ -1,0 +1,40 @@
+// Stochastic progressive photon mapping (Hachisuka & Jensen 2009), one photon pass: at each
+// pixel's visible point of this pass, the M photons of this pass within the pixel's radius R
+// (direct photons excluded: next-event estimation adds direct light) give
+// Phi = sum f_r dPhi; then N' = N + alpha M, R'^2 = R^2 (N + alpha M) / (N + M) and
+// tau' = (tau + throughput Phi) R'^2 / R^2 (eq. 5-7, photon_estimate.glsl). After P passes the
+// pixel's indirect and caustic radiance is tau / (P pi R^2): consistent, the bias vanishes as R
+// shrinks.
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "scene_access.glsl"
+#include "visible_point_access.glsl"
+#include "shared/photon_estimate.glsl"
+#include "shared/photon_render.glsl"
+#define PHOTON_GRID_BINDING 10
+#include "photon_gather.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(std430, set = 0, binding = 8) buffer Pixels { SppmPixel pixels[]; };
+layout(std430, set = 0, binding = 9) readonly buffer VisiblePoints { GpuVisiblePoint visiblePoints[]; };
+
+layout(push_constant) uniform Push { SppmParams params; };
+
+void main() {
+    uint pixel = gl_GlobalInvocationID.x;
+    if (pixel >= params.width * params.height) return;
+    GpuVisiblePoint vp = visiblePoints[pixel];
+    if ((vp.flags & kVisiblePointValid) == 0u) return;
+    SppmPixel state = pixels[pixel];
+    VisibleSurface s = visibleSurface(vp);
+    FixedRadiusGather g = gatherFixedRadius(params.grid, vp.position, sqrt(state.radius2), 0.0f, 0u, kPhotonPrimary,
+                                            s.bsdf, s.wo, s.t, s.b, s.n);
+    vec3 phi = finiteOrZero(vp.throughput * g.weightedPower * params.grid.photonPower);
+    float fluxScale;
+    float radius2 = progressiveRadiusUpdate(state.radius2, state.photons, float(g.count), params.alpha, fluxScale);
+    state.flux = (state.flux + phi) * fluxScale;
+    state.radius2 = radius2;
+    pixels[pixel] = state;
+}

@@ -1,0 +1,32 @@
+// GLSL-only: the surface of a visible point (shared/visible_point.glsl) as the estimate passes
+// need it — BSDF parameters, shading frame and local outgoing direction. Include after
+// scene_access.glsl.
+#ifndef VKP_VISIBLE_POINT_ACCESS_GLSL
+#define VKP_VISIBLE_POINT_ACCESS_GLSL
+
+#include "shared/photon.glsl"
+#include "shared/visible_point.glsl"
+
+struct VisibleSurface {
+    BsdfParams bsdf;
+    vec3 t;
+    vec3 b;
+    vec3 n;      // shading normal on the arrival side
+    vec3 wo;     // local
+};
+
+VisibleSurface visibleSurface(GpuVisiblePoint vp) {
+    VisibleSurface s;
+    s.bsdf = bsdfParamsAt(materials[vp.material], vp.uv);
+    s.n = decodeOctahedral(vp.shadingNormal);
+    orthonormalBasis(s.n, s.t, s.b);
+    s.wo = toLocal(decodeOctahedral(vp.wo), s.t, s.b, s.n);
+    if (s.wo.z <= 0.0f) s.wo.z = 1.0e-4f;
+    return s;
+}
+
+vec3 finiteOrZero(vec3 v) {
+    return any(isnan(v)) || any(isinf(v)) ? vec3(0.0f) : v;
+}
+
+#endif
