@@ -2,7 +2,9 @@
 // this dispatch adds one of `gatherRays` BSDF-sampled rays per visible point. The ray follows
 // delta bounces (mirrors, glass) to the first surface with a diffuse or glossy part and reads
 // the global map there: the k nearest photons of every kind (direct, caustic and indirect light
-// all arrive at that surface). Emission found by the ray is not added: direct light is next-event
+// all arrive at that surface), or, with radiance photons (radiance_photons.comp), the irradiance
+// precomputed at the nearest of them times the surface's diffuse reflectance. Emission found by
+// the ray is not added: direct light is next-event
 // estimation's and light through delta bounces is the caustic map's.
 //
 // With gatherRays = 0 the global map is read at the visible point itself, with primary and
@@ -53,9 +55,16 @@ vec3 gatherRay(GpuVisiblePoint vp, VisibleSurface s, inout Sampler rng) {
         orthonormalBasis(n, t, b);
         vec3 wo = toLocal(-dir, t, b, n);
         if (wo.z <= 0.0f) wo.z = 1.0e-4f;
-        if (storesPhotons(bsdf))
-            return weight * radianceNearest(params.grid, hit.position, params.k, params.maxRadius, 0u, 0u, bsdf, wo,
-                                            t, b, n);
+        if (storesPhotons(bsdf)) {
+            if (params.radianceLookup == 0u)
+                return weight * radianceNearest(params.grid, hit.position, params.k, params.maxRadius, 0u, 0u, bsdf,
+                                                wo, t, b, n);
+            float radius2;
+            if (gatherNearest(params.grid, hit.position, n, 1u, params.lookupRadius, 0u, 0u, radius2) == 0u)
+                return vec3(0.0f);
+            vec3 irradiance = photonRelativePower(gridPhotons[heapIndex[0]]) * params.grid.photonPower;
+            return weight * diffuseReflectance(bsdf, wo) * irradiance;
+        }
         if (depth == params.maxSpecularDepth) break;
         vec3 ud = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
         BsdfSample next = sampleBsdf(bsdf, wo, hit.frontFace, true, ud);

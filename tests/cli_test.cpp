@@ -115,6 +115,34 @@ TEST(Cli, RenderWritesExrPngAndStats) {
         EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
+TEST(Cli, PhotonIntegratorRendersAndReportsItsMaps) {
+    const fs::path dir = tempDir("photon");
+    const fs::path exr = dir / "box.exr";
+    const fs::path stats = dir / "stats.json";
+    const RunResult r = runVkphoton("render " + kBox + " --validate --integrator photon --photons 20000 "
+                                    "--caustic-photons 1000 --gather-rays 1 --spp 2 --width 24 --height 24 -o " +
+                                    exr.string() + " --stats-json " + stats.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("photon maps:"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(exr));
+    std::ifstream in(stats);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["integrator"], "photon");
+    EXPECT_EQ(j["photons"]["pathsTraced"], 21000);
+    EXPECT_GT(j["photons"]["globalStored"].get<int>(), 0);
+    EXPECT_GT(j["settings"]["photon"]["radius"].get<double>(), 0.0);
+}
+
+TEST(Cli, BadPhotonSettingsExitWithTwo) {
+    for (const std::string args : {"--integrator bidirectional", "--integrator photon --gather-k 65",
+                                   "--integrator photon --radius -1", "--integrator photon --photons 0",
+                                   "--integrator photon --alpha 1.5"}) {
+        const RunResult r = runVkphoton("render " + kBox + " --quiet --spp 1 --width 8 --height 8 " + args + " -o " +
+                                        (tempDir("bad-photon") / "x.exr").string());
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+    }
+}
+
 TEST(Cli, TimeLimitMarksThePartialImage) {
     const fs::path dir = tempDir("partial");
     const fs::path exr = dir / "box.exr";

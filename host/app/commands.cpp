@@ -40,6 +40,7 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
         const PhotonRenderSettings& p = s.photon;
         j["settings"]["photon"] = {{"photons", p.globalPaths}, {"causticPhotons", p.causticPaths},
                                    {"gatherRays", p.gatherRays}, {"gatherK", p.gatherK},
+                                   {"radiancePhotons", p.radiancePhotonStride},
                                    {"radius", stats.gatherRadius}, {"globalRadius", stats.globalRadius}, {"progressive", p.progressive},
                                    {"alpha", p.alpha}};
         j["photons"] = {{"pathsTraced", stats.photonPathsTraced}, {"globalStored", stats.globalPhotons},

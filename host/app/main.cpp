@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
     photonGroup->add_option("--caustic-photons", ph.causticPaths, "Photon paths for the caustic map (0: no caustic map)")->capture_default_str()->check(CLI::Range(0u, 1u << 26));
     photonGroup->add_option("--gather-rays", ph.gatherRays, "Final gather rays per sample (0: read the global map at the visible point)")->capture_default_str()->check(CLI::Range(0u, 1024u));
     photonGroup->add_option("--gather-k", ph.gatherK, "Nearest photons per global-map estimate")->capture_default_str()->check(CLI::Range(1u, 64u));
+    photonGroup->add_option("--radiance-photons", ph.radiancePhotonStride, "Every n-th global photon carries a precomputed irradiance estimate that final gathers read (0: a k-nearest estimate at every gather hit)")->capture_default_str()->check(CLI::Range(0u, 1024u));
     photonGroup->add_option("--radius", ph.radius, "Caustic gather radius and initial progressive radius, world units [default: 1.5% of the scene's bounding radius]")->check(CLI::PositiveNumber);
     photonGroup->add_flag("--progressive", ph.progressive, "Stochastic progressive photon mapping: a fresh photon pass per sample, shrinking radii (converges to the path tracer)");
     photonGroup->add_option("--alpha", ph.alpha, "Progressive radius reduction: fraction of new photons kept per pass")->capture_default_str()->check(CLI::Range(0.01f, 0.99f));

@@ -1,10 +1,12 @@
 #include "render/photon_integrator.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include <fmt/format.h>
 
+#include "passes/radiance_photons.h"
 #include "passes/scene_pass.h"
 #include "passes/visible_point_pass.h"
 #include "render/photon_map.h"
@@ -122,13 +124,27 @@ RenderResult PhotonIntegrator::renderTwoPass(const RenderSettings& settings, flo
         stats.photonMapBytes += causticMap->bytes();
     }
 
+    // Final gathers read precomputed radiance photons unless told to estimate at every hit.
+    std::unique_ptr<RadiancePhotons> radiancePhotons;
+    if (p.gatherRays > 0 && p.radiancePhotonStride > 0) {
+        const auto start = std::chrono::steady_clock::now();
+        radiancePhotons = std::make_unique<RadiancePhotons>(m_context, globalMap.grid(),
+                                                            static_cast<uint32_t>(globalStats.stored),
+                                                            globalMap.photonPower(), p.radiancePhotonStride,
+                                                            p.gatherK, globalRadius);
+        m_context.submitAndWait([&](VkCommandBuffer cmd) { radiancePhotons->record(cmd); });
+        stats.photonSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats.photonMapBytes += radiancePhotons->bytes();
+    }
+    const PhotonGrid& gatherGrid = radiancePhotons ? radiancePhotons->grid() : globalMap.grid();
+
     // Pass 2: visible points, caustics and final gathers per camera sample.
     const uint64_t pixels = uint64_t(settings.width) * settings.height;
     vk::Buffer film(m_context, "film", pixels * sizeof(glm::vec4), vk::kStorageUsage);
     vk::Buffer points(m_context, "visible points", pixels * sizeof(gpu::GpuVisiblePoint), vk::kStorageUsage);
     VisiblePointPass visiblePass(m_context, m_buffers, film, points);
     ScenePass gatherPass(m_context, "final_gather.comp", m_buffers,
-                         {&film, &points, &globalMap.grid().cellStart(), &globalMap.grid().photons()},
+                         {&film, &points, &gatherGrid.cellStart(), &gatherGrid.photons()},
                          sizeof(gpu::FinalGatherParams));
     std::unique_ptr<ScenePass> causticPass;
     if (causticMap)
@@ -145,7 +161,10 @@ RenderResult PhotonIntegrator::renderTwoPass(const RenderSettings& settings, flo
     causticParams.radius = radius;
     causticParams.coneK = p.coneK;
     gpu::FinalGatherParams gatherParams{};
-    gatherParams.grid = globalMap.grid().view(globalMap.photonPower());
+    // Radiance photons carry watts per square metre: their power unit is 1.
+    gatherParams.grid = radiancePhotons ? gatherGrid.view(1.0f) : gatherGrid.view(globalMap.photonPower());
+    gatherParams.radianceLookup = radiancePhotons ? 1u : 0u;
+    gatherParams.lookupRadius = globalStats.cellSize;  // one ring of cells: several radiance photons
     gatherParams.width = settings.width;
     gatherParams.height = settings.height;
     gatherParams.seed = settings.seed;

@@ -168,6 +168,15 @@ INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
     return f * (1.0f - p.transmission);
 }
 
+// The diffuse part of the BSDF for light arriving along the normal: what turns precomputed
+// irradiance into reflected radiance (Christensen's radiance photons; the glossy part of the
+// surface is left out).
+INLINE vec3 diffuseReflectance(BsdfParams p, vec3 wo) {
+    if (wo.z <= 0.0f) return vec3(0.0f);
+    return diffuseAlbedo(p) * (kInvPi * diffuseTransmittance(p, wo.z) * diffuseTransmittance(p, 1.0f)) *
+           (1.0f - p.transmission);
+}
+
 // Solid-angle pdf with which sampleBsdf produces wi through its non-delta lobes.
 INLINE float pdfBsdf(BsdfParams p, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;

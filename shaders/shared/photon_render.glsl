@@ -16,6 +16,19 @@ struct CausticEstimateParams {
 };
 STATIC_ASSERT_SIZE(CausticEstimateParams, 32)
 
+// radiance_photons.comp (Christensen 1999, "Faster photon map global illumination"): every
+// stride-th photon of the global map gets the irradiance its k nearest photons estimate,
+// E = sum dPhi / (pi r^2), stored as its power (watts per square metre); final gather rays then
+// read the nearest such photon instead of gathering k photons at every hit.
+struct RadiancePhotonParams {
+    PhotonGridView grid;  // the global map
+    uint photonCount;     // photons in the global map
+    uint stride;
+    uint k;
+    float maxRadius;
+};
+STATIC_ASSERT_SIZE(RadiancePhotonParams, 32)
+
 // final_gather.comp: one dispatch per gather ray (rayIndex of gatherRays) adds
 // (1 / gatherRays) f cos / pdf * L_global(y) at the visible point; gatherRays = 0 reads the global
 // map at the visible point itself instead (non-primary, non-caustic photons).
@@ -30,9 +43,9 @@ struct FinalGatherParams {
     uint k;               // nearest photons per estimate (<= kMaxGatherK)
     float maxRadius;      // world units
     uint maxSpecularDepth;
+    uint radianceLookup;  // 1: the grid holds radiance photons (read the nearest one), 0: photons
+    float lookupRadius;   // radiance photons farther than this are not used
     uint pad0;
-    uint pad1;
-    uint pad2;
 };
 STATIC_ASSERT_SIZE(FinalGatherParams, 64)
 

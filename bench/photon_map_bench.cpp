@@ -1,0 +1,164 @@
+// Photon map benchmark: grid build time per million photons, gather queries per second (fixed
+// radius, k nearest, one nearest), and image error against time for the path tracer and the
+// photon integrator (two-pass and progressive) on one scene. Usage:
+//   build/bench/photon_map_bench [SCENE] [--size N --reference-spp N --reference FILE.exr
+//                                 --max-seconds S --repeat R --device D]
+// Prints Markdown tables for docs/benchmarks.md. The reference (path tracer, --reference-spp) is
+// written to --reference when that file does not exist and read from it when it does.
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "image/exr.h"
+#include "image/metrics.h"
+#include "passes/scene_buffers.h"
+#include "render/photon_map.h"
+#include "render/renderer.h"
+#include "scene/gltf_loader.h"
+#include "vk/buffer.h"
+#include "vk/compute_kernel.h"
+#include "vk/context.h"
+#include "vk/shader_registry.h"
+
+namespace vkp::embedded {
+extern const vk::ShaderEntry* const vkphoton_bench_shaders_table[];
+}
+
+namespace {
+
+using namespace vkp;
+using Clock = std::chrono::steady_clock;
+
+struct GatherPush {
+    gpu::PhotonGridView grid;
+    uint32_t queries, stride, mode, k;
+    float radius;
+    uint32_t pad[3];
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_t repeat) {
+    const SceneArrays arrays = buildSceneArrays(scene);
+    const SceneBuffers buffers(context, arrays);
+    PhotonMapSettings settings;
+    settings.paths = paths;
+    settings.cellSize = 0.03f;
+    PhotonMap map(context, scene, arrays, buffers, settings);
+    std::vector<double> grid, trace;
+    PhotonMapStats stats;
+    for (uint32_t r = 0; r <= repeat; ++r) {
+        stats = map.build(r * paths);
+        if (r > 0) { grid.push_back(stats.gridSeconds); trace.push_back(stats.traceSeconds); }
+    }
+    const double millions = stats.stored / 1e6;
+    fmt::print("\n### Photon map build ({} paths, {} photons stored, {} chunk(s))\n\n", paths, stats.stored,
+               stats.chunks);
+    fmt::print("| measure | value |\n|---|---|\n");
+    fmt::print("| tracing + compaction | {:.3f} s ({:.2f} M paths/s) |\n", median(trace), paths / median(trace) / 1e6);
+    fmt::print("| grid build (count, scan, scatter, sort, copy) | {:.3f} s per million photons |\n",
+               median(grid) / millions);
+
+    // Gathers at every 8th photon of the map: where the scene's surfaces are.
+    const uint32_t stride = 8;
+    const uint32_t queries = static_cast<uint32_t>(stats.stored / stride);
+    vk::Buffer results(context, "results", std::max<VkDeviceSize>(16, queries * sizeof(float)), vk::kStorageUsage);
+    vk::ComputeKernel kernel(context, "gather_throughput.comp", 3, sizeof(GatherPush));
+    kernel.bind({&map.grid().cellStart(), &map.grid().photons(), &results});
+    fmt::print("\n### Gathers ({} queries at photon positions, cell size {} m)\n\n", queries, settings.cellSize);
+    fmt::print("| query | queries/s |\n|---|---|\n");
+    struct Mode { const char* name; uint32_t mode, k; float radius; };
+    for (const Mode& m : {Mode{"fixed radius 0.03 m, cone filter", 0, 0, 0.03f},
+                          Mode{"32 nearest within 0.06 m", 1, 32, 0.06f},
+                          Mode{"nearest within 0.03 m", 2, 1, 0.03f}}) {
+        GatherPush push{map.grid().view(map.photonPower()), queries, stride, m.mode, m.k, m.radius, {}};
+        std::vector<double> times;
+        for (uint32_t r = 0; r <= repeat; ++r) {
+            const auto start = Clock::now();
+            context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, vk::groupCount(queries, 64), push); });
+            if (r > 0) times.push_back(secondsSince(start));
+        }
+        fmt::print("| {} | {:.2f} M |\n", m.name, queries / median(times) / 1e6);
+    }
+}
+
+void benchConvergence(vk::Context& context, const Scene& scene, uint32_t size, uint32_t referenceSpp,
+                      const std::filesystem::path& referencePath, double maxSeconds) {
+    Renderer renderer(context, scene);
+    RenderSettings base;
+    base.width = size;
+    base.height = size;
+    base.seed = 1;
+    ImageRgb reference;
+    if (!referencePath.empty() && std::filesystem::exists(referencePath)) {
+        reference = readExr(referencePath);
+        fmt::print("\nreference: {}\n", referencePath.string());
+    } else {
+        RenderSettings s = base;
+        s.samplesPerPixel = referenceSpp;
+        s.seed = 1000;
+        const auto start = Clock::now();
+        reference = renderer.render(s).image;
+        fmt::print("\nreference: path tracer, {} spp, {:.0f} s\n", referenceSpp, secondsSince(start));
+        if (!referencePath.empty()) writeExr(referencePath, reference);
+    }
+    fmt::print("\n### Error against time, {}x{} (relMSE against the reference)\n\n", size, size);
+    fmt::print("| integrator | spp | seconds | relMSE |\n|---|---|---|---|\n");
+    struct Method { const char* name; Integrator integrator; bool progressive; };
+    for (const Method& m : {Method{"path", Integrator::Path, false}, Method{"photon", Integrator::Photon, false},
+                            Method{"photon --progressive", Integrator::Photon, true}}) {
+        for (uint32_t spp = 1;; spp *= 2) {
+            RenderSettings s = base;
+            s.integrator = m.integrator;
+            s.samplesPerPixel = spp;
+            s.photon.progressive = m.progressive;
+            const RenderResult r = renderer.render(s);
+            fmt::print("| {} | {} | {:.2f} | {:.5f} |\n", m.name, spp, r.stats.renderSeconds,
+                       relativeMse(r.image, reference));
+            std::fflush(stdout);
+            if (r.stats.renderSeconds * 2.0 > maxSeconds) break;
+        }
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"vkphoton photon map benchmark"};
+    std::string scenePath = std::string(VKPHOTON_SOURCE_DIR) + "/scenes/cornell-glass.gltf";
+    uint32_t paths = 1000000, repeat = 3, size = 128, referenceSpp = 2048;
+    double maxSeconds = 60.0;
+    std::string device, referencePath;
+    bool skipConvergence = false;
+    app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
+    app.add_option("--paths", paths, "photon paths for the build and gather measurements")->capture_default_str();
+    app.add_option("--repeat", repeat, "runs after a warm-up (the median is reported)")->capture_default_str();
+    app.add_option("--size", size, "image size of the error-against-time runs")->capture_default_str();
+    app.add_option("--reference-spp", referenceSpp, "path-traced reference samples per pixel")->capture_default_str();
+    app.add_option("--reference", referencePath, "reference EXR: read if it exists, else rendered and written");
+    app.add_option("--max-seconds", maxSeconds, "longest render per integrator in the error curve")->capture_default_str();
+    app.add_flag("--skip-convergence", skipConvergence, "only the build and gather measurements");
+    app.add_option("--device", device);
+    CLI11_PARSE(app, argc, argv);
+    try {
+        vk::registerShaderTable(embedded::vkphoton_bench_shaders_table);
+        const Scene scene = loadGltf(scenePath);
+        vk::Context context({false, device});
+        fmt::print("scene: {} ({} triangles), device: {}\n", scenePath, scene.triangles.size(), context.deviceName());
+        benchGrid(context, scene, paths, repeat);
+        if (!skipConvergence) benchConvergence(context, scene, size, referenceSpp, referencePath, maxSeconds);
+        return 0;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 1;
+    }
+}

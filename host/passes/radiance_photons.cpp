@@ -1,0 +1,31 @@
+#include "passes/radiance_photons.h"
+
+#include <algorithm>
+
+namespace vkp {
+
+RadiancePhotons::RadiancePhotons(vk::Context& context, const PhotonGrid& globalGrid, uint32_t photonCount,
+                                 float photonPower, uint32_t stride, uint32_t k, float maxRadius)
+    : m_count(static_cast<uint32_t>((uint64_t(photonCount) + stride - 1) / std::max(1u, stride))),
+      m_photons(context, "radiance photons", std::max<VkDeviceSize>(16, VkDeviceSize(m_count) * sizeof(gpu::GpuPhoton)),
+                vk::kStorageUsage),
+      m_kernel(context, "radiance_photons.comp", 3, sizeof(gpu::RadiancePhotonParams)) {
+    m_params.grid = globalGrid.view(photonPower);
+    m_params.photonCount = photonCount;
+    m_params.stride = std::max(1u, stride);
+    m_params.k = k;
+    m_params.maxRadius = maxRadius;
+    m_kernel.bind({&globalGrid.cellStart(), &globalGrid.photons(), &m_photons});
+    PhotonGridSettings settings = globalGrid.settings();
+    settings.requiredFlags = 0;
+    settings.rejectedFlags = 0;
+    m_grid = std::make_unique<PhotonGrid>(context, m_photons, std::max(1u, m_count), settings);
+}
+
+void RadiancePhotons::record(VkCommandBuffer cmd) const {
+    m_kernel.record(cmd, vk::groupCount(m_count, 64), m_params);
+    vk::computeBarrier(cmd);
+    m_grid->record(cmd);
+}
+
+}  // namespace vkp
