@@ -12,7 +12,7 @@
 #include "image/exr.h"
 #include "image/metrics.h"
 #include "render/photon_export.h"
-#include "render/photon_tracer.h"
+#include "render/photon_map.h"
 #include "image/png.h"
 #include "scene/gltf_loader.h"
 #include "util/errors.h"
@@ -113,6 +113,9 @@ int runRender(const RenderCommandOptions& options) {
     writePng(pngPath, result.image);
     if (!options.statsJson.empty())
         writeTextAtomically(options.statsJson, statsToJson(options, stats, result.image, loadSeconds, totalSeconds).dump(2) + "\n");
+    if (stats.photonsDropped > 0)
+        fmt::print(stderr, "warning: {} photon(s) did not fit their map: fewer paths or --max-deposits would keep all\n",
+                   stats.photonsDropped);
     if (stats.nonFiniteSamples > 0)
         fmt::print(stderr, "warning: {} sample(s) were NaN or infinite and were dropped\n", stats.nonFiniteSamples);
     if (!options.quiet && s.integrator == Integrator::Photon)
@@ -137,16 +140,18 @@ int runPhotons(const PhotonsCommandOptions& options) {
     vk::Context context({options.validate, options.device});
     const SceneArrays arrays = buildSceneArrays(scene);
     const SceneBuffers buffers(context, arrays);
-    PhotonTracer tracer(context, scene, arrays, buffers);
-    PhotonSettings settings;
+    PhotonMapSettings settings;  // every stored photon, in chunks: maps of millions fit
     settings.paths = options.photons;
     settings.maxDeposits = options.maxDeposits;
     settings.seed = options.seed;
-    const auto start = std::chrono::steady_clock::now();
-    const PhotonCounters c = tracer.trace(settings);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const auto photons = tracer.downloadPhotons();
-    writePhotonPly(output, photons, tracer.nominalPhotonPower());
+    PhotonMap map(context, scene, arrays, buffers, settings);
+    const PhotonMapStats stats = map.build(0);
+    const PhotonCounters& c = stats.traced;
+    const double seconds = stats.traceSeconds;
+    writePhotonPly(output, map.downloadPhotons(), map.photonPower());
+    if (stats.dropped > 0)
+        fmt::print(stderr, "warning: {} photon(s) did not fit the map ({} photons at most on this device)\n",
+                   stats.dropped, map.capacity());
     if (!options.quiet)
         fmt::print(stderr,
                    "traced {} photon paths in {:.2f} s on {}: stored {} caustic, {} global, {} primary; "
