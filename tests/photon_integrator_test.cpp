@@ -108,7 +108,7 @@ TEST_F(PhotonIntegratorTest, AgreesWithThePathTracerOnTheCornellBox) {
     }
 }
 
-TEST_F(PhotonIntegratorTest, ProgressiveConvergesTowardsThePathTracer) {
+TEST_F(PhotonIntegratorTest, ProgressiveConvergesTowardsThePathTracerAndIsReproducible) {
     const Scene scene = loadScene("cornell-box");
     Renderer renderer(test::gpu(), scene);
     const ImageRgb reference = renderer.render(smallRender(Integrator::Path, 32, 1024, 1)).image;
@@ -117,6 +117,9 @@ TEST_F(PhotonIntegratorTest, ProgressiveConvergesTowardsThePathTracer) {
     s.photon.globalPaths = 20000;
     s.photon.radius = 0.1f;
     const ImageRgb few = renderer.render(s).image;
+    const ImageRgb again = renderer.render(s).image;
+    EXPECT_EQ(std::memcmp(few.pixels.data(), again.pixels.data(), few.pixels.size() * sizeof(float)), 0)
+        << "the same seed must give the same bits";
     s.samplesPerPixel = 64;
     const ImageRgb many = renderer.render(s).image;
     const double errFew = relativeMse(blockMeans(few, 4), blockMeans(reference, 4));
