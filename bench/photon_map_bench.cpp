@@ -6,7 +6,6 @@
 // Prints Markdown tables for docs/benchmarks.md. The reference (path tracer, --reference-spp) is
 // written to --reference when that file does not exist and read from it when it does.
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <vector>
 
@@ -14,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "image/exr.h"
+#include "util/stopwatch.h"
 #include "image/metrics.h"
 #include "passes/scene_buffers.h"
 #include "render/photon_map.h"
@@ -31,7 +31,6 @@ extern const vk::ShaderEntry* const vkphoton_bench_shaders_table[];
 namespace {
 
 using namespace vkp;
-using Clock = std::chrono::steady_clock;
 
 struct GatherPush {
     gpu::PhotonGridView grid;
@@ -45,7 +44,6 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_t repeat) {
     const SceneArrays arrays = buildSceneArrays(scene);

@@ -1,7 +1,6 @@
 #include "render/photon_integrator.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -13,6 +12,7 @@
 #include "render/sample_loop.h"
 #include "shared/photon_render.glsl"
 #include "util/errors.h"
+#include "util/stopwatch.h"
 #include "vk/context.h"
 
 namespace vkp {
@@ -127,13 +127,13 @@ RenderResult PhotonIntegrator::renderTwoPass(const RenderSettings& settings, flo
     // Final gathers read precomputed radiance photons unless told to estimate at every hit.
     std::unique_ptr<RadiancePhotons> radiancePhotons;
     if (p.gatherRays > 0 && p.radiancePhotonStride > 0) {
-        const auto start = std::chrono::steady_clock::now();
+        const auto start = Clock::now();
         radiancePhotons = std::make_unique<RadiancePhotons>(m_context, globalMap.grid(),
                                                             static_cast<uint32_t>(globalStats.stored),
                                                             globalMap.photonPower(), p.radiancePhotonStride,
                                                             p.gatherK, globalRadius);
         m_context.submitAndWait([&](VkCommandBuffer cmd) { radiancePhotons->record(cmd); });
-        stats.photonSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats.photonSeconds += secondsSince(start);
         stats.photonMapBytes += radiancePhotons->bytes();
     }
     const PhotonGrid& gatherGrid = radiancePhotons ? radiancePhotons->grid() : globalMap.grid();

@@ -1,22 +1,16 @@
 #include "render/photon_map.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include <fmt/format.h>
 
 #include "util/errors.h"
+#include "util/stopwatch.h"
 #include "vk/compute_kernel.h"
 #include "vk/context.h"
 
 namespace vkp {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 constexpr uint64_t kChunkSlots = 1u << 21;  // 64 MiB of photon slots per traced chunk
 

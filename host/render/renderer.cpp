@@ -1,7 +1,6 @@
 #include "render/renderer.h"
 
 #include <algorithm>
-#include <chrono>
 
 #include <fmt/format.h>
 
@@ -9,16 +8,11 @@
 #include "render/photon_integrator.h"
 #include "render/sample_loop.h"
 #include "util/errors.h"
+#include "util/stopwatch.h"
 #include "vk/context.h"
 
 namespace vkp {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Samples per pixel one path-tracing dispatch adds. lavapipe ends every loop of a shader
 // invocation once all of them together have run 65535 iterations (docs/photon-mapping.md), and a

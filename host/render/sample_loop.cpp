@@ -1,16 +1,11 @@
 #include "render/sample_loop.h"
 
 #include <algorithm>
-#include <chrono>
+
+#include "util/stopwatch.h"
 
 namespace vkp {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Each submission aims at this much device time, so progress, the time limit and Ctrl-C are
 // honoured promptly while few submissions keep the per-dispatch overhead small.
