@@ -13,12 +13,12 @@
 #include <fmt/format.h>
 
 #include "image/exr.h"
-#include "util/stopwatch.h"
 #include "image/metrics.h"
 #include "passes/scene_buffers.h"
 #include "render/photon_map.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
+#include "util/stopwatch.h"
 #include "vk/buffer.h"
 #include "vk/compute_kernel.h"
 #include "vk/context.h"
