@@ -43,6 +43,13 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
                                    {"radiancePhotons", p.radiancePhotonStride},
                                    {"radius", stats.gatherRadius}, {"globalRadius", stats.globalRadius}, {"progressive", p.progressive},
                                    {"alpha", p.alpha}};
+    }
+    if (s.integrator == Integrator::Guided) {
+        const GuideRenderSettings& g = s.guide;
+        j["settings"]["guide"] = {{"photons", g.photons}, {"k", g.k}, {"grid", fmt::format("{}x{}", g.gridU, g.gridV)},
+                                  {"mix", g.mix}, {"cache", g.cache}, {"searchRadius", stats.globalRadius}};
+    }
+    if (s.integrator != Integrator::Path) {
         j["photons"] = {{"pathsTraced", stats.photonPathsTraced}, {"globalStored", stats.globalPhotons},
                         {"causticStored", stats.causticPhotons}, {"dropped", stats.photonsDropped},
                         {"mapBytes", stats.photonMapBytes}, {"seconds", stats.photonSeconds}};

@@ -1,5 +1,6 @@
 // vkphoton command line: `render`, `photons` and `devices`. Exit codes: 0 ok, 1 runtime failure, 2 bad usage
 // or bad input.
+#include <cstdio>
 #include <map>
 #include <string>
 
@@ -33,8 +34,10 @@ int main(int argc, char** argv) {
     renderCmd->add_flag("--quiet", render.quiet, "No progress output");
     bool bsdfOnly = false;
     renderCmd->add_flag("--no-nee", bsdfOnly, "Disable next-event estimation (BSDF sampling only; a reference)");
-    const std::map<std::string, Integrator> integrators{{"path", Integrator::Path}, {"photon", Integrator::Photon}};
-    renderCmd->add_option("--integrator", s.integrator, "path (path tracing, the reference) or photon (photon mapping)")
+    const std::map<std::string, Integrator> integrators{
+        {"path", Integrator::Path}, {"photon", Integrator::Photon}, {"guided", Integrator::Guided}};
+    renderCmd->add_option("--integrator", s.integrator,
+                          "path (path tracing, the reference), photon (photon mapping) or guided (photon-guided path tracing)")
         ->transform(CLI::CheckedTransformer(integrators, CLI::ignore_case))->default_str("path");
     PhotonRenderSettings& ph = s.photon;
     CLI::Option_group* photonGroup = renderCmd->add_option_group("photon integrator");
@@ -46,6 +49,24 @@ int main(int argc, char** argv) {
     photonGroup->add_option("--radius", ph.radius, "Caustic gather radius and initial progressive radius, world units [default: 1.5% of the scene's bounding radius]")->check(CLI::PositiveNumber);
     photonGroup->add_flag("--progressive", ph.progressive, "Stochastic progressive photon mapping: a fresh photon pass per sample, shrinking radii (converges to the path tracer)");
     photonGroup->add_option("--alpha", ph.alpha, "Progressive radius reduction: fraction of new photons kept per pass")->capture_default_str()->check(CLI::Range(0.01f, 0.99f));
+
+    GuideRenderSettings& gd = s.guide;
+    CLI::Option_group* guideGroup = renderCmd->add_option_group("guided path tracer");
+    guideGroup->add_option("--guide-photons", gd.photons, "Photon paths for the guiding map")->capture_default_str()->check(CLI::Range(1u, 1u << 26));
+    guideGroup->add_option("--guide-k", gd.k, "Nearest photons per guiding grid")->capture_default_str()->check(CLI::Range(1u, 64u));
+    std::string guideGrid = "4x16";
+    guideGroup->add_option("--guide-grid", guideGrid, "Guiding grid MxN over the unit square (theta bands x phi sectors, M*N <= 64)")->capture_default_str()
+        ->check([](const std::string& v) -> std::string {
+            unsigned m = 0, n = 0;
+            char x = 0, extra = 0;
+            if (std::sscanf(v.c_str(), "%u%c%u%c", &m, &x, &n, &extra) != 3 || x != 'x' || m == 0 || n == 0 || m * n > 64)
+                return "expected MxN with M*N between 1 and 64, e.g. 4x16";
+            return {};
+        });
+    const std::map<std::string, bool> onOff{{"on", true}, {"off", false}};
+    guideGroup->add_option("--guide-cache", gd.cache, "on: grids built once per cache cell and normal bin; off: a k-nearest gather at every vertex (the paper)")
+        ->transform(CLI::CheckedTransformer(onOff, CLI::ignore_case))->default_str("on");
+    guideGroup->add_option("--guide-mix", gd.mix, "Probability of sampling the guiding grid rather than the BSDF (1: the paper's method)")->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
 
     PhotonsCommandOptions photons;
     CLI::App* photonsCmd = app.add_subcommand("photons", "Trace photons and write the photon maps as a PLY point cloud");
@@ -67,6 +88,7 @@ int main(int argc, char** argv) {
         return code == 0 ? kExitOk : kExitBadInput;
     }
     s.nextEventEstimation = !bsdfOnly;
+    std::sscanf(guideGrid.c_str(), "%ux%u", &gd.gridU, &gd.gridV);
 
     try {
         if (renderCmd->parsed()) return runRender(render);

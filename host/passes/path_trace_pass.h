@@ -1,11 +1,16 @@
-// Path tracing pass (shaders/pathtrace.comp): reads the scene buffers, adds samples to the film
-// (vec4 per pixel: RGB sum and sample count) and counts dropped non-finite samples.
+// Path tracing pass (shaders/pathtrace.comp; guided_pathtrace.comp with a guiding photon grid,
+// guided_cached_pathtrace.comp with a guiding cache at bindings 10 and 11): reads the scene
+// buffers (and the guide), adds samples to the film (vec4 per pixel: RGB sum and sample count)
+// and counts dropped non-finite samples.
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "passes/scene_buffers.h"
 #include "shared/gpu_types.glsl"
+#include "shared/guiding.glsl"
 #include "vk/buffer.h"
 #include "vk/compute_kernel.h"
 
@@ -13,10 +18,13 @@ namespace vkp {
 
 class PathTracePass {
 public:
+    // `shader` and the buffers it reads after the film and counters (a guided variant's guide).
     PathTracePass(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& film,
-                  const vk::Buffer& counters);
+                  const vk::Buffer& counters, const std::string& shader = "pathtrace.comp",
+                  const std::vector<const vk::Buffer*>& guide = {});
 
     void record(VkCommandBuffer cmd, const gpu::PathTraceParams& params) const;
+    void record(VkCommandBuffer cmd, const gpu::PathTraceParams& params, const gpu::GuideParams& guide) const;
 
 private:
     vk::ComputeKernel m_kernel;

@@ -28,7 +28,7 @@ PhotonGrid::PhotonGrid(vk::Context& context, const vk::Buffer& photons, uint32_t
     : m_context(context), m_settings(settings),
       m_params([&] {
           gpu::PhotonGridParams p{};
-          p.tableMask = tableSizeFor(slotCount) - 1;
+          p.tableMask = (settings.tableSize ? std::bit_ceil(settings.tableSize) : tableSizeFor(slotCount)) - 1;
           p.slotCount = slotCount;
           p.requiredFlags = settings.requiredFlags;
           p.rejectedFlags = settings.rejectedFlags;

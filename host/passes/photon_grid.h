@@ -17,6 +17,7 @@ struct PhotonGridSettings {
     float cellSize = 0.05f;       // world units; gathers of radius r visit ceil(2r / cellSize + 1)^3 cells
     uint32_t requiredFlags = 0;   // kPhoton* flags a photon must carry to enter the map
     uint32_t rejectedFlags = 0;   // flags that keep it out
+    uint32_t tableSize = 0;       // buckets (a power of two); 0: from the slot count
 };
 
 class PhotonGrid {

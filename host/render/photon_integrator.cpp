@@ -23,13 +23,6 @@ namespace {
 constexpr float kGlobalRadiusFactor = 2.0f;
 constexpr uint32_t kMaxSpecularDepth = 16;
 
-double surfaceArea(const SceneArrays& arrays) {
-    double area = 0.0;
-    for (const gpu::GpuTriangle& t : arrays.triangles)
-        area += 0.5 * glm::length(glm::cross(glm::vec3(t.v1 - t.v0), glm::vec3(t.v2 - t.v0)));
-    return std::max(area, 1e-12);
-}
-
 void checkSettings(const PhotonRenderSettings& p, float radius) {
     if (p.globalPaths == 0) throw InputError("--photons must be at least 1");
     if (p.gatherK == 0 || p.gatherK > gpu::kMaxGatherK)
@@ -95,11 +88,8 @@ RenderResult PhotonIntegrator::renderTwoPass(const RenderSettings& settings, flo
     globalSettings.paths = p.globalPaths;
     globalSettings.maxDeposits = p.maxDeposits;
     globalSettings.seed = settings.seed;
-    const double area = surfaceArea(m_arrays);
-    globalSettings.cellSizeFor = [&](uint64_t stored) {
-        const double density = std::max<double>(1.0, double(stored)) / area;
-        return static_cast<float>(std::sqrt(p.gatherK / (gpu::kPi * density)));
-    };
+    const double area = sceneSurfaceArea(m_arrays);
+    globalSettings.cellSizeFor = [&](uint64_t stored) { return evenSpreadRadius(p.gatherK, stored, area); };
     PhotonMap globalMap(m_context, m_scene, m_arrays, m_buffers, globalSettings);
     const PhotonMapStats globalStats = globalMap.build(0);
     const float globalRadius = kGlobalRadiusFactor * globalStats.cellSize;

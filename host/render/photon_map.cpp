@@ -1,6 +1,7 @@
 #include "render/photon_map.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -15,6 +16,18 @@ namespace {
 constexpr uint64_t kChunkSlots = 1u << 21;  // 64 MiB of photon slots per traced chunk
 
 }  // namespace
+
+double sceneSurfaceArea(const SceneArrays& arrays) {
+    double area = 0.0;
+    for (const gpu::GpuTriangle& t : arrays.triangles)
+        area += 0.5 * glm::length(glm::cross(glm::vec3(t.v1 - t.v0), glm::vec3(t.v2 - t.v0)));
+    return std::max(area, 1e-12);
+}
+
+float evenSpreadRadius(uint32_t k, uint64_t photons, double area) {
+    const double density = std::max<double>(1.0, double(photons)) / area;
+    return static_cast<float>(std::sqrt(k / (gpu::kPi * density)));
+}
 
 PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers,
                      const PhotonMapSettings& settings)

@@ -38,6 +38,13 @@ struct PhotonMapStats {
     double gridSeconds = 0.0;
 };
 
+// Total area of the scene's triangles (square world units).
+double sceneSurfaceArea(const SceneArrays& arrays);
+
+// The radius of a disk holding k photons if `photons` spread evenly over `area`: the search scale
+// of a map's k-nearest estimates (its grid's cell size).
+float evenSpreadRadius(uint32_t k, uint64_t photons, double area);
+
 class PhotonMap {
 public:
     PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers,

@@ -17,6 +17,17 @@ namespace vk { class Context; }
 enum class Integrator {
     Path,    // path tracing with next-event estimation and MIS (the reference)
     Photon,  // two-pass photon mapping (render/photon_integrator.h)
+    Guided,  // path tracing with photon-guided direction sampling (Jensen 1995)
+};
+
+// Settings of the guided path tracer (--integrator guided).
+struct GuideRenderSettings {
+    uint32_t photons = 100000;        // --guide-photons: paths traced for the guiding map
+    uint32_t k = 50;                  // --guide-k nearest photons per grid
+    uint32_t gridU = 4;               // --guide-grid MxN: m bands of theta ...
+    uint32_t gridV = 16;              // ... by n sectors of phi (m * n <= 64)
+    float mix = 0.5f;                 // --guide-mix: probability of sampling the grid (1: the paper's method)
+    bool cache = true;                // --guide-cache: grids per cache cell and normal bin, built once
 };
 
 // Settings of the photon integrator (--integrator photon).
@@ -37,6 +48,7 @@ struct PhotonRenderSettings {
 struct RenderSettings {
     Integrator integrator = Integrator::Path;
     PhotonRenderSettings photon;
+    GuideRenderSettings guide;
     uint32_t width = 512;
     uint32_t height = 512;
     uint32_t samplesPerPixel = 64;
@@ -74,7 +86,7 @@ struct RenderStats {
     uint64_t photonMapBytes = 0;
     double photonSeconds = 0.0;       // tracing, compaction and grid builds
     float gatherRadius = 0.0f;        // caustic radius / initial SPPM radius, world units
-    float globalRadius = 0.0f;        // largest k-nearest search radius in the global map
+    float globalRadius = 0.0f;        // largest k-nearest search radius in the global (or guiding) map
     std::string stopReason;           // "complete", "time limit", "interrupted"
 };
 

@@ -13,12 +13,16 @@
 #include <glm/gtc/packing.hpp>
 #define INLINE inline
 #define INOUT(T) T&
+#define INOUT_ARRAY(T, name, N) T name[N]
+#define IN_ARRAY(T, name, N) const T name[N]
 #define SHARED_BEGIN namespace vkp::gpu { using namespace glm;
 #define SHARED_END }
 #define STATIC_ASSERT_SIZE(T, N) static_assert(sizeof(T) == (N), #T ": GLSL vs C++ size mismatch");
 #else
 #define INLINE
 #define INOUT(T) inout T
+#define INOUT_ARRAY(T, name, N) inout T name[N]
+#define IN_ARRAY(T, name, N) T name[N]
 #define SHARED_BEGIN
 #define SHARED_END
 #define STATIC_ASSERT_SIZE(T, N)

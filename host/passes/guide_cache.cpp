@@ -1,0 +1,33 @@
+#include "passes/guide_cache.h"
+
+namespace vkp {
+namespace {
+
+PhotonGridSettings cacheGrid(float cellSize, uint32_t tableSize) {
+    PhotonGridSettings s;
+    s.cellSize = cellSize;
+    s.tableSize = tableSize;
+    return s;
+}
+
+}  // namespace
+
+GuideCache::GuideCache(vk::Context& context, const vk::Buffer& photons, uint32_t slotCount, float cellSize,
+                       uint32_t tableSize, const gpu::GuideParams& params)
+    : m_grid(context, photons, slotCount, cacheGrid(cellSize, tableSize)), m_params(params),
+      m_cells(context, "guide cache cells", VkDeviceSize(m_grid.tableSize()) * 4 * sizeof(int32_t), vk::kStorageUsage),
+      m_cdfs(context, "guide cache grids",
+             VkDeviceSize(m_grid.tableSize()) * gpu::kGuideNormalBins * gpu::kMaxGuideCells * sizeof(float),
+             vk::kStorageUsage),
+      m_build(context, "guide_cache_build.comp", 4, sizeof(gpu::GuideParams)) {
+    m_params.grid = m_grid.view(1.0f);
+    m_build.bind({&m_grid.cellStart(), &m_grid.photons(), &m_cells, &m_cdfs});
+}
+
+void GuideCache::record(VkCommandBuffer cmd) const {
+    m_grid.record(cmd);
+    vk::computeBarrier(cmd);
+    m_build.record(cmd, vk::groupCount(uint64_t(m_grid.tableSize()) * gpu::kGuideNormalBins, 64), m_params);
+}
+
+}  // namespace vkp

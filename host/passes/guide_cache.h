@@ -1,0 +1,39 @@
+// The guiding cache pass (shaders/guide_cache_build.comp): a coarse grid over the guiding
+// photons and, per bucket and normal bin, the CDF of the photon-flux grid of the bucket's cell, so
+// the guided path tracer looks a grid up instead of gathering k photons at every vertex.
+#pragma once
+
+#include <memory>
+
+#include "passes/photon_grid.h"
+#include "shared/guiding.glsl"
+#include "vk/buffer.h"
+#include "vk/compute_kernel.h"
+
+namespace vkp {
+
+class GuideCache {
+public:
+    // A cache over the `slotCount` photon slots of `photons` (e.g. a map's grid photons) with
+    // cells of `cellSize` and `tableSize` buckets; `params` gives the grid size (m, n).
+    GuideCache(vk::Context& context, const vk::Buffer& photons, uint32_t slotCount, float cellSize, uint32_t tableSize,
+               const gpu::GuideParams& params);
+
+    // Records the coarse grid and the grids' construction; the caller places barriers around.
+    void record(VkCommandBuffer cmd) const;
+
+    const vk::Buffer& cells() const { return m_cells; }
+    const vk::Buffer& cdfs() const { return m_cdfs; }
+    // The guided path tracer's view of the cache (the coarse grid's cells).
+    const gpu::GuideParams& params() const { return m_params; }
+    uint64_t bytes() const { return m_cells.size() + m_cdfs.size(); }
+
+private:
+    PhotonGrid m_grid;
+    gpu::GuideParams m_params;
+    vk::Buffer m_cells;
+    vk::Buffer m_cdfs;
+    vk::ComputeKernel m_build;
+};
+
+}  // namespace vkp

@@ -1,0 +1,214 @@
+// The path tracer, included by pathtrace.comp (the reference) and guided_pathtrace.comp (with
+// GUIDED defined: photon-guided direction sampling, shared/guiding.glsl). Next-event estimation
+// on all lights combined with BSDF sampling by multiple importance sampling (power heuristic),
+// Russian roulette, Beer-Lambert absorption inside KHR_materials_volume solids. One invocation
+// per pixel adds `sampleCount` samples to the film; a pixel is written by exactly one invocation,
+// so accumulation is deterministic.
+#ifndef VKP_PATH_TRACER_GLSL
+#define VKP_PATH_TRACER_GLSL
+
+#include "scene_access.glsl"
+#include "shared/halton.glsl"
+#include "camera_and_lights.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(std430, set = 0, binding = 8) buffer Film { vec4 film[]; };  // rgb sum, sample count
+layout(std430, set = 0, binding = 9) buffer Counters { uint counters[]; };
+// counters[0]: samples that produced a non-finite value (dropped)
+
+#ifdef GUIDED
+#include "shared/guiding.glsl"
+#ifdef GUIDE_CACHE
+layout(std430, set = 0, binding = 10) readonly buffer CacheCells { ivec4 cacheCells[]; };
+layout(std430, set = 0, binding = 11) readonly buffer CacheCdfs { float cacheCdfs[]; };
+#else
+#define PHOTON_GRID_BINDING 10
+#include "photon_gather.glsl"
+#endif
+layout(push_constant) uniform Push { PathTraceParams params; GuideParams guide; };
+#else
+layout(push_constant) uniform Push { PathTraceParams params; };
+#endif
+
+// The state of one camera path between bounces.
+struct PathState {
+    vec3 origin;
+    vec3 dir;
+    vec3 throughput;
+    vec3 radiance;
+    vec3 mediumSigma;  // absorption of the solid the ray is inside (Beer-Lambert)
+    float lastPdf;     // solid-angle pdf of the last BSDF sample (for MIS at emitters)
+    bool lastDelta;    // camera rays and delta lobes: emission is added unweighted
+    uint depth;
+    Sampler rng;
+};
+
+PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
+    PathState st;
+    st.rng = makeSampler(sampleIndex, streamSeed);
+    vec2 jitter = nextSample2(st.rng);
+    st.origin = params.camera.position;
+    st.dir = cameraRayDirection(params.camera, params.width, params.height, vec2(float(px) + jitter.x, float(py) + jitter.y));
+    st.throughput = vec3(1.0f);
+    st.radiance = vec3(0.0f);
+    st.mediumSigma = vec3(0.0f);
+    st.lastPdf = 0.0f;
+    st.lastDelta = true;
+    st.depth = 0u;
+    return st;
+}
+
+#ifdef GUIDED
+// Photon-guided sampling at surfaces without delta lobes (Jensen 1995): the k nearest photons of
+// the guiding map (direct photons left out: next-event estimation covers direct light) weighted
+// by f_r fill the grid; one-sample MIS picks the grid with probability guide.mix, else the BSDF,
+// and weights by the mixture density, so neither a mis-estimated grid nor a narrow lobe can make
+// the variance blow up. mix = 1 is the paper's method.
+BsdfSample sampleGuided(vec3 position, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n, bool entering, vec3 u,
+                        float uSelect) {
+    if (guide.mix <= 0.0f || specularIsDelta(bsdf) || bsdf.transmission > 0.0f || !storesPhotons(bsdf))
+        return sampleBsdf(bsdf, wo, entering, true, u);
+    uint gm = guide.gridSize & 0xffu;
+    uint gn = guide.gridSize >> 8u;
+    float cells[kMaxGuideCells];
+    // The grid's frame: the shading frame, or the cache bin's axis frame.
+    vec3 gt = t;
+    vec3 gb = b;
+    vec3 gnrm = n;
+#ifdef GUIDE_CACHE
+    ivec3 cell = gridCell(position, guide.grid.invCellSize);
+    uint bucket = gridHash(cell, guide.grid.tableMask);
+    ivec4 cached = cacheCells[bucket];
+    if (cached.w == 0 || ivec3(cached.x, cached.y, cached.z) != cell) return sampleBsdf(bsdf, wo, entering, true, u);
+    uint bin = guideNormalBin(n);
+    gnrm = guideBinNormal(bin);
+    orthonormalBasis(gnrm, gt, gb);
+    uint base = (bucket * kGuideNormalBins + bin) * kMaxGuideCells;
+    for (uint i = 0u; i < kMaxGuideCells; ++i) cells[i] = cacheCdfs[base + i];
+#else
+    for (uint i = 0u; i < kMaxGuideCells; ++i) cells[i] = 0.0f;
+    float radius2;
+    uint found = gatherNearest(guide.grid, position, n, guide.k, guide.maxRadius, 0u, kPhotonPrimary, radius2);
+    for (uint j = 0u; j < found; ++j) {
+        GpuPhoton p = gridPhotons[heapIndex[j]];
+        vec3 wi = toLocal(decodeOctahedral(p.direction), t, b, n);
+        guideAdd(cells, gm, gn, wi, luminance(evalBsdf(bsdf, wo, wi) * photonRelativePower(p)));
+    }
+    guideFinalize(cells, gm, gn);
+#endif
+    BsdfSample s;
+    if (uSelect < guide.mix) {
+        s.wi = toLocal(toWorld(guideSample(cells, gm, gn, u), gt, gb, gnrm), t, b, n);
+        s.lobe = kLobeDiffuse;
+    } else {
+        s = sampleBsdf(bsdf, wo, entering, true, u);
+        if (s.lobe == kLobeNone) return s;
+    }
+    vec3 wiGrid = toLocal(toWorld(s.wi, t, b, n), gt, gb, gnrm);
+    s.pdf = guide.mix * guidePdf(cells, gm, gn, wiGrid) + (1.0f - guide.mix) * pdfBsdf(bsdf, wo, s.wi);
+    if (s.wi.z <= 0.0f || s.pdf <= 0.0f) {
+        s.lobe = kLobeNone;
+        return s;
+    }
+    s.weight = evalBsdf(bsdf, wo, s.wi) * (s.wi.z / s.pdf);
+    return s;
+}
+#endif
+
+// Extends the path by one vertex: emission (MIS-weighted), next-event estimation, BSDF sampling
+// and Russian roulette. Returns false when the path has ended.
+bool extendPath(inout PathState st) {
+    bool useNee = (params.flags & kPathFlagNoDirectLightSampling) == 0u;
+    float tHit;
+    uint tri;
+    float b1;
+    float b2;
+    if (!traceClosest(st.origin, st.dir, kInfinity, tHit, tri, b1, b2)) return false;
+    st.throughput *= exp(-st.mediumSigma * tHit);
+    SurfaceHit hit = surfaceAt(tri, b1, b2, st.dir);
+    GpuMaterial material = materials[hit.material];
+
+    if (emitsTowards(material, hit.frontFace)) {
+        vec3 le = emittedRadiance(material, hit.uv);
+        if (le.r + le.g + le.b > 0.0f) {
+            float weight = 1.0f;
+            if (useNee && !st.lastDelta) weight = emissionMisWeight(hit, st.dir, tHit, st.lastPdf);
+            st.radiance += st.throughput * le * weight;
+        }
+    }
+    if (st.depth == params.maxDepth) return false;
+
+    BsdfParams bsdf = bsdfParamsAt(material, hit.uv);
+    // Shading frame on the side the ray came from.
+    vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
+    vec3 t;
+    vec3 b;
+    orthonormalBasis(n, t, b);
+    vec3 wo = toLocal(-st.dir, t, b, n);
+    if (wo.z <= 0.0f) wo.z = 1.0e-4f;  // shading normal facing away: treat as grazing
+
+    if (useNee) {
+        st.radiance += st.throughput * directLight(hit, bsdf, wo, t, b, n, params.lightCount, true, st.rng);
+    } else {
+        nextSample(st.rng);  // keep the sample dimensions of both modes aligned
+        nextSample(st.rng);
+        nextSample(st.rng);
+    }
+
+    vec3 u = vec3(nextSample(st.rng), nextSample(st.rng), nextSample(st.rng));
+#ifdef GUIDED
+    BsdfSample bs = sampleGuided(hit.position, bsdf, wo, t, b, n, hit.frontFace, u, nextSample(st.rng));
+#else
+    BsdfSample bs = sampleBsdf(bsdf, wo, hit.frontFace, true, u);
+#endif
+    float uRoulette = nextSample(st.rng);
+    if (bs.lobe == kLobeNone) return false;
+    st.throughput *= bs.weight;
+    st.lastDelta = (bs.lobe & kLobeDelta) != 0u;
+    st.lastPdf = bs.pdf;
+    st.dir = normalize(toWorld(bs.wi, t, b, n));
+    st.origin = offsetRayOrigin(hit.position, hit.geometricNormal, st.dir);
+
+    // Entering or leaving a solid with KHR_materials_volume absorption.
+    if ((bs.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)
+        st.mediumSigma = hit.frontFace ? material.attenuationCoeff : vec3(0.0f);
+
+    // Russian roulette after a few bounces, survival by the throughput's largest component.
+    if (st.depth >= 3u) {
+        float survive = min(max(st.throughput.r, max(st.throughput.g, st.throughput.b)), 0.95f);
+        if (uRoulette >= survive) return false;
+        st.throughput /= survive;
+    }
+    st.depth += 1u;
+    return true;
+}
+
+// Path regeneration (Novak, Havran, Dachsbacher, "Path Regeneration for Interactive Path
+// Tracing", 2010): the loop advances one bounce per iteration and a lane whose path ended starts
+// its next sample at once, so lanes running in lock-step (8 per SIMD group on lavapipe) are not
+// held idle by the longest path of each sample. Per-sample arithmetic is unchanged.
+void main() {
+    uint pixel = gl_GlobalInvocationID.x;
+    if (pixel >= params.width * params.height) return;
+    uint px = pixel % params.width;
+    uint py = pixel / params.width;
+    uint streamSeed = hashCombine(params.seed, pixel);
+    vec4 acc = film[pixel];
+    uint done = 0u;
+    PathState st = startPath(params.firstSample, streamSeed, px, py);
+    while (done < params.sampleCount) {
+        if (extendPath(st)) continue;
+        vec3 l = st.radiance;
+        if (any(isnan(l)) || any(isinf(l))) {
+            atomicAdd(counters[0], 1u);
+            l = vec3(0.0f);
+        }
+        acc += vec4(l, 1.0f);
+        done += 1u;
+        if (done < params.sampleCount) st = startPath(params.firstSample + done, streamSeed, px, py);
+    }
+    film[pixel] = acc;
+}
+
+#endif

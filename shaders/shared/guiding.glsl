@@ -1,0 +1,102 @@
+// Photon-guided direction sampling (Jensen 1995, shared/papers/001): the flux of nearby photons,
+// weighted by the BRDF, fills an m x n grid over the unit square that the cosine-weighted
+// hemisphere mapping (sampling.glsl: theta = acos(sqrt(1 - u)), phi = 2 pi v) takes to
+// directions. A cell is chosen by the grid's discrete CDF, a point uniformly inside it, and the
+// direction's density is P(cell) * cells * cos(theta) / pi. Empty cells get a share of the total
+// so that no direction has zero probability (the estimator stays unbiased).
+//
+// Shared by the guided path tracer (pathtrace.comp with GUIDED) and the host tests, which check
+// that the pdf integrates to one and matches the sampling (chi-square).
+#ifndef VKP_GUIDING_GLSL
+#define VKP_GUIDING_GLSL
+#include "compat.glsl"
+#include "constants.glsl"
+#include "photon_grid.glsl"
+#include "sampling.glsl"
+SHARED_BEGIN
+
+const uint kMaxGuideCells = 64u;
+// Every cell gets this fraction of the mean cell energy on top of its own.
+const float kGuideEmptyCellShare = 0.1f;
+
+// The cell of a point of the unit square: m bands of u (theta), n sectors of v (phi).
+INLINE uint guideCell(vec2 uv, uint m, uint n) {
+    uint iu = min(uint(uv.x * float(m)), m - 1u);
+    uint iv = min(uint(uv.y * float(n)), n - 1u);
+    return iu * n + iv;
+}
+
+// Adds `energy` at the local direction wi (z > 0) to the grid.
+INLINE void guideAdd(INOUT_ARRAY(float, cells, kMaxGuideCells), uint m, uint n, vec3 wi, float energy) {
+    if (wi.z <= 0.0f || !(energy > 0.0f)) return;
+    uint c = guideCell(invertCosineHemisphere(wi), m, n);
+    cells[c] = cells[c] + energy;
+}
+
+// Turns accumulated energies into a CDF in place (cells[i] = P(cell <= i), the last exactly 1):
+// each cell gets kGuideEmptyCellShare of the mean on top; an empty grid becomes uniform.
+INLINE void guideFinalize(INOUT_ARRAY(float, cells, kMaxGuideCells), uint m, uint n) {
+    uint count = m * n;
+    float total = 0.0f;
+    for (uint i = 0u; i < count; ++i) total += cells[i];
+    float floorShare = total > 0.0f ? kGuideEmptyCellShare * total / float(count) : 1.0f;
+    float running = 0.0f;
+    for (uint i = 0u; i < count; ++i) {
+        running += cells[i] + floorShare;
+        cells[i] = running;
+    }
+    for (uint i = 0u; i < count; ++i) cells[i] = cells[i] / running;
+    cells[count - 1u] = 1.0f;
+}
+
+INLINE float guideCellProbability(IN_ARRAY(float, cdf, kMaxGuideCells), uint c) {
+    return c == 0u ? cdf[0] : cdf[c] - cdf[c - 1u];
+}
+
+// Solid-angle density of local direction wi under the guiding grid.
+INLINE float guidePdf(IN_ARRAY(float, cdf, kMaxGuideCells), uint m, uint n, vec3 wi) {
+    if (wi.z <= 0.0f) return 0.0f;
+    uint c = guideCell(invertCosineHemisphere(wi), m, n);
+    return guideCellProbability(cdf, c) * float(m * n) * wi.z * kInvPi;
+}
+
+// Samples a local direction: u.x picks the cell, u.yz the point inside it.
+INLINE vec3 guideSample(IN_ARRAY(float, cdf, kMaxGuideCells), uint m, uint n, vec3 u) {
+    uint count = m * n;
+    uint c = 0u;
+    while (c + 1u < count && u.x >= cdf[c]) c += 1u;
+    uint iu = c / n;
+    uint iv = c - iu * n;
+    vec2 uv = vec2((float(iu) + u.y) / float(m), (float(iv) + u.z) / float(n));
+    return sampleCosineHemisphere(vec2(min(uv.x, kOneMinusEpsilon), min(uv.y, kOneMinusEpsilon)));
+}
+
+// The guiding cache keeps one grid per cache cell and normal bin: the six bins are the axis
+// directions, a surface normal belongs to the axis it is closest to.
+const uint kGuideNormalBins = 6u;
+
+INLINE uint guideNormalBin(vec3 n) {
+    vec3 a = abs(n);
+    if (a.x >= a.y && a.x >= a.z) return n.x >= 0.0f ? 0u : 1u;
+    if (a.y >= a.z) return n.y >= 0.0f ? 2u : 3u;
+    return n.z >= 0.0f ? 4u : 5u;
+}
+
+INLINE vec3 guideBinNormal(uint bin) {
+    float s = (bin & 1u) == 0u ? 1.0f : -1.0f;
+    uint axis = bin / 2u;
+    return vec3(axis == 0u ? s : 0.0f, axis == 1u ? s : 0.0f, axis == 2u ? s : 0.0f);
+}
+
+// Push constants the guided path tracer adds after PathTraceParams.
+struct GuideParams {
+    PhotonGridView grid;  // the guiding photon map (with the cache: the cache's cells)
+    float mix;            // probability of sampling the grid (else the BSDF); 1: the paper's method
+    uint k;               // nearest photons per grid (<= kMaxGatherK)
+    float maxRadius;      // world units
+    uint gridSize;        // m | (n << 8), m * n <= kMaxGuideCells
+};
+STATIC_ASSERT_SIZE(GuideParams, 32)
+
+SHARED_END
+#endif
