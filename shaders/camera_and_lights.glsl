@@ -1,14 +1,8 @@
 // GLSL-only helpers shared by the camera-path integrators (pathtrace.comp, visible_points.comp):
-// camera rays and next-event estimation. Include after scene_access.glsl and shared/halton.glsl.
+// next-event estimation and the MIS weight of emission found by BSDF sampling. Include after
+// scene_access.glsl and shared/halton.glsl.
 #ifndef VKP_CAMERA_AND_LIGHTS_GLSL
 #define VKP_CAMERA_AND_LIGHTS_GLSL
-
-// Pinhole camera ray through a (sub)pixel position (0..width, 0..height, y down).
-vec3 cameraRayDirection(GpuCamera cam, uint width, uint height, vec2 pixel) {
-    vec2 ndc = vec2(2.0f * pixel.x / float(width) - 1.0f, 1.0f - 2.0f * pixel.y / float(height));
-    return normalize(cam.forward + ndc.x * cam.aspect * cam.tanHalfFovY * cam.right +
-                     ndc.y * cam.tanHalfFovY * cam.up);
-}
 
 // Next-event estimation at a non-delta surface point: one light chosen by power, one sample on
 // it, a shadow ray. With `mis` the contribution of area lights is weighted by the power heuristic

@@ -143,6 +143,45 @@ TEST(Cli, BadPhotonSettingsExitWithTwo) {
     }
 }
 
+TEST(Cli, GuidedIntegratorAndItsGridAtAPixel) {
+    const fs::path dir = tempDir("guided");
+    const std::string ceiling = std::string(VKPHOTON_SCENES) + "/cornell-ceiling.gltf";
+    const fs::path stats = dir / "stats.json";
+    RunResult r = runVkphoton("render " + ceiling + " --validate --integrator guided --guide-photons 20000 "
+                              "--guide-grid 2x8 --guide-mix 0.7 --spp 2 --width 16 --height 16 -o " +
+                              (dir / "g.exr").string() + " --stats-json " + stats.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream in(stats);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["integrator"], "guided");
+    EXPECT_EQ(j["settings"]["guide"]["grid"], "2x8");
+    EXPECT_GT(j["photons"]["globalStored"].get<int>(), 0);
+
+    // A floor pixel: the light faces the ceiling, so indirect light comes from above.
+    const fs::path png = dir / "grid.png";
+    r = runVkphoton("guide-grid " + ceiling + " --validate --pixel 20 60 --width 64 --height 64 --guide-photons 50000 -o " +
+                    png.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fs::exists(png));
+    auto bandProbability = [&](int band) {
+        const std::string key = "band " + std::to_string(band) + " (probability ";
+        const size_t at = r.output.find(key);
+        return at == std::string::npos ? -1.0 : std::stod(r.output.substr(at + key.size()));
+    };
+    EXPECT_GT(bandProbability(0), 2.0 * bandProbability(3)) << r.output;  // the ceiling is straight above
+    EXPECT_GE(bandProbability(3), 0.0) << r.output;
+
+    for (const std::string& args : {"render " + ceiling + " --integrator guided --guide-grid 9x9",
+                                   "render " + ceiling + " --integrator guided --guide-mix 2",
+                                   "render " + ceiling + " --integrator guided --guide-k 0",
+                                   "render " + ceiling + " --integrator guided --guide-cache maybe",
+                                   "guide-grid " + ceiling + " --pixel 600 1",
+                                   "guide-grid " + ceiling + " --pixel 1"}) {
+        r = runVkphoton(args + " --quiet -o " + (dir / "bad.png").string());
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+    }
+}
+
 TEST(Cli, TimeLimitMarksThePartialImage) {
     const fs::path dir = tempDir("partial");
     const fs::path exr = dir / "box.exr";

@@ -12,6 +12,7 @@
 #include "image/exr.h"
 #include "image/metrics.h"
 #include "render/photon_export.h"
+#include "render/guide_debug.h"
 #include "render/photon_map.h"
 #include "image/png.h"
 #include "scene/gltf_loader.h"
@@ -165,6 +166,43 @@ int runPhotons(const PhotonsCommandOptions& options) {
                    "absorbed {}, lost {}, truncated {}; wrote {}\n",
                    c.emitted, seconds, context.deviceName(), c.storedCaustic, c.storedGlobal, c.storedPrimary,
                    c.absorbed, c.lost, c.truncated, output.string());
+    if (context.validationEnabled()) context.throwOnValidationMessages();
+    return kExitOk;
+}
+
+int runGuideGrid(const GuideGridCommandOptions& options) {
+    const std::filesystem::path output = options.output.empty()
+        ? std::filesystem::path("out") / fmt::format("{}-guide-{}-{}.png", options.scene.stem().string(), options.x, options.y)
+        : options.output;
+    if (output.extension() != ".png")
+        throw InputError(fmt::format("-o {}: the guiding grid is written as .png", output.string()));
+    const Scene scene = loadGltf(options.scene);
+    const Camera camera = chooseCamera(scene, options.cameraIndex);
+    vk::Context context({options.validate, options.device});
+    const SceneArrays arrays = buildSceneArrays(scene);
+    const SceneBuffers buffers(context, arrays);
+    GuideRenderSettings settings = options.guide;
+    settings.cache = false;  // the per-vertex grid: the one the paper builds
+    const PathGuide guide(context, scene, arrays, buffers, settings, options.seed);
+    const GuideGridAtPixel grid =
+        guideGridAtPixel(scene, arrays, guide, settings, camera, options.width, options.height, options.x, options.y);
+    writePng(output, guideGridImage(grid));
+    if (!options.quiet) {
+        fmt::print("pixel ({}, {}) sees ({:.3f}, {:.3f}, {:.3f}), normal ({:.2f}, {:.2f}, {:.2f}); {} photons\n", options.x,
+                   options.y, grid.position.x, grid.position.y, grid.position.z, grid.normal.x, grid.normal.y,
+                   grid.normal.z, grid.photons);
+        fmt::print("density relative to cosine sampling, rows: theta bands from the normal, columns: phi sectors\n");
+        for (uint32_t i = 0; i < grid.m; ++i) {
+            float band = 0.0f;
+            std::string row;
+            for (uint32_t j = 0; j < grid.n; ++j) {
+                row += fmt::format(" {:5.2f}", grid.density[i * grid.n + j]);
+                band += grid.density[i * grid.n + j] / float(grid.m * grid.n);
+            }
+            fmt::print("band {} (probability {:.3f}):{}\n", i, band, row);
+        }
+        fmt::print("wrote {}\n", output.string());
+    }
     if (context.validationEnabled()) context.throwOnValidationMessages();
     return kExitOk;
 }

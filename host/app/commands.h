@@ -29,7 +29,21 @@ struct PhotonsCommandOptions {
     bool quiet = false;
 };
 
+struct GuideGridCommandOptions {
+    std::filesystem::path scene;
+    std::filesystem::path output;       // .png; empty: out/<scene name>-guide-X-Y.png
+    uint32_t x = 0, y = 0;              // the pixel
+    uint32_t width = 512, height = 512;
+    int cameraIndex = -1;
+    uint32_t seed = 0;
+    GuideRenderSettings guide;
+    std::string device;
+    bool validate = false;
+    bool quiet = false;
+};
+
 int runRender(const RenderCommandOptions& options);
+int runGuideGrid(const GuideGridCommandOptions& options);
 int runPhotons(const PhotonsCommandOptions& options);
 int runDevices();
 

@@ -79,6 +79,27 @@ int main(int argc, char** argv) {
     photonsCmd->add_flag("--validate", photons.validate, "Enable the Khronos validation layer; any message is an error");
     photonsCmd->add_flag("--quiet", photons.quiet, "No summary output");
 
+    GuideGridCommandOptions guideGridOptions;
+    CLI::App* guideCmd = app.add_subcommand("guide-grid", "Write the guided path tracer's direction grid at one pixel as a PNG");
+    guideCmd->add_option("scene", guideGridOptions.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+    guideCmd->add_option("--pixel", [&](const CLI::results_t& r) {
+        guideGridOptions.x = static_cast<uint32_t>(std::stoul(r.at(0)));
+        guideGridOptions.y = static_cast<uint32_t>(std::stoul(r.at(1)));
+        return true;
+    }, "Pixel X Y (from the top left)")->expected(2)->required()->check(CLI::NonNegativeNumber);
+    guideCmd->add_option("-o,--output", guideGridOptions.output, "Output .png [default: out/SCENE-guide-X-Y.png]");
+    guideCmd->add_option("--width", guideGridOptions.width, "Image width the pixel belongs to")->capture_default_str()->check(CLI::Range(1u, 16384u));
+    guideCmd->add_option("--height", guideGridOptions.height, "Image height the pixel belongs to")->capture_default_str()->check(CLI::Range(1u, 16384u));
+    guideCmd->add_option("--camera", guideGridOptions.cameraIndex, "Scene camera index")->check(CLI::NonNegativeNumber);
+    guideCmd->add_option("--seed", guideGridOptions.seed, "Random seed")->capture_default_str();
+    guideCmd->add_option("--guide-photons", guideGridOptions.guide.photons, "Photon paths for the guiding map")->capture_default_str()->check(CLI::Range(1u, 1u << 26));
+    guideCmd->add_option("--guide-k", guideGridOptions.guide.k, "Nearest photons in the grid")->capture_default_str()->check(CLI::Range(1u, 64u));
+    std::string debugGrid = "4x16";
+    guideCmd->add_option("--guide-grid", debugGrid, "Grid MxN (M*N <= 64)")->capture_default_str();
+    guideCmd->add_option("--device", guideGridOptions.device, "Vulkan device: index or name substring");
+    guideCmd->add_flag("--validate", guideGridOptions.validate, "Enable the Khronos validation layer");
+    guideCmd->add_flag("--quiet", guideGridOptions.quiet, "No output but the file");
+
     app.add_subcommand("devices", "List the Vulkan devices");
 
     try {
@@ -88,11 +109,17 @@ int main(int argc, char** argv) {
         return code == 0 ? kExitOk : kExitBadInput;
     }
     s.nextEventEstimation = !bsdfOnly;
-    std::sscanf(guideGrid.c_str(), "%ux%u", &gd.gridU, &gd.gridV);
+    if (renderCmd->parsed()) std::sscanf(guideGrid.c_str(), "%ux%u", &gd.gridU, &gd.gridV);
+    if (guideCmd->parsed() && std::sscanf(debugGrid.c_str(), "%ux%u", &guideGridOptions.guide.gridU,
+                                          &guideGridOptions.guide.gridV) != 2) {
+        fmt::print(stderr, "error: --guide-grid {}: expected MxN, e.g. 4x16\n", debugGrid);
+        return kExitBadInput;
+    }
 
     try {
         if (renderCmd->parsed()) return runRender(render);
         if (photonsCmd->parsed()) return runPhotons(photons);
+        if (guideCmd->parsed()) return runGuideGrid(guideGridOptions);
         return runDevices();
     } catch (const InputError& e) {
         fmt::print(stderr, "error: {}\n", e.what());

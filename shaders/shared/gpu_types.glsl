@@ -96,6 +96,13 @@ struct GpuCamera {
 };
 STATIC_ASSERT_SIZE(GpuCamera, 64)
 
+// Pinhole camera ray through a (sub)pixel position (0..width, 0..height, y down).
+INLINE vec3 cameraRayDirection(GpuCamera cam, uint width, uint height, vec2 pixel) {
+    vec2 ndc = vec2(2.0f * pixel.x / float(width) - 1.0f, 1.0f - 2.0f * pixel.y / float(height));
+    return normalize(cam.forward + ndc.x * cam.aspect * cam.tanHalfFovY * cam.right +
+                     ndc.y * cam.tanHalfFovY * cam.up);
+}
+
 const uint kPathFlagNoDirectLightSampling = 1u;  // BSDF sampling only (test/reference mode)
 
 // Push constants of pathtrace.comp.

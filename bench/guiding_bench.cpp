@@ -1,0 +1,94 @@
+// Guided path tracing against cosine sampling and BSDF+NEE path tracing (Jensen 1995's experiment):
+// relMSE against a high-sample path-traced reference at 1...max spp, with seconds, for
+//   cosine   BSDF (cosine) sampling only, no next-event estimation
+//   path     the path tracer: next-event estimation + BSDF sampling, MIS
+//   paper    guided, the paper's method: a k-nearest gather per vertex, grid only (mix 1)
+//   guided   vkphoton's default: guiding cache, one-sample MIS with the BSDF (mix 0.5)
+// Usage: build/bench/guiding_bench [SCENE] [--size N --reference-spp N --reference FILE.exr
+//                                   --max-spp N --max-seconds S --device D]
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "image/exr.h"
+#include "image/metrics.h"
+#include "render/renderer.h"
+#include "scene/gltf_loader.h"
+#include "util/stopwatch.h"
+#include "vk/context.h"
+
+int main(int argc, char** argv) {
+    using namespace vkp;
+    CLI::App app{"vkphoton guided path tracing benchmark"};
+    std::string scenePath = std::string(VKPHOTON_SOURCE_DIR) + "/scenes/cornell-ceiling.gltf";
+    uint32_t size = 64, referenceSpp = 16384, maxSpp = 512;
+    double maxSeconds = 60.0;
+    std::string device, referencePath;
+    app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
+    app.add_option("--size", size, "image size")->capture_default_str();
+    app.add_option("--reference-spp", referenceSpp, "path-traced reference samples per pixel")->capture_default_str();
+    app.add_option("--reference", referencePath, "reference EXR: read if it exists, else rendered and written");
+    app.add_option("--max-spp", maxSpp, "largest sample count per method")->capture_default_str();
+    app.add_option("--max-seconds", maxSeconds, "stop a method's curve once a render takes longer")->capture_default_str();
+    app.add_option("--device", device);
+    CLI11_PARSE(app, argc, argv);
+    try {
+        const Scene scene = loadGltf(scenePath);
+        vk::Context context({false, device});
+        Renderer renderer(context, scene);
+        RenderSettings base;
+        base.width = size;
+        base.height = size;
+        fmt::print("scene: {}, {}x{}, device: {}\n", scenePath, size, size, context.deviceName());
+        ImageRgb reference;
+        if (!referencePath.empty() && std::filesystem::exists(referencePath)) {
+            reference = readExr(referencePath);
+            fmt::print("reference: {}\n", referencePath);
+        } else {
+            RenderSettings s = base;
+            s.samplesPerPixel = referenceSpp;
+            s.seed = 1000;
+            const auto start = Clock::now();
+            reference = renderer.render(s).image;
+            fmt::print("reference: path tracer, {} spp, {:.0f} s\n", referenceSpp, secondsSince(start));
+            if (!referencePath.empty()) writeExr(referencePath, reference);
+        }
+        struct Method {
+            const char* name;
+            RenderSettings settings;
+        };
+        std::vector<Method> methods;
+        RenderSettings cosine = base;
+        cosine.nextEventEstimation = false;
+        methods.push_back({"cosine", cosine});
+        methods.push_back({"path", base});
+        RenderSettings paper = base;
+        paper.integrator = Integrator::Guided;
+        paper.guide.cache = false;
+        paper.guide.mix = 1.0f;
+        methods.push_back({"paper", paper});
+        RenderSettings guided = base;
+        guided.integrator = Integrator::Guided;
+        methods.push_back({"guided", guided});
+        fmt::print("\n| method | spp | seconds | relMSE |\n|---|---|---|---|\n");
+        for (const Method& m : methods) {
+            for (uint32_t spp = 1; spp <= maxSpp; spp *= 2) {
+                RenderSettings s = m.settings;
+                s.samplesPerPixel = spp;
+                s.seed = 1;
+                const RenderResult r = renderer.render(s);
+                fmt::print("| {} | {} | {:.2f} | {:.5f} |\n", m.name, spp, r.stats.renderSeconds,
+                           relativeMse(r.image, reference));
+                std::fflush(stdout);
+                if (r.stats.renderSeconds > maxSeconds) break;
+            }
+        }
+        return 0;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 1;
+    }
+}
