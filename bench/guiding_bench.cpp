@@ -26,13 +26,18 @@ int main(int argc, char** argv) {
     std::string scenePath = std::string(VKPHOTON_SOURCE_DIR) + "/scenes/cornell-ceiling.gltf";
     uint32_t size = 64, referenceSpp = 16384, maxSpp = 512;
     double maxSeconds = 60.0;
-    std::string device, referencePath;
+    std::string device, referencePath, only;
+    std::vector<float> mixes{0.5f};
+    uint32_t guidePhotons = GuideRenderSettings{}.photons;
     app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
     app.add_option("--size", size, "image size")->capture_default_str();
     app.add_option("--reference-spp", referenceSpp, "path-traced reference samples per pixel")->capture_default_str();
     app.add_option("--reference", referencePath, "reference EXR: read if it exists, else rendered and written");
     app.add_option("--max-spp", maxSpp, "largest sample count per method")->capture_default_str();
     app.add_option("--max-seconds", maxSeconds, "stop a method's curve once a render takes longer")->capture_default_str();
+    app.add_option("--mixes", mixes, "guide-mix values of the default (cached) guided rows")->delimiter(',');
+    app.add_option("--guide-photons", guidePhotons, "guiding map paths")->capture_default_str();
+    app.add_option("--only", only, "run only this method (cosine, path, paper, guided)");
     app.add_option("--device", device);
     CLI11_PARSE(app, argc, argv);
     try {
@@ -42,6 +47,7 @@ int main(int argc, char** argv) {
         RenderSettings base;
         base.width = size;
         base.height = size;
+        base.guide.photons = guidePhotons;
         fmt::print("scene: {}, {}x{}, device: {}\n", scenePath, size, size, context.deviceName());
         ImageRgb reference;
         if (!referencePath.empty() && std::filesystem::exists(referencePath)) {
@@ -70,11 +76,17 @@ int main(int argc, char** argv) {
         paper.guide.cache = false;
         paper.guide.mix = 1.0f;
         methods.push_back({"paper", paper});
-        RenderSettings guided = base;
-        guided.integrator = Integrator::Guided;
-        methods.push_back({"guided", guided});
+        std::vector<std::string> guidedNames;
+        for (float mix : mixes) guidedNames.push_back(fmt::format("guided mix {}", mix));
+        for (size_t i = 0; i < mixes.size(); ++i) {
+            RenderSettings guided = base;
+            guided.integrator = Integrator::Guided;
+            guided.guide.mix = mixes[i];
+            methods.push_back({guidedNames[i].c_str(), guided});
+        }
         fmt::print("\n| method | spp | seconds | relMSE |\n|---|---|---|---|\n");
         for (const Method& m : methods) {
+            if (!only.empty() && std::string(m.name).rfind(only, 0) != 0) continue;
             for (uint32_t spp = 1; spp <= maxSpp; spp *= 2) {
                 RenderSettings s = m.settings;
                 s.samplesPerPixel = spp;
