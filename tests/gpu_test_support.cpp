@@ -1,6 +1,9 @@
 #include "gpu_test_support.h"
 
+#include "vk/buffer.h"
 #include "vk/shader_registry.h"
+
+#include <algorithm>
 
 namespace vkp::embedded {
 extern const vk::ShaderEntry* const vkphoton_test_shaders_table[];
@@ -19,6 +22,16 @@ vk::Context& gpu() {
         return std::make_unique<vk::Context>(options);
     }();
     return *context;
+}
+
+void poisonDeviceMemory(uint64_t bytes) {
+    vk::Context& context = gpu();
+    for (uint64_t left = bytes; left > 0;) {
+        const uint64_t chunk = std::min<uint64_t>(left, 64u << 20);
+        vk::Buffer buffer(context, "poison", chunk, vk::kStorageUsage);
+        context.submitAndWait([&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, buffer.handle(), 0, VK_WHOLE_SIZE, 0x3c013c01u); });
+        left -= chunk;
+    }
 }
 
 void expectNoValidationMessages() {

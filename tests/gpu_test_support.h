@@ -13,6 +13,10 @@ namespace vkp::test {
 // The shared context (created on first use, validation always on).
 vk::Context& gpu();
 
+// Fills and frees `bytes` of device memory with a pattern that reads as valid photons, so that a
+// pass reading memory it never wrote gives different results in the next run.
+void poisonDeviceMemory(uint64_t bytes);
+
 // Fails the current test if the validation layer reported anything since the last call.
 void expectNoValidationMessages();
 

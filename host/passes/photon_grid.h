@@ -32,7 +32,8 @@ public:
     void record(VkCommandBuffer cmd) const;
 
     const vk::Buffer& cellStart() const { return m_cellStart; }  // tableSize + 1 entries
-    const vk::Buffer& photons() const { return m_gridPhotons; }   // bucket order
+    // Bucket order; only the first downloadPhotonCount() entries are written by a build.
+    const vk::Buffer& photons() const { return m_gridPhotons; }
     uint32_t tableSize() const { return m_params.tableMask + 1; }
     const PhotonGridSettings& settings() const { return m_settings; }
     // What a gather shader needs to find its photons, with the watts of a relative power of 1.
