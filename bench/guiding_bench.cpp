@@ -3,6 +3,7 @@
 //   cosine   BSDF (cosine) sampling only, no next-event estimation
 //   path     the path tracer: next-event estimation + BSDF sampling, MIS
 //   paper    guided, the paper's method: a k-nearest gather per vertex, grid only (mix 1)
+//   per-vertex  a k-nearest gather per vertex, mixed with the BSDF like the default (no cache)
 //   guided   vkphoton's default: guiding cache, one-sample MIS with the BSDF (mix 0.5)
 // Usage: build/bench/guiding_bench [SCENE] [--size N --reference-spp N --reference FILE.exr
 //                                   --max-spp N --max-seconds S --device D]
@@ -76,6 +77,9 @@ int main(int argc, char** argv) {
         paper.guide.cache = false;
         paper.guide.mix = 1.0f;
         methods.push_back({"paper", paper});
+        RenderSettings perVertex = paper;  // the cache's alternative at the same mix
+        perVertex.guide.mix = mixes.front();
+        methods.push_back({"per-vertex", perVertex});
         std::vector<std::string> guidedNames;
         for (float mix : mixes) guidedNames.push_back(fmt::format("guided mix {}", mix));
         for (size_t i = 0; i < mixes.size(); ++i) {
