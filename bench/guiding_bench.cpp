@@ -14,8 +14,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "image/exr.h"
 #include "image/metrics.h"
+#include "reference_image.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/stopwatch.h"
@@ -50,19 +50,7 @@ int main(int argc, char** argv) {
         base.height = size;
         base.guide.photons = guidePhotons;
         fmt::print("scene: {}, {}x{}, device: {}\n", scenePath, size, size, context.deviceName());
-        ImageRgb reference;
-        if (!referencePath.empty() && std::filesystem::exists(referencePath)) {
-            reference = readExr(referencePath);
-            fmt::print("reference: {}\n", referencePath);
-        } else {
-            RenderSettings s = base;
-            s.samplesPerPixel = referenceSpp;
-            s.seed = 1000;
-            const auto start = Clock::now();
-            reference = renderer.render(s).image;
-            fmt::print("reference: path tracer, {} spp, {:.0f} s\n", referenceSpp, secondsSince(start));
-            if (!referencePath.empty()) writeExr(referencePath, reference);
-        }
+        const ImageRgb reference = bench::referenceImage(renderer, base, referenceSpp, referencePath);
         struct Method {
             const char* name;
             RenderSettings settings;

@@ -12,9 +12,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "image/exr.h"
 #include "image/metrics.h"
 #include "passes/scene_buffers.h"
+#include "reference_image.h"
 #include "render/photon_map.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
@@ -96,19 +96,8 @@ void benchConvergence(vk::Context& context, const Scene& scene, uint32_t size, u
     base.width = size;
     base.height = size;
     base.seed = 1;
-    ImageRgb reference;
-    if (!referencePath.empty() && std::filesystem::exists(referencePath)) {
-        reference = readExr(referencePath);
-        fmt::print("\nreference: {}\n", referencePath.string());
-    } else {
-        RenderSettings s = base;
-        s.samplesPerPixel = referenceSpp;
-        s.seed = 1000;
-        const auto start = Clock::now();
-        reference = renderer.render(s).image;
-        fmt::print("\nreference: path tracer, {} spp, {:.0f} s\n", referenceSpp, secondsSince(start));
-        if (!referencePath.empty()) writeExr(referencePath, reference);
-    }
+    fmt::print("\n");
+    const ImageRgb reference = bench::referenceImage(renderer, base, referenceSpp, referencePath);
     fmt::print("\n### Error against time, {}x{} (relMSE against the reference)\n\n", size, size);
     fmt::print("| integrator | spp | seconds | relMSE |\n|---|---|---|---|\n");
     struct Method { const char* name; Integrator integrator; bool progressive; };
