@@ -256,8 +256,19 @@ void Context::createDevice() {
     // LocalSizeId for workgroup sizes.
     VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     features13.maintenance4 = VK_TRUE;
+    // The raster pass (host/passes/shadow_volume_pass.h): dynamic rendering instead of render
+    // pass objects, synchronization2 barriers; both core in 1.3 and required of every device.
+    features13.dynamicRendering = VK_TRUE;
+    features13.synchronization2 = VK_TRUE;
+    VkPhysicalDeviceFeatures supported{};
+    vkGetPhysicalDeviceFeatures(m_physicalDevice, &supported);
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = &features13;
+    // Shadow volumes extruded to infinity land exactly on the far plane; depth clamp keeps them
+    // from being clipped there (optional: the pass falls back to a slightly-less-than-infinite
+    // projection).
+    m_depthClamp = supported.depthClamp == VK_TRUE;
+    features.features.depthClamp = supported.depthClamp;
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.pNext = &features;
     info.queueCreateInfoCount = 1;

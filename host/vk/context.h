@@ -44,6 +44,7 @@ public:
     const VkPhysicalDeviceProperties& properties() const { return m_properties; }
     const std::string& deviceName() const { return m_deviceName; }
     bool validationEnabled() const { return m_validate; }
+    bool depthClampEnabled() const { return m_depthClamp; }
 
     // Validation messages (warnings and errors) seen so far; tests assert this stays empty.
     std::vector<std::string> validationMessages() const;
@@ -70,6 +71,7 @@ private:
     void createDevice();
 
     bool m_validate = false;
+    bool m_depthClamp = false;
     VkInstance m_instance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT m_messenger = VK_NULL_HANDLE;
     VkPhysicalDevice m_physicalDevice = VK_NULL_HANDLE;
