@@ -1,5 +1,6 @@
 // Path tracing pass (shaders/pathtrace.comp): reads the scene buffers, adds samples to the film
-// (vec4 per pixel: RGB sum and sample count) and counts dropped non-finite samples.
+// (vec4 per pixel: RGB sum and sample count) and counts dropped non-finite samples. With the
+// kPathFlagRaster* flags it also reads the raster direct light (vec4 per pixel, raster_direct_pass.h).
 #pragma once
 
 #include <cstdint>
@@ -14,7 +15,7 @@ namespace vkp {
 class PathTracePass {
 public:
     PathTracePass(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& film,
-                  const vk::Buffer& counters);
+                  const vk::Buffer& counters, const vk::Buffer& rasterDirect);
 
     void record(VkCommandBuffer cmd, const gpu::PathTraceParams& params) const;
 
