@@ -116,3 +116,34 @@ TEST_F(RasterDirect, FullRenderMeansAgree) {
 
 }  // namespace
 }  // namespace vkp
+
+namespace vkp {
+namespace {
+
+// The raster/compute hand-off (volume build -> vertex input, stencil -> mask -> copy -> lighting
+// -> path tracer) under the validation layer's synchronization validation, on a context of its
+// own: any hazard message fails the test.
+TEST(RasterDirectSync, NoHazardsUnderSynchronizationValidation) {
+    vk::ContextOptions options;
+    options.validate = true;
+    options.synchronizationValidation = true;
+    vk::Context context(options);
+    Scene scene = loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-box.gltf");
+    for (int i = 0; i < 5; ++i)  // two mask passes of point lights besides the area samples
+        test::addPointLight(scene, scene.bounds.min + glm::vec3(0.2f + 0.15f * i, 0.6f, 0.5f) * scene.bounds.extent(),
+                            glm::vec3(0.5f));
+    Renderer renderer(context, scene);
+    RenderSettings s;
+    s.width = 24;
+    s.height = 24;
+    s.samplesPerPixel = 2;
+    s.direct = DirectLight::Raster;
+    s.areaLightSamples = 3;
+    const RenderResult r = renderer.render(s);
+    EXPECT_GT(meanLuminance(r.image), 0.0);
+    const auto messages = context.validationMessages();
+    EXPECT_EQ(context.validationMessageCount(), 0u) << (messages.empty() ? "" : messages.front());
+}
+
+}  // namespace
+}  // namespace vkp

@@ -98,6 +98,8 @@ VkInstance createBareInstance(bool validate, const void* next) {
                 "(Debian: apt-get install vulkan-validationlayers)");
         layers.push_back(kValidationLayer);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        // Provided by the layer; lets a context turn on synchronization validation.
+        extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
     }
     VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     info.pNext = next;
@@ -139,7 +141,7 @@ std::vector<DeviceInfo> listDevices() {
 Context::Context(const ContextOptions& options)
     : m_validate(options.validate || validationRequestedByEnvironment()) {
     try {
-        createInstance();
+        createInstance(options.synchronizationValidation);
         pickPhysicalDevice(options.device);
         createDevice();
     } catch (...) {
@@ -185,7 +187,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::onDebugMessage(
     return VK_FALSE;
 }
 
-void Context::createInstance() {
+void Context::createInstance(bool synchronizationValidation) {
     VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
         VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
@@ -195,8 +197,15 @@ void Context::createInstance() {
                                 VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
     messengerInfo.pfnUserCallback = &Context::onDebugMessage;
     messengerInfo.pUserData = this;
+    // Synchronization validation (hazards between passes, e.g. the raster/compute hand-off).
+    const VkValidationFeatureEnableEXT syncFeature = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+    VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+    features.enabledValidationFeatureCount = 1;
+    features.pEnabledValidationFeatures = &syncFeature;
+    features.pNext = &messengerInfo;
     // Chaining the messenger info also reports problems during instance creation itself.
-    m_instance = createBareInstance(m_validate, m_validate ? &messengerInfo : nullptr);
+    const void* chain = synchronizationValidation ? static_cast<const void*>(&features) : &messengerInfo;
+    m_instance = createBareInstance(m_validate, m_validate ? chain : nullptr);
     if (!m_validate) return;
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(m_instance, "vkCreateDebugUtilsMessengerEXT"));

@@ -16,6 +16,7 @@ namespace vkp::vk {
 struct ContextOptions {
     bool validate = false;      // enable VK_LAYER_KHRONOS_validation; every message is an error
     std::string device;         // "" = automatic; a decimal index or a substring of the name
+    bool synchronizationValidation = false;  // with validate: also the layer's hazard tracking
 };
 
 struct DeviceInfo {
@@ -66,7 +67,7 @@ private:
         const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
 
     void destroy();
-    void createInstance();
+    void createInstance(bool synchronizationValidation);
     void pickPhysicalDevice(const std::string& request);
     void createDevice();
 
