@@ -61,6 +61,33 @@ TEST_F(RasterDirect, PointLightsMatchTracedUpToSamplingNoise) {
     EXPECT_EQ(again.pixels, raster.pixels);
 }
 
+TEST_F(RasterDirect, SpotAndDirectionalLightsMatchTracedUpToSamplingNoise) {
+    Scene scene = pointLitScene();
+    scene.lights.resize(1);
+    PunctualLight sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f));
+    sun.intensity = glm::vec3(0.5f, 0.4f, 0.3f);
+    scene.lights.push_back(sun);
+    PunctualLight spot;
+    spot.type = LightType::Spot;
+    spot.position = {-1.0f, 3.0f, 1.0f};
+    spot.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.4f));
+    spot.innerConeAngle = 0.3f;
+    spot.outerConeAngle = 0.6f;
+    spot.intensity = glm::vec3(8.0f);
+    scene.lights.push_back(spot);
+    Renderer renderer(test::gpu(), scene);
+    const ImageRgb raster = renderer.render(directOnly(DirectLight::Raster, 1, 1)).image;
+    const ImageRgb traced1 = renderer.render(directOnly(DirectLight::Traced, 64, 1)).image;
+    const ImageRgb traced2 = renderer.render(directOnly(DirectLight::Traced, 64, 2)).image;
+    const double rasterError = relativeMse(raster, traced1);
+    const double noise = relativeMse(traced2, traced1);
+    fmt::print("spot + directional: relMSE(raster, traced) = {:.3g}, relMSE(traced, traced') = {:.3g}\n", rasterError, noise);
+    EXPECT_GT(meanLuminance(raster), 0.01);
+    EXPECT_LT(rasterError, 0.65 * noise);
+}
+
 TEST_F(RasterDirect, AreaLightSamplesConvergeToTraced) {
     const Scene scene = loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-box.gltf");
     Renderer renderer(test::gpu(), scene);
