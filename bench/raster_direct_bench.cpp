@@ -7,6 +7,7 @@
 // Prints a Markdown table for docs/benchmarks.md.
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -80,22 +81,31 @@ int main(int argc, char** argv) {
 
         fmt::print("scene: {} ({} triangles), {}x{}, device: {}, depth clamp: {}, median of {}\n", scenePath,
                    arrays.triangles.size(), width, height, context.deviceName(), context.depthClampEnabled(), repeat);
-        fmt::print("| point lights | raster ms/frame | traced ms/frame | traced / raster | max abs difference |\n");
-        fmt::print("|---:|---:|---:|---:|---:|\n");
+        fmt::print("| point lights | raster, compute volumes ms/frame | raster, geometry shader ms/frame | traced ms/frame | traced / raster (compute) | max abs difference raster-traced (compute / GS) |\n");
+        fmt::print("|---:|---:|---:|---:|---:|---:|\n");
         for (uint32_t count : lightCounts) {
             const auto lights = pointLights(scene.bounds, count);
             RasterDirectPass raster(context, arrays, buffers, lights, width, height);
+            std::unique_ptr<RasterDirectPass> rasterGs;
+            if (context.geometryShaderEnabled())
+                rasterGs = std::make_unique<RasterDirectPass>(context, arrays, buffers, lights, width, height,
+                                                              VolumeGeometry::GeometryShader);
             vk::Buffer traced(context, "traced direct", pixels * sizeof(glm::vec4), vk::kStorageUsage);
             vk::ComputeKernel kernel(context, "traced_direct.comp", 10, sizeof(gpu::RasterDirectParams));
             kernel.bind(buffers.bindings());
             kernel.bind(8, raster.shadows().lights());
             kernel.bind(9, traced);
 
-            std::vector<double> rasterTimes, tracedTimes;
+            std::vector<double> rasterTimes, gsTimes, tracedTimes;
             for (uint32_t r = 0; r < repeat + 1; ++r) {  // the first run warms up
                 auto start = Clock::now();
                 context.submitAndWait([&](VkCommandBuffer cmd) { raster.record(cmd, camera, near); });
                 if (r > 0) rasterTimes.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+                if (rasterGs) {
+                    start = Clock::now();
+                    context.submitAndWait([&](VkCommandBuffer cmd) { rasterGs->record(cmd, camera, near); });
+                    if (r > 0) gsTimes.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+                }
                 start = Clock::now();
                 context.submitAndWait([&](VkCommandBuffer cmd) {
                     traced.fillZero(cmd);
@@ -116,11 +126,16 @@ int main(int argc, char** argv) {
             // Same answer check: the two methods differ only on pixels at shadow edges.
             const auto a = raster.direct().download<glm::vec4>();
             const auto b = traced.download<glm::vec4>();
-            double maxDiff = 0.0;
-            for (uint64_t i = 0; i < pixels; ++i)
+            const auto g = rasterGs ? rasterGs->direct().download<glm::vec4>() : a;
+            double maxDiff = 0.0, maxDiffGs = 0.0;
+            for (uint64_t i = 0; i < pixels; ++i) {
                 maxDiff = std::max<double>(maxDiff, glm::length(glm::vec3(a[i]) - glm::vec3(b[i])));
+                maxDiffGs = std::max<double>(maxDiffGs, glm::length(glm::vec3(g[i]) - glm::vec3(b[i])));
+            }
             const double rasterMs = 1e3 * median(rasterTimes), tracedMs = 1e3 * median(tracedTimes);
-            fmt::print("| {} | {:.1f} | {:.1f} | {:.2f} | {:.3g} |\n", count, rasterMs, tracedMs, tracedMs / rasterMs, maxDiff);
+            const double gsMs = gsTimes.empty() ? 0.0 : 1e3 * median(gsTimes);
+            fmt::print("| {} | {:.1f} | {:.1f} | {:.1f} | {:.2f} | {:.3g} / {:.3g} |\n", count, rasterMs, gsMs, tracedMs,
+                       tracedMs / rasterMs, maxDiff, maxDiffGs);
         }
         return 0;
     } catch (const std::exception& e) {

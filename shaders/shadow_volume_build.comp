@@ -37,8 +37,11 @@ bool faces(uint t, vec4 l) {
 }
 
 // A vertex pushed away from the light to infinity.
+// precise: every use of a vertex's extrusion (back cap, both adjacent sides) must be bit-identical,
+// or shared edges crack and the top-left rule no longer counts each pixel once.
 vec4 extrude(vec3 p, vec4 l) {
-    return vec4(p * l.w - l.xyz, 0.0f);
+    precise vec3 d = p * l.w - l.xyz;
+    return vec4(d, 0.0f);
 }
 
 uint g_out;

@@ -29,13 +29,14 @@ struct MaskAgreement {
     double fraction() const { return relevant ? double(agree) / double(relevant) : 0.0; }
 };
 
-MaskAgreement compareMaskWithRays(const Scene& scene, const Camera& camera, uint32_t width, uint32_t height) {
+MaskAgreement compareMaskWithRays(const Scene& scene, const Camera& camera, uint32_t width, uint32_t height,
+                                  VolumeGeometry geometry = VolumeGeometry::Compute) {
     vk::Context& context = test::gpu();
     const SceneArrays arrays = buildSceneArrays(scene);
     const SceneBuffers buffers(context, arrays);
     const auto lights = buildRasterLights(arrays, 0);
     EXPECT_LE(lights.size(), 32u);
-    ShadowVolumePass pass(context, arrays.triangles, lights, width, height);
+    ShadowVolumePass pass(context, arrays.triangles, lights, width, height, geometry);
     const gpu::GpuCamera gpuCamera = makeGpuCamera(camera, width, height);
     const float near = 1.0e-3f * std::max(1.0f, glm::length(scene.bounds.extent()));
     context.submitAndWait([&](VkCommandBuffer cmd) { pass.record(cmd, gpuCamera, near); });

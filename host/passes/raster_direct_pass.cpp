@@ -8,8 +8,9 @@
 namespace vkp {
 
 RasterDirectPass::RasterDirectPass(vk::Context& context, const SceneArrays& arrays, const SceneBuffers& scene,
-                                   const std::vector<gpu::GpuLight>& rasterLights, uint32_t width, uint32_t height)
-    : m_width(width), m_height(height), m_shadows(context, arrays.triangles, rasterLights, width, height),
+                                   const std::vector<gpu::GpuLight>& rasterLights, uint32_t width, uint32_t height,
+                                   VolumeGeometry geometry)
+    : m_width(width), m_height(height), m_shadows(context, arrays.triangles, rasterLights, width, height, geometry),
       m_direct(context, "raster direct", uint64_t(width) * height * sizeof(glm::vec4), vk::kStorageUsage),
       m_lighting(context, "raster_direct.comp", scene, {&m_shadows.lights(), &m_shadows.masks(), &m_direct},
                  sizeof(gpu::RasterDirectParams)) {}

@@ -18,7 +18,8 @@ namespace vkp {
 class RasterDirectPass {
 public:
     RasterDirectPass(vk::Context& context, const SceneArrays& arrays, const SceneBuffers& scene,
-                     const std::vector<gpu::GpuLight>& rasterLights, uint32_t width, uint32_t height);
+                     const std::vector<gpu::GpuLight>& rasterLights, uint32_t width, uint32_t height,
+                     VolumeGeometry geometry = VolumeGeometry::Compute);
 
     // Clears the direct buffer, records the mask passes and the lighting passes; ends with the
     // direct buffer visible to compute shaders.

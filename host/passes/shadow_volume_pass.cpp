@@ -12,13 +12,44 @@ constexpr VkFormat kMaskFormat = VK_FORMAT_R8G8B8A8_UNORM;
 
 std::vector<glm::vec4> prepassPositions(const std::vector<gpu::GpuShadowTriangle>& tris) {
     std::vector<glm::vec4> out;
-    out.reserve(tris.size() * 3);
+    out.reserve(tris.size() * 3 + 1);
     for (const auto& t : tris) {
         out.push_back(t.v0);
         out.push_back(t.v1);
         out.push_back(t.v2);
     }
+    out.push_back(glm::vec4(0.0f));  // the "no neighbour" marker of open triangles
     return out;
+}
+
+// Triangle-list-with-adjacency indices into prepassPositions(): per triangle v0, far vertex of the
+// neighbour across v0v1, v1, across v1v2, v2, across v2v0.
+std::vector<uint32_t> adjacencyIndices(const std::vector<gpu::GpuShadowTriangle>& tris) {
+    const uint32_t marker = static_cast<uint32_t>(tris.size() * 3);
+    std::vector<uint32_t> out;
+    out.reserve(tris.size() * 6);
+    for (uint32_t t = 0; t < tris.size(); ++t) {
+        const auto& s = tris[t];
+        const glm::vec3 v[3] = {glm::vec3(s.v0), glm::vec3(s.v1), glm::vec3(s.v2)};
+        const uint32_t nb[3] = {s.neighbor0, s.neighbor1, s.neighbor2};
+        for (uint32_t e = 0; e < 3; ++e) {
+            out.push_back(3 * t + e);
+            uint32_t far = marker;
+            if (s.closed && nb[e] != gpu::kShadowNoNeighbor) {
+                const auto& n = tris[nb[e]];
+                const glm::vec3 w[3] = {glm::vec3(n.v0), glm::vec3(n.v1), glm::vec3(n.v2)};
+                for (uint32_t k = 0; k < 3; ++k)
+                    if (w[k] != v[e] && w[k] != v[(e + 1) % 3]) far = 3 * nb[e] + k;
+            }
+            out.push_back(far);
+        }
+    }
+    return out;
+}
+
+glm::vec4 lightPoint(const gpu::GpuLight& light) {
+    if (light.type == gpu::kLightDirectional) return glm::vec4(-light.direction, 0.0f);
+    return glm::vec4(light.position, 1.0f);
 }
 
 VkStencilOpState stencilOp(VkStencilOp fail, VkStencilOp pass, VkStencilOp depthFail, VkCompareOp compare) {
@@ -53,11 +84,12 @@ glm::mat4 rasterViewProjection(const gpu::GpuCamera& c, float near) {
 
 ShadowVolumePass::ShadowVolumePass(vk::Context& context, const std::vector<gpu::GpuTriangle>& triangles,
                                    const std::vector<gpu::GpuLight>& rasterLights, uint32_t width,
-                                   uint32_t height)
+                                   uint32_t height, VolumeGeometry geometry)
     : m_context(context), m_width(width), m_height(height),
       m_triangleCount(static_cast<uint32_t>(triangles.size())),
       m_lightCount(static_cast<uint32_t>(rasterLights.size())),
       m_passCount((m_lightCount + gpu::kLightsPerMaskPass - 1) / gpu::kLightsPerMaskPass),
+      m_geometry(geometry),
       m_shadowTriangles(buildShadowTriangles(triangles)),
       m_depthFormat(vk::pickDepthStencilFormat(context)),
       m_depth(context, "raster depth-stencil", width, height, m_depthFormat,
@@ -65,8 +97,10 @@ ShadowVolumePass::ShadowVolumePass(vk::Context& context, const std::vector<gpu::
               VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT),
       m_mask(context, "shadow mask", width, height, kMaskFormat,
              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT),
-      m_positions(context, "raster positions", std::max<VkDeviceSize>(16, triangles.size() * 3 * sizeof(glm::vec4)),
+      m_positions(context, "raster positions", (triangles.size() * 3 + 1) * sizeof(glm::vec4),
                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT),
+      m_adjacency(context, "adjacency indices", std::max<VkDeviceSize>(16, triangles.size() * 6 * sizeof(uint32_t)),
+                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT),
       m_triangles(vk::makeStorageBuffer(context, "shadow triangles", m_shadowTriangles.triangles)),
       m_lights(vk::makeStorageBuffer(context, "raster lights", rasterLights)),
       m_volumes(context, "shadow volumes",
@@ -78,6 +112,8 @@ ShadowVolumePass::ShadowVolumePass(vk::Context& context, const std::vector<gpu::
               vk::kStorageUsage),
       m_build(context, "shadow_volume_build.comp", 3, sizeof(gpu::ShadowVolumeParams)) {
     m_positions.upload(prepassPositions(m_shadowTriangles.triangles));
+    if (m_triangleCount > 0) m_adjacency.upload(adjacencyIndices(m_shadowTriangles.triangles));
+    for (const auto& light : rasterLights) m_lightPoints.push_back(lightPoint(light));
     m_build.bind({&m_triangles, &m_lights, &m_volumes});
 
     const bool clamp = context.depthClampEnabled();
@@ -106,6 +142,14 @@ ShadowVolumePass::ShadowVolumePass(vk::Context& context, const std::vector<gpu::
     volume.stencilFront = stencilOp(VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_DECREMENT_AND_WRAP, VK_COMPARE_OP_ALWAYS);
     volume.stencilBack = stencilOp(VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_INCREMENT_AND_WRAP, VK_COMPARE_OP_ALWAYS);
     m_volumePipeline = std::make_unique<vk::GraphicsPipeline>(context, volume);
+    if (geometry == VolumeGeometry::GeometryShader) {
+        vk::GraphicsPipelineDesc gs = volume;
+        gs.vertexShader = "shadow_volume_adj.vert";
+        gs.geometryShader = "shadow_volume.geom";
+        gs.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY;
+        gs.pushConstantBytes = sizeof(gpu::RasterVolumeParams);
+        m_volumeGeometryPipeline = std::make_unique<vk::GraphicsPipeline>(context, gs);
+    }
 
     // Mask writer of channel k: lit (count 0) pixels get 1 in channel k; the others fail the
     // stencil test and have their count reset to 0, ready for the next light without a clear.
@@ -139,18 +183,23 @@ void ShadowVolumePass::record(VkCommandBuffer cmd, const gpu::GpuCamera& camera,
     for (uint32_t pass = 0; pass < m_passCount; ++pass) {
         const uint32_t first = pass * gpu::kLightsPerMaskPass;
         const uint32_t count = std::min(gpu::kLightsPerMaskPass, m_lightCount - first);
-        if (pass > 0) {
+        const bool computeVolumes = m_geometry == VolumeGeometry::Compute;
+        if (pass > 0 && computeVolumes) {
             // The previous pass's draws read the volume buffer this dispatch overwrites.
             vk::memoryBarrier2(cmd, VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT, VK_ACCESS_2_NONE,
                                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE);
+        }
+        if (pass > 0) {
             vk::imageBarrier(cmd, m_depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                              VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, fragmentTests,
                              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, fragmentTests, depthAccess);
         }
-        gpu::ShadowVolumeParams build{m_triangleCount, first, count, 0u};
-        m_build.record(cmd, vk::groupCount(uint64_t(m_triangleCount) * count, gpu::kShadowVolumeGroupSize), build);
-        vk::memoryBarrier2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
-                           VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT, VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT);
+        if (computeVolumes) {
+            gpu::ShadowVolumeParams build{m_triangleCount, first, count, 0u};
+            m_build.record(cmd, vk::groupCount(uint64_t(m_triangleCount) * count, gpu::kShadowVolumeGroupSize), build);
+            vk::memoryBarrier2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+                               VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT, VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT);
+        }
         vk::imageBarrier(cmd, m_mask, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                          VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_NONE,
                          VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
@@ -186,7 +235,14 @@ void ShadowVolumePass::record(VkCommandBuffer cmd, const gpu::GpuCamera& camera,
             vkCmdDraw(cmd, m_triangleCount * 3, 1, 0, 0);
         }
         for (uint32_t k = 0; k < count; ++k) {
-            if (m_triangleCount > 0) {
+            if (m_triangleCount > 0 && !computeVolumes) {
+                gpu::RasterVolumeParams volume{raster.viewProj, m_lightPoints[first + k]};
+                m_volumeGeometryPipeline->bind(cmd, volume);
+                const VkBuffer positions = m_positions.handle();
+                vkCmdBindVertexBuffers(cmd, 0, 1, &positions, &zero);
+                vkCmdBindIndexBuffer(cmd, m_adjacency.handle(), 0, VK_INDEX_TYPE_UINT32);
+                vkCmdDrawIndexed(cmd, m_triangleCount * 6, 1, 0, 0, 0);
+            } else if (m_triangleCount > 0) {
                 m_volumePipeline->bind(cmd, raster);
                 const VkBuffer volumes = m_volumes.handle();
                 const VkDeviceSize offset = k * volumeBytesPerLight;

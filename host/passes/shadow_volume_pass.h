@@ -25,10 +25,20 @@ namespace vkp {
 // so points at infinity (w = 0) get depth 0 and floats keep their precision far away.
 glm::mat4 rasterViewProjection(const gpu::GpuCamera& camera, float near);
 
+// Where the volume geometry is generated (docs/benchmarks.md measures both on lavapipe).
+enum class VolumeGeometry {
+    Compute,         // shadow_volume_build.comp writes volume triangles, drawn as a vertex buffer
+    GeometryShader,  // shadow_volume.geom extrudes the scene drawn with triangle adjacency.
+                     // Benchmark only: on lavapipe its masks differ from the compute variant's
+                     // along extruded edges (up to 27 % of pixels with the camera among open
+                     // meshes; cause not found), so the renderer and the tests use Compute.
+};
+
 class ShadowVolumePass {
 public:
     ShadowVolumePass(vk::Context& context, const std::vector<gpu::GpuTriangle>& triangles,
-                     const std::vector<gpu::GpuLight>& rasterLights, uint32_t width, uint32_t height);
+                     const std::vector<gpu::GpuLight>& rasterLights, uint32_t width, uint32_t height,
+                     VolumeGeometry geometry = VolumeGeometry::Compute);
 
     // Records every mask pass; `near` is the near plane distance (world units). Ends with the
     // masks visible to compute shaders.
@@ -39,6 +49,7 @@ public:
     uint32_t lightCount() const { return m_lightCount; }
     uint32_t passCount() const { return m_passCount; }
     const ShadowTriangles& shadowTriangles() const { return m_shadowTriangles; }
+    VolumeGeometry geometry() const { return m_geometry; }
 
 private:
     vk::Context& m_context;
@@ -47,11 +58,15 @@ private:
     uint32_t m_triangleCount;
     uint32_t m_lightCount;
     uint32_t m_passCount;
+    VolumeGeometry m_geometry;
+    std::vector<glm::vec4> m_lightPoints;  // homogeneous light points (geometry-shader push constants)
     ShadowTriangles m_shadowTriangles;
     VkFormat m_depthFormat;
     vk::Image m_depth;
     vk::Image m_mask;
-    vk::Buffer m_positions;   // vertex buffer of the pre-pass: 3 x vec4 (w = 1) per triangle
+    vk::Buffer m_positions;   // vertex buffer of the pre-pass: 3 x vec4 (w = 1) per triangle, then
+                              // one "no neighbour" marker (w = 0) for the adjacency indices
+    vk::Buffer m_adjacency;   // geometry-shader variant: 6 indices per triangle (with adjacency)
     vk::Buffer m_triangles;   // GpuShadowTriangle per triangle
     vk::Buffer m_lights;      // GpuLight per raster light
     vk::Buffer m_volumes;     // volume vertices of one pass (written by compute, drawn as vertices)
@@ -59,6 +74,7 @@ private:
     vk::ComputeKernel m_build;
     std::unique_ptr<vk::GraphicsPipeline> m_depthPipeline;
     std::unique_ptr<vk::GraphicsPipeline> m_volumePipeline;
+    std::unique_ptr<vk::GraphicsPipeline> m_volumeGeometryPipeline;
     std::unique_ptr<vk::GraphicsPipeline> m_maskPipelines[gpu::kLightsPerMaskPass];
 };
 

@@ -278,6 +278,10 @@ void Context::createDevice() {
     // projection).
     m_depthClamp = supported.depthClamp == VK_TRUE;
     features.features.depthClamp = supported.depthClamp;
+    // Optional: the geometry-shader variant of the shadow volumes (measured against the compute
+    // variant in docs/benchmarks.md).
+    m_geometryShader = supported.geometryShader == VK_TRUE;
+    features.features.geometryShader = supported.geometryShader;
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.pNext = &features;
     info.queueCreateInfoCount = 1;

@@ -46,6 +46,7 @@ public:
     const std::string& deviceName() const { return m_deviceName; }
     bool validationEnabled() const { return m_validate; }
     bool depthClampEnabled() const { return m_depthClamp; }
+    bool geometryShaderEnabled() const { return m_geometryShader; }
 
     // Validation messages (warnings and errors) seen so far; tests assert this stays empty.
     std::vector<std::string> validationMessages() const;
@@ -73,6 +74,7 @@ private:
 
     bool m_validate = false;
     bool m_depthClamp = false;
+    bool m_geometryShader = false;
     VkInstance m_instance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT m_messenger = VK_NULL_HANDLE;
     VkPhysicalDevice m_physicalDevice = VK_NULL_HANDLE;

@@ -38,6 +38,14 @@ GraphicsPipeline::GraphicsPipeline(Context& context, const GraphicsPipelineDesc&
         stage.module = m_vertex;
         stage.pName = "main";
         stages.push_back(stage);
+        if (!desc.geometryShader.empty()) {
+            if (!context.geometryShaderEnabled())
+                throw RuntimeError(fmt::format("{}: the device has no geometry shaders", desc.geometryShader));
+            m_geometry = makeModule(device, desc.geometryShader);
+            stage.stage = VK_SHADER_STAGE_GEOMETRY_BIT;
+            stage.module = m_geometry;
+            stages.push_back(stage);
+        }
         if (!desc.fragmentShader.empty()) {
             m_fragment = makeModule(device, desc.fragmentShader);
             stage.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
@@ -45,8 +53,9 @@ GraphicsPipeline::GraphicsPipeline(Context& context, const GraphicsPipelineDesc&
             stages.push_back(stage);
         }
 
-        const VkShaderStageFlags pushStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-        VkPushConstantRange range{pushStages, 0, m_pushBytes};
+        m_pushStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT |
+                       (m_geometry ? VK_SHADER_STAGE_GEOMETRY_BIT : 0u);
+        VkPushConstantRange range{m_pushStages, 0, m_pushBytes};
         VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
         layoutInfo.pushConstantRangeCount = m_pushBytes ? 1 : 0;
         layoutInfo.pPushConstantRanges = &range;
@@ -62,7 +71,7 @@ GraphicsPipeline::GraphicsPipeline(Context& context, const GraphicsPipelineDesc&
             vertexInput.pVertexAttributeDescriptions = &attribute;
         }
         VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-        assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+        assembly.topology = desc.topology;
         VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
         viewport.viewportCount = 1;
         viewport.scissorCount = 1;
@@ -127,6 +136,8 @@ void GraphicsPipeline::release() {
     if (m_pipeline) vkDestroyPipeline(device, m_pipeline, nullptr);
     if (m_layout) vkDestroyPipelineLayout(device, m_layout, nullptr);
     if (m_fragment) vkDestroyShaderModule(device, m_fragment, nullptr);
+    if (m_geometry) vkDestroyShaderModule(device, m_geometry, nullptr);
+    m_geometry = VK_NULL_HANDLE;
     if (m_vertex) vkDestroyShaderModule(device, m_vertex, nullptr);
     m_pipeline = VK_NULL_HANDLE;
     m_layout = VK_NULL_HANDLE;
@@ -139,7 +150,7 @@ void GraphicsPipeline::bind(VkCommandBuffer cmd, const void* push, uint32_t push
         throw RuntimeError(fmt::format("{}: push constants are {} bytes, expected {}", m_name, pushBytes, m_pushBytes));
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_pipeline);
     if (pushBytes)
-        vkCmdPushConstants(cmd, m_layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, pushBytes, push);
+        vkCmdPushConstants(cmd, m_layout, m_pushStages, 0, pushBytes, push);
 }
 
 void setViewportAndScissor(VkCommandBuffer cmd, uint32_t width, uint32_t height) {

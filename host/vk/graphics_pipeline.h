@@ -15,7 +15,9 @@ class Context;
 
 struct GraphicsPipelineDesc {
     std::string vertexShader;                  // e.g. "raster_position.vert"
+    std::string geometryShader;                // "" = none (needs Context::geometryShaderEnabled())
     std::string fragmentShader;                // "" = no fragment stage (depth/stencil only)
+    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
     uint32_t vertexStride = 0;                 // 0 = no vertex input; else vec4 at location 0
     VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
     bool depthTest = false;
@@ -28,7 +30,7 @@ struct GraphicsPipelineDesc {
     VkFormat colorFormat = VK_FORMAT_UNDEFINED;  // UNDEFINED = no colour attachment
     VkColorComponentFlags colorWriteMask = 0;
     VkFormat depthStencilFormat = VK_FORMAT_UNDEFINED;
-    uint32_t pushConstantBytes = 0;            // visible to the vertex and fragment stages
+    uint32_t pushConstantBytes = 0;            // visible to every stage of the pipeline
 };
 
 class GraphicsPipeline {
@@ -51,7 +53,9 @@ private:
     std::string m_name;
     uint32_t m_pushBytes;
     VkShaderModule m_vertex = VK_NULL_HANDLE;
+    VkShaderModule m_geometry = VK_NULL_HANDLE;
     VkShaderModule m_fragment = VK_NULL_HANDLE;
+    VkShaderStageFlags m_pushStages = 0;
     VkPipelineLayout m_layout = VK_NULL_HANDLE;
     VkPipeline m_pipeline = VK_NULL_HANDLE;
 };

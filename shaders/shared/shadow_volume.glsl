@@ -49,6 +49,13 @@ struct RasterParams {
 };
 STATIC_ASSERT_SIZE(RasterParams, 64)
 
+// Push constants of the geometry-shader volumes (shadow_volume.geom).
+struct RasterVolumeParams {
+    mat4 viewProj;
+    vec4 light;             // homogeneous light point: (position, 1), or (-direction, 0)
+};
+STATIC_ASSERT_SIZE(RasterVolumeParams, 80)
+
 // Push constants of raster_direct.comp.
 struct RasterDirectParams {
     GpuCamera camera;
