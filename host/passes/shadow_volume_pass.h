@@ -30,8 +30,8 @@ enum class VolumeGeometry {
     Compute,         // shadow_volume_build.comp writes volume triangles, drawn as a vertex buffer
     GeometryShader,  // shadow_volume.geom extrudes the scene drawn with triangle adjacency.
                      // Benchmark only: on lavapipe its masks differ from the compute variant's
-                     // along extruded edges (up to 27 % of pixels with the camera among open
-                     // meshes; cause not found), so the renderer and the tests use Compute.
+                     // along extruded edges (27 % of the pairs in the open-mesh test scene;
+                     // cause not found), so the renderer and the tests use Compute.
 };
 
 class ShadowVolumePass {
