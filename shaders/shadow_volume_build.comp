@@ -53,12 +53,34 @@ void emit(vec4 a, vec4 b, vec4 c) {
     g_out += 3u;
 }
 
+// Lexicographic order of points, to split shared side quads the same way from both triangles.
+bool lessThanPoint(vec3 p, vec3 q) {
+    if (p.x != q.x) return p.x < q.x;
+    if (p.y != q.y) return p.y < q.y;
+    return p.z < q.z;
+}
+
 // Side quad of edge a -> b (counter-clockwise seen from the light), facing out of the volume.
+// Neighbouring per-triangle volumes emit the same quad with opposite orientation, and the two must
+// cancel pixel for pixel: both split it along the same diagonal (from the lexicographically
+// smaller endpoint lo to the other's extrusion) and list each triangle from lo, only the winding
+// differs. Otherwise rounding in the two triangulations makes their depths differ where the quad
+// meets the surface, leaving a seam of false shadow along the shared edge.
 void emitSide(vec3 a, vec3 b, vec4 l) {
-    vec4 ea = extrude(a, l);
-    vec4 eb = extrude(b, l);
-    emit(vec4(a, 1.0f), ea, eb);
-    emit(vec4(a, 1.0f), eb, vec4(b, 1.0f));
+    bool forward = lessThanPoint(a, b);
+    vec3 lo = forward ? a : b;
+    vec3 hi = forward ? b : a;
+    vec4 plo = vec4(lo, 1.0f);
+    vec4 phi = vec4(hi, 1.0f);
+    vec4 elo = extrude(lo, l);
+    vec4 ehi = extrude(hi, l);
+    if (forward) {
+        emit(plo, elo, ehi);
+        emit(plo, ehi, phi);
+    } else {
+        emit(plo, ehi, elo);
+        emit(plo, phi, ehi);
+    }
 }
 
 void main() {

@@ -1,8 +1,9 @@
 // Ray-traced reference of the raster shadow mask: for each pixel centre's visible point and each
 // raster light (at most 32), the shadow ray of the path tracer's next-event estimate
-// (lightVisible, scene_access.glsl). out[2 * pixel] = bit per light: visible; out[2 * pixel + 1] =
+// (lightVisible, scene_access.glsl). out[3 * pixel] = bit per light: visible; out[3 * pixel + 1] =
 // bit per light: the pixel sees a surface whose camera side faces the light (only there does the
-// mask matter: elsewhere the BSDF term is zero).
+// mask matter: elsewhere the BSDF term is zero); out[3 * pixel + 2] = the visible triangle
+// (0xffffffff: none), so the host can tell creases (geometric edges) from flat surfaces.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -29,8 +30,10 @@ void main() {
     float b2;
     uint visible = 0u;
     uint relevant = 0u;
+    uint visibleTriangle = 0xffffffffu;
     if (traceClosest(params.camera.position, dir, kInfinity, tHit, tri, b1, b2)) {
         SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
+        visibleTriangle = tri;
         vec3 sideNormal = hit.frontFace ? hit.geometricNormal : -hit.geometricNormal;
         for (uint k = 0u; k < params.lightCount; ++k) {
             LightSample ls = rasterLightSample(rasterLights[params.firstLight + k], hit.position);
@@ -39,6 +42,7 @@ void main() {
             if (lightVisible(hit.position, hit.geometricNormal, ls)) visible |= 1u << k;
         }
     }
-    result[2u * pixel] = visible;
-    result[2u * pixel + 1u] = relevant;
+    result[3u * pixel] = visible;
+    result[3u * pixel + 1u] = relevant;
+    result[3u * pixel + 2u] = visibleTriangle;
 }
