@@ -30,11 +30,17 @@ vec4 extrude(vec3 p, vec4 l) {
     return vec4(d, 0.0f);
 }
 
+bool lessThanPoint(vec3 p, vec3 q) {
+    if (p.x != q.x) return p.x < q.x;
+    if (p.y != q.y) return p.y < q.y;
+    return p.z < q.z;
+}
+
 void main() {
     vec4 l = params.light;
     vec3 v[3] = vec3[3](gl_in[0].gl_Position.xyz, gl_in[2].gl_Position.xyz, gl_in[4].gl_Position.xyz);
     vec4 adj[3] = vec4[3](gl_in[1].gl_Position, gl_in[3].gl_Position, gl_in[5].gl_Position);
-    bool open = true;
+    bool open = adj[0].w == 0.0f;
     float f = facing(v[0], v[1], v[2], l);
     if (open && f < 0.0f) {
         vec3 tmp = v[1];
@@ -56,15 +62,18 @@ void main() {
         vec3 b = v[(e + 1) % 3];
         // The neighbour walks the edge the other way: (b, a, far vertex) is its winding.
         if (open || !(facing(b, a, adj[e].xyz, l) > 0.0f)) {
-            // Two separate triangles, as shadow_volume_build.comp emits them, rather than one strip.
-            put(vec4(a, 1.0f));
-            put(extrude(a, l));
-            put(extrude(b, l));
-            EndPrimitive();
-            put(vec4(a, 1.0f));
-            put(extrude(b, l));
-            put(vec4(b, 1.0f));
-            EndPrimitive();
+            // The same split and vertex order as shadow_volume_build.comp's emitSide, so the
+            // opposite sides of neighbouring per-triangle volumes cancel pixel for pixel.
+            bool forward = lessThanPoint(a, b);
+            vec3 lo = forward ? a : b;
+            vec3 hi = forward ? b : a;
+            if (forward) {
+                put(vec4(lo, 1.0f)); put(extrude(lo, l)); put(extrude(hi, l)); EndPrimitive();
+                put(vec4(lo, 1.0f)); put(extrude(hi, l)); put(vec4(hi, 1.0f)); EndPrimitive();
+            } else {
+                put(vec4(lo, 1.0f)); put(extrude(hi, l)); put(extrude(lo, l)); EndPrimitive();
+                put(vec4(lo, 1.0f)); put(vec4(hi, 1.0f)); put(extrude(hi, l)); EndPrimitive();
+            }
         }
     }
 }
