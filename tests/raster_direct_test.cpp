@@ -104,9 +104,10 @@ TEST_F(RasterDirect, AreaLightSamplesConvergeToTraced) {
     EXPECT_LT(previous, 0.02);
 }
 
-// The "same picture": cornell-box, all bounces, --direct raster against two independent
-// traced renders. The raster image holds less noise (its direct term has none), so without bias
-// its distance to a traced image is below the distance between the two traced images.
+// The "same picture": cornell-box, all bounces (the indirect light's noise dominates
+// both), --direct raster against --direct traced. Without bias, E[relMSE(raster, traced)] is the
+// sum of the two images' noise, each estimated as half the relMSE between two renders with other
+// seeds; the measured distance may exceed it by 15 % (the estimates' own scatter), no more.
 TEST_F(RasterDirect, CornellBoxSamePictureAsTraced) {
     const Scene scene = loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-box.gltf");
     Renderer renderer(test::gpu(), scene);
@@ -117,7 +118,7 @@ TEST_F(RasterDirect, CornellBoxSamePictureAsTraced) {
         s.samplesPerPixel = 64;
         s.seed = seed;
         s.pixelCentres = true;
-        s.areaLightSamples = 64;
+        s.areaLightSamples = 256;
         s.direct = direct;
         return s;
     };
@@ -126,8 +127,11 @@ TEST_F(RasterDirect, CornellBoxSamePictureAsTraced) {
     const ImageRgb traced2 = renderer.render(settings(DirectLight::Traced, 3)).image;
     const double rasterError = relativeMse(raster, traced1);
     const double noise = relativeMse(traced2, traced1);
-    fmt::print("cornell-box: relMSE(raster, traced) = {:.4g}, relMSE(traced, traced') = {:.4g}\n", rasterError, noise);
-    EXPECT_LT(rasterError, noise);
+    const ImageRgb raster2 = renderer.render(settings(DirectLight::Raster, 4)).image;
+    const double rasterNoise = relativeMse(raster2, raster);
+    fmt::print("cornell-box: relMSE(raster, traced) = {:.4g}, relMSE(traced, traced') = {:.4g}, relMSE(raster, raster') = {:.4g}\n",
+               rasterError, noise, rasterNoise);
+    EXPECT_LT(rasterError, 1.15 * (0.5 * noise + 0.5 * rasterNoise));
 }
 
 // All bounces: the raster direct term plus the path tracer's remaining terms estimate the same
