@@ -1,8 +1,10 @@
 // Shadow volumes in a geometry shader with triangle adjacency, the alternative to
 // shadow_volume_build.comp (docs/benchmarks.md compares them; the same volumes, the same
-// orientation). Input: a triangle (vertices 0, 2, 4) and the far vertex of the neighbour across
-// each edge (1: edge 0-2, 3: edge 2-4, 5: edge 4-0); a neighbour with w = 0 marks a triangle of an
-// open or non-manifold component, which gets a closed volume of its own.
+// orientation, the same side-quad split). Input: a triangle (vertices 0, 2, 4) and the far vertex
+// of the neighbour across each edge (1: edge 0-2, 3: edge 2-4, 5: edge 4-0); a neighbour with
+// w = 0 marks a triangle of an open or non-manifold component, which gets a volume of its own.
+// Scene vertices keep the clip positions raster_position.vert computed (the pre-pass's own), so
+// front caps land on exactly the pre-pass depths; only extruded vertices are projected here.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -10,24 +12,11 @@
 
 layout(triangles_adjacency) in;
 layout(triangle_strip, max_vertices = 24) out;
+layout(location = 0) in vec4 worldPosition[];
 layout(push_constant) uniform Push { RasterVolumeParams params; };
 
 float facing(vec3 a, vec3 b, vec3 c, vec4 l) {
     return dot(cross(b - a, c - a), l.xyz - a * l.w);
-}
-
-// precise, like raster_position.vert: the front caps must land on exactly the pre-pass depths.
-void put(vec4 p) {
-    precise vec4 clip = params.viewProj * p;
-    gl_Position = clip;
-    EmitVertex();
-}
-
-// precise: every use of a vertex's extrusion (back cap, both adjacent sides) must be bit-identical,
-// or shared edges crack and the top-left rule no longer counts each pixel once.
-vec4 extrude(vec3 p, vec4 l) {
-    precise vec3 d = p * l.w - l.xyz;
-    return vec4(d, 0.0f);
 }
 
 bool lessThanPoint(vec3 p, vec3 q) {
@@ -36,44 +25,58 @@ bool lessThanPoint(vec3 p, vec3 q) {
     return p.z < q.z;
 }
 
+void putClip(vec4 clip) {
+    gl_Position = clip;
+    EmitVertex();
+}
+
+// A vertex pushed away from the light to infinity, projected.
+void putExtruded(vec3 p, vec4 l) {
+    precise vec3 d = p * l.w - l.xyz;
+    precise vec4 clip = params.viewProj * vec4(d, 0.0f);
+    putClip(clip);
+}
+
+// Side of edge a -> b unless the neighbour (far vertex `far`, walking b -> a) also faces the light.
+// ca, cb: the clip positions of a and b.
+void emitSide(vec3 a, vec3 b, vec4 ca, vec4 cb, vec4 far, vec4 l, bool open) {
+    if (!open && facing(b, a, far.xyz, l) > 0.0f) return;
+    bool forward = lessThanPoint(a, b);
+    vec3 lo = forward ? a : b;
+    vec3 hi = forward ? b : a;
+    vec4 clo = forward ? ca : cb;
+    vec4 chi = forward ? cb : ca;
+    if (forward) {
+        putClip(clo); putExtruded(lo, l); putExtruded(hi, l); EndPrimitive();
+        putClip(clo); putExtruded(hi, l); putClip(chi); EndPrimitive();
+    } else {
+        putClip(clo); putExtruded(hi, l); putExtruded(lo, l); EndPrimitive();
+        putClip(clo); putClip(chi); putExtruded(hi, l); EndPrimitive();
+    }
+}
+
 void main() {
     vec4 l = params.light;
-    vec3 v[3] = vec3[3](gl_in[0].gl_Position.xyz, gl_in[2].gl_Position.xyz, gl_in[4].gl_Position.xyz);
-    vec4 adj[3] = vec4[3](gl_in[1].gl_Position, gl_in[3].gl_Position, gl_in[5].gl_Position);
-    bool open = adj[0].w == 0.0f;
-    float f = facing(v[0], v[1], v[2], l);
-    if (open && f < 0.0f) {
-        vec3 tmp = v[1];
-        v[1] = v[2];
-        v[2] = tmp;
+    vec3 v0 = worldPosition[0].xyz;
+    vec3 v1 = worldPosition[2].xyz;
+    vec3 v2 = worldPosition[4].xyz;
+    vec4 c0 = gl_in[0].gl_Position;
+    vec4 c1 = gl_in[2].gl_Position;
+    vec4 c2 = gl_in[4].gl_Position;
+    vec4 n01 = worldPosition[1];
+    vec4 n12 = worldPosition[3];
+    vec4 n20 = worldPosition[5];
+    bool open = n01.w == 0.0f;
+    float f = facing(v0, v1, v2, l);
+    if (open && f < 0.0f) {  // open: turn the triangle towards the light (v1 <-> v2)
+        vec3 tv = v1; v1 = v2; v2 = tv;
+        vec4 tc = c1; c1 = c2; c2 = tc;
         f = -f;
     }
     if (!(f > 0.0f)) return;
-    put(vec4(v[0], 1.0f));
-    put(vec4(v[1], 1.0f));
-    put(vec4(v[2], 1.0f));
-    EndPrimitive();
-    put(extrude(v[0], l));
-    put(extrude(v[2], l));
-    put(extrude(v[1], l));
-    EndPrimitive();
-    for (int e = 0; e < 3; ++e) {
-        vec3 a = v[e];
-        vec3 b = v[(e + 1) % 3];
-        // The neighbour walks the edge the other way: (b, a, far vertex) is its winding.
-        if (open || !(facing(b, a, adj[e].xyz, l) > 0.0f)) {
-            // The same split and vertex order as shadow_volume_build.comp's emitSide, so the
-            // opposite sides of neighbouring per-triangle volumes cancel pixel for pixel.
-            bool forward = lessThanPoint(a, b);
-            vec3 lo = forward ? a : b;
-            vec3 hi = forward ? b : a;
-            if (forward) {
-                put(vec4(lo, 1.0f)); put(extrude(lo, l)); put(extrude(hi, l)); EndPrimitive();
-                put(vec4(lo, 1.0f)); put(extrude(hi, l)); put(vec4(hi, 1.0f)); EndPrimitive();
-            } else {
-                put(vec4(lo, 1.0f)); put(extrude(hi, l)); put(extrude(lo, l)); EndPrimitive();
-                put(vec4(lo, 1.0f)); put(vec4(hi, 1.0f)); put(extrude(hi, l)); EndPrimitive();
-            }
-        }
-    }
+    putClip(c0); putClip(c1); putClip(c2); EndPrimitive();                          // front cap
+    putExtruded(v0, l); putExtruded(v2, l); putExtruded(v1, l); EndPrimitive();     // back cap
+    emitSide(v0, v1, c0, c1, n01, l, open);
+    emitSide(v1, v2, c1, c2, n12, l, open);
+    emitSide(v2, v0, c2, c0, n20, l, open);
 }
