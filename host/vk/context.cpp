@@ -98,8 +98,14 @@ VkInstance createBareInstance(bool validate, const void* next) {
                 "(Debian: apt-get install vulkan-validationlayers)");
         layers.push_back(kValidationLayer);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-        // Provided by the layer; lets a context turn on synchronization validation.
-        extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+        // Provided by the layer (when it is): lets a context turn on synchronization validation.
+        uint32_t extensionCount = 0;
+        vkEnumerateInstanceExtensionProperties(kValidationLayer, &extensionCount, nullptr);
+        std::vector<VkExtensionProperties> layerExtensions(extensionCount);
+        vkEnumerateInstanceExtensionProperties(kValidationLayer, &extensionCount, layerExtensions.data());
+        for (const auto& e : layerExtensions)
+            if (std::strcmp(e.extensionName, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME) == 0)
+                extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
     }
     VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     info.pNext = next;
