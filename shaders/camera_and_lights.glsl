@@ -7,13 +7,17 @@
 // Next-event estimation at a non-delta surface point: one light chosen by power, one sample on
 // it, a shadow ray. With `mis` the contribution of area lights is weighted by the power heuristic
 // against BSDF sampling (the caller then MIS-weights emission found by BSDF rays); without it the
-// estimate stands alone. Always draws 3 sample dimensions.
-vec3 directLight(SurfaceHit hit, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n, uint lightCount, bool mis,
-                 inout Sampler rng) {
+// estimate stands alone. Lights whose type bit (1 << type) is set in skipTypes contribute nothing:
+// another pass (the raster direct light) adds their full expectation, so dropping them keeps the
+// sum unbiased without changing the light selection. Always draws 3 sample dimensions.
+vec3 directLightSkipping(SurfaceHit hit, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n, uint lightCount, bool mis,
+                         uint skipTypes, inout Sampler rng) {
     float uPick = nextSample(rng);
     vec2 uLight = nextSample2(rng);
     if (lightCount == 0u) return vec3(0.0f);
-    LightSample ls = sampleLight(pickLight(uPick, lightCount), hit.position, uLight);
+    uint index = pickLight(uPick, lightCount);
+    if ((skipTypes & (1u << lights[index].type)) != 0u) return vec3(0.0f);
+    LightSample ls = sampleLight(index, hit.position, uLight);
     if (ls.pdf <= 0.0f) return vec3(0.0f);
     vec3 wi = toLocal(ls.wi, t, b, n);
     vec3 sideNormal = hit.frontFace ? hit.geometricNormal : -hit.geometricNormal;
@@ -23,6 +27,11 @@ vec3 directLight(SurfaceHit hit, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 
     if (!lightVisible(hit.position, hit.geometricNormal, ls)) return vec3(0.0f);
     float weight = ls.delta || !mis ? 1.0f : powerHeuristic(ls.pdf, pdfBsdf(bsdf, wo, wi));
     return f * wi.z * ls.radiance * (weight / ls.pdf);
+}
+
+vec3 directLight(SurfaceHit hit, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n, uint lightCount, bool mis,
+                 inout Sampler rng) {
+    return directLightSkipping(hit, bsdf, wo, t, b, n, lightCount, mis, 0u, rng);
 }
 
 // MIS weight (power heuristic) of emission that a BSDF-sampled ray with solid-angle pdf

@@ -4,6 +4,10 @@
 // Russian roulette, Beer-Lambert absorption inside KHR_materials_volume solids. One invocation
 // per pixel adds `sampleCount` samples to the film; a pixel is written by exactly one invocation,
 // so accumulation is deterministic.
+// With --direct raster (kPathFlagRaster*), the first vertex's direct light from the covered lights
+// comes from the raster pass (binding 10, added to every sample) instead of next-event estimation,
+// and emission of covered area lights reached by a BSDF sample from the first vertex is dropped:
+// the raster term already holds all of it (no double counting).
 #ifndef VKP_PATH_TRACER_GLSL
 #define VKP_PATH_TRACER_GLSL
 
@@ -16,14 +20,15 @@ layout(local_size_x = 64) in;
 layout(std430, set = 0, binding = 8) buffer Film { vec4 film[]; };  // rgb sum, sample count
 layout(std430, set = 0, binding = 9) buffer Counters { uint counters[]; };
 // counters[0]: samples that produced a non-finite value (dropped)
+layout(std430, set = 0, binding = 10) readonly buffer RasterDirect { vec4 rasterDirect[]; };
 
 #ifdef GUIDED
 #include "shared/guiding.glsl"
 #ifdef GUIDE_CACHE
-layout(std430, set = 0, binding = 10) readonly buffer CacheCells { ivec4 cacheCells[]; };
-layout(std430, set = 0, binding = 11) readonly buffer CacheCdfs { float cacheCdfs[]; };
+layout(std430, set = 0, binding = 11) readonly buffer CacheCells { ivec4 cacheCells[]; };
+layout(std430, set = 0, binding = 12) readonly buffer CacheCdfs { float cacheCdfs[]; };
 #else
-#define PHOTON_GRID_BINDING 10
+#define PHOTON_GRID_BINDING 11
 #include "photon_gather.glsl"
 #endif
 layout(push_constant) uniform Push { PathTraceParams params; GuideParams guide; };
@@ -48,6 +53,7 @@ PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
     PathState st;
     st.rng = makeSampler(sampleIndex, streamSeed);
     vec2 jitter = nextSample2(st.rng);
+    if ((params.flags & kPathFlagPixelCentres) != 0u) jitter = vec2(0.5f);
     st.origin = params.camera.position;
     st.dir = cameraRayDirection(params.camera, params.width, params.height, vec2(float(px) + jitter.x, float(py) + jitter.y));
     st.throughput = vec3(1.0f);
@@ -134,6 +140,7 @@ bool extendPath(inout PathState st) {
         if (le.r + le.g + le.b > 0.0f) {
             float weight = 1.0f;
             if (useNee && !st.lastDelta) weight = emissionMisWeight(hit, st.dir, tHit, st.lastPdf);
+            if (st.depth == 1u && !st.lastDelta && (params.flags & kPathFlagRasterAreaLights) != 0u) weight = 0.0f;
             st.radiance += st.throughput * le * weight;
         }
     }
@@ -149,7 +156,11 @@ bool extendPath(inout PathState st) {
     if (wo.z <= 0.0f) wo.z = 1.0e-4f;  // shading normal facing away: treat as grazing
 
     if (useNee) {
-        st.radiance += st.throughput * directLight(hit, bsdf, wo, t, b, n, params.lightCount, true, st.rng);
+        uint skip = 0u;
+        if (st.depth == 0u && (params.flags & kPathFlagRasterDeltaLights) != 0u)
+            skip |= (1u << kLightPoint) | (1u << kLightSpot) | (1u << kLightDirectional);
+        if (st.depth == 0u && (params.flags & kPathFlagRasterAreaLights) != 0u) skip |= 1u << kLightTriangle;
+        st.radiance += st.throughput * directLightSkipping(hit, bsdf, wo, t, b, n, params.lightCount, true, skip, st.rng);
     } else {
         nextSample(st.rng);  // keep the sample dimensions of both modes aligned
         nextSample(st.rng);
@@ -195,11 +206,13 @@ void main() {
     uint py = pixel / params.width;
     uint streamSeed = hashCombine(params.seed, pixel);
     vec4 acc = film[pixel];
+    bool addRaster = (params.flags & (kPathFlagRasterDeltaLights | kPathFlagRasterAreaLights)) != 0u;
     uint done = 0u;
     PathState st = startPath(params.firstSample, streamSeed, px, py);
     while (done < params.sampleCount) {
         if (extendPath(st)) continue;
         vec3 l = st.radiance;
+        if (addRaster) l += rasterDirect[pixel].rgb;
         if (any(isnan(l)) || any(isinf(l))) {
             atomicAdd(counters[0], 1u);
             l = vec3(0.0f);

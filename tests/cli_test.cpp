@@ -257,5 +257,32 @@ TEST(Cli, UnwritableOutputFailsWithoutLeavingFiles) {
     EXPECT_FALSE(fs::exists(dir / "file" / "out.exr"));
 }
 
+TEST(Cli, RasterDirectRendersAndReportsItsPass) {
+    const fs::path dir = tempDir("raster");
+    const fs::path exr = dir / "box.exr";
+    const fs::path stats = dir / "stats.json";
+    const RunResult r = runVkphoton("render " + kBox + " --validate --direct raster --area-light-samples 4 --spp 2 "
+                                    "--width 24 --height 24 -o " + exr.string() + " --stats-json " + stats.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fs::exists(exr));
+    std::ifstream in(stats);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["settings"]["direct"], "raster");
+    EXPECT_EQ(j["raster"]["lights"], 8);  // the ceiling light's two triangles, 4 samples each
+}
+
+TEST(Cli, BadDirectSettingsExitWithTwo) {
+    for (const std::string args : {"--direct rasterized", "--direct raster --area-light-samples -1",
+                                   "--direct raster --area-light-samples 5000",
+                                   "--direct raster --integrator photon"}) {
+        const RunResult r = runVkphoton("render " + kBox + " --quiet --spp 1 --width 8 --height 8 " + args + " -o " +
+                                        (tempDir("bad-direct") / "x.exr").string());
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+        // The message names the offending option.
+        EXPECT_TRUE(r.output.find("--direct") != std::string::npos ||
+                    r.output.find("--area-light-samples") != std::string::npos) << args << "\n" << r.output;
+    }
+}
+
 }  // namespace
 }  // namespace vkp

@@ -43,3 +43,73 @@ Scene furnaceScene(float albedo, float emission) {
 }
 
 }  // namespace vkp::test
+
+namespace vkp::test {
+namespace {
+
+void addTriangle(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+    Triangle t;
+    t.p[0] = a;
+    t.p[1] = b;
+    t.p[2] = c;
+    const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
+    for (int v = 0; v < 3; ++v) {
+        t.n[v] = n;
+        t.uv[v] = glm::vec2(0.0f);
+        scene.bounds.grow(t.p[v]);
+    }
+    t.material = 0;
+    scene.triangles.push_back(t);
+}
+
+}  // namespace
+
+Scene shadowTestScene() {
+    Scene scene;
+    Material m;
+    m.name = "grey";
+    m.baseColor = glm::vec4(0.7f, 0.7f, 0.7f, 1.0f);
+    m.metallic = 0.0f;
+    m.roughness = 1.0f;
+    m.ior = 1.0f;
+    scene.materials.push_back(m);
+    return scene;
+}
+
+void addQuad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+    addTriangle(scene, a, b, c);
+    addTriangle(scene, a, c, d);
+}
+
+void addBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, bool openTop) {
+    const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
+                            {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    // Counter-clockwise seen from outside.
+    addQuad(scene, c[0], c[3], c[2], c[1]);  // -z
+    addQuad(scene, c[4], c[5], c[6], c[7]);  // +z
+    addQuad(scene, c[0], c[4], c[7], c[3]);  // -x
+    addQuad(scene, c[1], c[2], c[6], c[5]);  // +x
+    addQuad(scene, c[0], c[1], c[5], c[4]);  // -y
+    if (!openTop) addQuad(scene, c[3], c[7], c[6], c[2]);  // +y
+}
+
+void addPointLight(Scene& scene, glm::vec3 position, glm::vec3 intensity) {
+    PunctualLight l;
+    l.name = "point";
+    l.type = LightType::Point;
+    l.position = position;
+    l.intensity = intensity;
+    scene.lights.push_back(l);
+}
+
+Camera lookAt(glm::vec3 eye, glm::vec3 target, float yfov) {
+    Camera c;
+    c.position = eye;
+    c.forward = glm::normalize(target - eye);
+    const glm::vec3 right = glm::normalize(glm::cross(c.forward, glm::vec3(0.0f, 1.0f, 0.0f)));
+    c.up = glm::cross(right, c.forward);
+    c.yfov = yfov;
+    return c;
+}
+
+}  // namespace vkp::test

@@ -11,3 +11,18 @@ namespace vkp::test {
 Scene furnaceScene(float albedo, float emission);
 
 }  // namespace vkp::test
+
+namespace vkp::test {
+
+// Builders for small shadow scenes (tests/shadow_volume_test.cpp). Materials: index 0 is a grey
+// Lambertian added by shadowTestScene().
+Scene shadowTestScene();
+// Axis-aligned box [lo, hi] as 12 triangles with shared corners, outward normals (a closed,
+// consistently oriented 2-manifold). With `openTop` the +y face is left out (an open mesh).
+void addBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, bool openTop = false);
+// A quad (two triangles) with corners a, b, c, d counter-clockwise seen from its front.
+void addQuad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d);
+void addPointLight(Scene& scene, glm::vec3 position, glm::vec3 intensity);
+Camera lookAt(glm::vec3 eye, glm::vec3 target, float yfov = 0.9f);
+
+}  // namespace vkp::test

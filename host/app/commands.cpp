@@ -36,7 +36,10 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
     j["integrator"] = stats.integrator;
     j["settings"] = {{"width", s.width}, {"height", s.height}, {"spp", s.samplesPerPixel},
                      {"seed", s.seed}, {"maxDepth", s.maxDepth}, {"timeLimit", s.timeLimitSeconds},
-                     {"nextEventEstimation", s.nextEventEstimation}};
+                     {"nextEventEstimation", s.nextEventEstimation}, {"direct", stats.direct},
+                     {"areaLightSamples", s.areaLightSamples}};
+    if (s.direct == DirectLight::Raster)
+        j["raster"] = {{"lights", stats.rasterLights}, {"seconds", stats.rasterSeconds}};
     if (s.integrator == Integrator::Photon) {
         const PhotonRenderSettings& p = s.photon;
         j["settings"]["photon"] = {{"photons", p.globalPaths}, {"causticPhotons", p.causticPaths},

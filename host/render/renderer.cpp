@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include "passes/path_trace_pass.h"
+#include "passes/raster_direct_pass.h"
+#include "passes/raster_lights.h"
 #include "render/photon_integrator.h"
 #include "render/path_guide.h"
 #include "render/sample_loop.h"
@@ -49,6 +51,9 @@ RenderResult Renderer::render(const RenderSettings& settings, const ProgressCall
         throw InputError("the image must be at least 1x1 pixels");
     RenderResult result;
     if (settings.integrator == Integrator::Photon) {
+        // The photon integrator's visible-point NEE does not skip raster-covered lights yet.
+        if (settings.direct == DirectLight::Raster)
+            throw InputError("--direct raster works with --integrator path or guided, not photon yet");
         PhotonIntegrator integrator(m_context, m_scene, m_arrays, m_buffers);
         result = integrator.render(settings, progress, stop);
     } else {
@@ -63,21 +68,51 @@ RenderResult Renderer::renderPath(const RenderSettings& settings, const Progress
     const uint64_t pixels = uint64_t(settings.width) * settings.height;
     vk::Buffer film(m_context, "film", pixels * sizeof(glm::vec4), vk::kStorageUsage);
     vk::Buffer counters(m_context, "counters", 16 * sizeof(uint32_t), vk::kStorageUsage);
+    const gpu::GpuCamera camera = makeGpuCamera(chooseCamera(m_scene, settings.cameraIndex), settings.width, settings.height);
+    RenderResult result;
+    RenderStats& stats = result.stats;
+
+    // --direct raster: the direct light of the covered lights at the first vertex, once per frame
+    // (it is deterministic); every sample adds it.
+    const bool raster = settings.direct == DirectLight::Raster;
+    std::unique_ptr<RasterDirectPass> rasterPass;
+    vk::Buffer noRasterDirect;
+    uint32_t rasterFlags = 0;
+    if (raster) {
+        const auto lights = buildRasterLights(m_arrays, settings.areaLightSamples);
+        rasterPass = std::make_unique<RasterDirectPass>(m_context, m_arrays, m_buffers, lights, settings.width,
+                                                        settings.height);
+        const auto start = Clock::now();
+        m_context.submitAndWait([&](VkCommandBuffer cmd) {
+            rasterPass->record(cmd, camera, rasterNearPlane(m_scene.bounds));
+        });
+        stats.rasterSeconds = secondsSince(start);
+        stats.rasterLights = lights.size();
+        rasterFlags = gpu::kPathFlagRasterDeltaLights |
+                      (settings.areaLightSamples > 0 ? gpu::kPathFlagRasterAreaLights : 0u);
+    } else {
+        noRasterDirect = vk::Buffer(m_context, "no raster direct", 16, vk::kStorageUsage);
+    }
+    stats.direct = raster ? "raster" : "traced";
+    const vk::Buffer& rasterDirect = raster ? rasterPass->direct() : noRasterDirect;
+
     std::unique_ptr<PathGuide> guide;
     if (settings.integrator == Integrator::Guided)
         guide = std::make_unique<PathGuide>(m_context, m_scene, m_arrays, m_buffers, settings.guide, settings.seed);
-    const PathTracePass pass = guide ? PathTracePass(m_context, m_buffers, film, counters, guide->shader(), guide->buffers())
-                                     : PathTracePass(m_context, m_buffers, film, counters);
+    const PathTracePass pass = guide ? PathTracePass(m_context, m_buffers, film, counters, rasterDirect, guide->shader(),
+                                                     guide->buffers())
+                                     : PathTracePass(m_context, m_buffers, film, counters, rasterDirect);
     const uint32_t samplesPerDispatch = guide ? kMaxGuidedSamplesPerDispatch : kMaxSamplesPerDispatch;
 
     gpu::PathTraceParams params{};
-    params.camera = makeGpuCamera(chooseCamera(m_scene, settings.cameraIndex), settings.width, settings.height);
+    params.camera = camera;
     params.width = settings.width;
     params.height = settings.height;
     params.seed = settings.seed;
     params.maxDepth = settings.maxDepth;
     params.lightCount = m_buffers.lightCount();
-    params.flags = settings.nextEventEstimation ? 0u : gpu::kPathFlagNoDirectLightSampling;
+    params.flags = (settings.nextEventEstimation ? 0u : gpu::kPathFlagNoDirectLightSampling) | rasterFlags |
+                   (settings.pixelCentres ? gpu::kPathFlagPixelCentres : 0u);
 
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
         film.fillZero(cmd);
@@ -97,12 +132,10 @@ RenderResult Renderer::renderPath(const RenderSettings& settings, const Progress
         });
     });
 
-    RenderResult result;
-    RenderStats& stats = result.stats;
     if (guide) guide->addStats(stats);
     stats.integrator = guide ? "guided" : "path";
     stats.stopReason = loop.stopReason;
-    stats.renderSeconds = loop.seconds + stats.photonSeconds;
+    stats.renderSeconds = loop.seconds + stats.photonSeconds + stats.rasterSeconds;
     stats.samplesPerPixel = loop.samplesDone;
     stats.partial = loop.samplesDone < settings.samplesPerPixel;
     stats.cameraPaths = pixels * loop.samplesDone;

@@ -45,6 +45,12 @@ struct PhotonRenderSettings {
     uint32_t maxDeposits = 8;         // stored photons per global path at most
 };
 
+// Who computes the direct light at the first path vertex (--direct).
+enum class DirectLight {
+    Traced,  // next-event estimation in the path tracer (the reference)
+    Raster,  // stencil shadow volumes + lighting pass (host/passes/raster_direct_pass.h)
+};
+
 struct RenderSettings {
     Integrator integrator = Integrator::Path;
     PhotonRenderSettings photon;
@@ -57,6 +63,10 @@ struct RenderSettings {
     double timeLimitSeconds = 0.0;    // 0: no limit
     int cameraIndex = -1;             // -1: the scene's first camera, or a default framing
     bool nextEventEstimation = true;  // false: BSDF sampling only (a reference for tests)
+    DirectLight direct = DirectLight::Traced;
+    uint32_t areaLightSamples = 16;   // --area-light-samples: point samples per emissive triangle
+                                      // for --direct raster (0: emissive triangles stay traced)
+    bool pixelCentres = false;        // camera rays through pixel centres, no jitter (tests)
 };
 
 struct RenderProgress {
@@ -73,6 +83,9 @@ struct RenderStats {
     double bvhSeconds = 0.0;
     double uploadSeconds = 0.0;
     double renderSeconds = 0.0;
+    std::string direct = "traced";    // --direct
+    uint64_t rasterLights = 0;        // lights the raster pass covered (area samples count singly)
+    double rasterSeconds = 0.0;       // raster direct light: shadow volumes, masks and lighting
     uint32_t samplesPerPixel = 0;     // samples actually accumulated
     uint64_t nonFiniteSamples = 0;    // dropped samples that were NaN or infinite
     uint64_t cameraPaths = 0;

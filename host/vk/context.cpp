@@ -98,6 +98,14 @@ VkInstance createBareInstance(bool validate, const void* next) {
                 "(Debian: apt-get install vulkan-validationlayers)");
         layers.push_back(kValidationLayer);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        // Provided by the layer (when it is): lets a context turn on synchronization validation.
+        uint32_t extensionCount = 0;
+        vkEnumerateInstanceExtensionProperties(kValidationLayer, &extensionCount, nullptr);
+        std::vector<VkExtensionProperties> layerExtensions(extensionCount);
+        vkEnumerateInstanceExtensionProperties(kValidationLayer, &extensionCount, layerExtensions.data());
+        for (const auto& e : layerExtensions)
+            if (std::strcmp(e.extensionName, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME) == 0)
+                extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
     }
     VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     info.pNext = next;
@@ -139,7 +147,7 @@ std::vector<DeviceInfo> listDevices() {
 Context::Context(const ContextOptions& options)
     : m_validate(options.validate || validationRequestedByEnvironment()) {
     try {
-        createInstance();
+        createInstance(options.synchronizationValidation);
         pickPhysicalDevice(options.device);
         createDevice();
     } catch (...) {
@@ -185,7 +193,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::onDebugMessage(
     return VK_FALSE;
 }
 
-void Context::createInstance() {
+void Context::createInstance(bool synchronizationValidation) {
     VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
         VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
@@ -195,8 +203,15 @@ void Context::createInstance() {
                                 VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
     messengerInfo.pfnUserCallback = &Context::onDebugMessage;
     messengerInfo.pUserData = this;
+    // Synchronization validation (hazards between passes, e.g. the raster/compute hand-off).
+    const VkValidationFeatureEnableEXT syncFeature = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+    VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+    features.enabledValidationFeatureCount = 1;
+    features.pEnabledValidationFeatures = &syncFeature;
+    features.pNext = &messengerInfo;
     // Chaining the messenger info also reports problems during instance creation itself.
-    m_instance = createBareInstance(m_validate, m_validate ? &messengerInfo : nullptr);
+    const void* chain = synchronizationValidation ? static_cast<const void*>(&features) : &messengerInfo;
+    m_instance = createBareInstance(m_validate, m_validate ? chain : nullptr);
     if (!m_validate) return;
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(m_instance, "vkCreateDebugUtilsMessengerEXT"));
@@ -256,8 +271,23 @@ void Context::createDevice() {
     // LocalSizeId for workgroup sizes.
     VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     features13.maintenance4 = VK_TRUE;
+    // The raster pass (host/passes/shadow_volume_pass.h): dynamic rendering instead of render
+    // pass objects, synchronization2 barriers; both core in 1.3 and required of every device.
+    features13.dynamicRendering = VK_TRUE;
+    features13.synchronization2 = VK_TRUE;
+    VkPhysicalDeviceFeatures supported{};
+    vkGetPhysicalDeviceFeatures(m_physicalDevice, &supported);
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = &features13;
+    // Shadow volumes extruded to infinity land exactly on the far plane; depth clamp keeps them
+    // from being clipped there (optional: the pass falls back to a slightly-less-than-infinite
+    // projection).
+    m_depthClamp = supported.depthClamp == VK_TRUE;
+    features.features.depthClamp = supported.depthClamp;
+    // Optional: the geometry-shader variant of the shadow volumes (measured against the compute
+    // variant in docs/benchmarks.md).
+    m_geometryShader = supported.geometryShader == VK_TRUE;
+    features.features.geometryShader = supported.geometryShader;
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.pNext = &features;
     info.queueCreateInfoCount = 1;

@@ -16,6 +16,7 @@ namespace vkp::vk {
 struct ContextOptions {
     bool validate = false;      // enable VK_LAYER_KHRONOS_validation; every message is an error
     std::string device;         // "" = automatic; a decimal index or a substring of the name
+    bool synchronizationValidation = false;  // with validate: also the layer's hazard tracking
 };
 
 struct DeviceInfo {
@@ -44,6 +45,8 @@ public:
     const VkPhysicalDeviceProperties& properties() const { return m_properties; }
     const std::string& deviceName() const { return m_deviceName; }
     bool validationEnabled() const { return m_validate; }
+    bool depthClampEnabled() const { return m_depthClamp; }
+    bool geometryShaderEnabled() const { return m_geometryShader; }
 
     // Validation messages (warnings and errors) seen so far; tests assert this stays empty.
     std::vector<std::string> validationMessages() const;
@@ -65,11 +68,13 @@ private:
         const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
 
     void destroy();
-    void createInstance();
+    void createInstance(bool synchronizationValidation);
     void pickPhysicalDevice(const std::string& request);
     void createDevice();
 
     bool m_validate = false;
+    bool m_depthClamp = false;
+    bool m_geometryShader = false;
     VkInstance m_instance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT m_messenger = VK_NULL_HANDLE;
     VkPhysicalDevice m_physicalDevice = VK_NULL_HANDLE;

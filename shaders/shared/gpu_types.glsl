@@ -104,6 +104,11 @@ INLINE vec3 cameraRayDirection(GpuCamera cam, uint width, uint height, vec2 pixe
 }
 
 const uint kPathFlagNoDirectLightSampling = 1u;  // BSDF sampling only (test/reference mode)
+// --direct raster (host/passes/raster_direct_pass.h) covers the first vertex's direct light of:
+const uint kPathFlagRasterDeltaLights = 2u;  // point, spot and directional lights
+const uint kPathFlagRasterAreaLights = 4u;   // emissive triangles (as point samples)
+// Camera rays through pixel centres, no jitter: the raster term is evaluated there (tests).
+const uint kPathFlagPixelCentres = 8u;
 
 // Push constants of pathtrace.comp.
 struct PathTraceParams {

@@ -1,0 +1,17 @@
+// The lights the raster pass covers, as GpuLight records: point, spot and directional lights as
+// they are, and every emissive triangle as `areaSamples` point samples (kLightAreaSample) spread
+// over it by a Hammersley set (stratified in both dimensions), each carrying 1/areaSamples of the
+// triangle's emission. With areaSamples = 0 the emissive triangles stay with the compute passes.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "passes/scene_buffers.h"
+#include "shared/shadow_volume.glsl"
+
+namespace vkp {
+
+std::vector<gpu::GpuLight> buildRasterLights(const SceneArrays& arrays, uint32_t areaSamples);
+
+}  // namespace vkp

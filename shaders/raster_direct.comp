@@ -1,0 +1,55 @@
+// Lighting pass of the raster direct light (host/passes/raster_direct_pass.h): for the visible
+// point of each pixel centre, the BSDF-weighted contribution of each light of one mask pass times
+// its mask channel, in float, added to the direct buffer (summed over passes). This is exactly the
+// expectation of the path tracer's next-event estimate at the first vertex for those lights, with
+// the shadow ray replaced by the stencil result (Dmitriev et al. 2002, section 6.1).
+// Reads: scene (bindings 0..7), raster lights (8), masks (9). Writes: direct (10, vec4 per pixel).
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "scene_access.glsl"
+#include "shared/halton.glsl"
+#include "camera_and_lights.glsl"
+#include "raster_light_access.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(std430, set = 0, binding = 8) readonly buffer RasterLights { GpuLight rasterLights[]; };
+layout(std430, set = 0, binding = 9) readonly buffer Masks { uint masks[]; };
+layout(std430, set = 0, binding = 10) buffer Direct { vec4 direct[]; };
+layout(push_constant) uniform Push { RasterDirectParams params; };
+
+void main() {
+    uint pixel = gl_GlobalInvocationID.x;
+    if (pixel >= params.width * params.height) return;
+    uint px = pixel % params.width;
+    uint py = pixel / params.width;
+    vec3 dir = cameraRayDirection(params.camera, params.width, params.height, vec2(float(px) + 0.5f, float(py) + 0.5f));
+    float tHit;
+    uint tri;
+    float b1;
+    float b2;
+    if (!traceClosest(params.camera.position, dir, kInfinity, tHit, tri, b1, b2)) return;
+    SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
+    GpuMaterial material = materials[hit.material];
+    BsdfParams bsdf = bsdfParamsAt(material, hit.uv);
+    // The same shading frame as pathtrace.comp's first vertex.
+    vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
+    vec3 t;
+    vec3 b;
+    orthonormalBasis(n, t, b);
+    vec3 wo = toLocal(-dir, t, b, n);
+    if (wo.z <= 0.0f) wo.z = 1.0e-4f;
+    vec3 sideNormal = hit.frontFace ? hit.geometricNormal : -hit.geometricNormal;
+
+    uint mask = masks[params.maskOffset + pixel];
+    vec3 sum = vec3(0.0f);
+    for (uint k = 0u; k < params.lightCount; ++k) {
+        if (((mask >> (8u * k)) & 0xffu) == 0u) continue;  // in this light's shadow volume
+        LightSample ls = rasterLightSample(rasterLights[params.firstLight + k], hit.position);
+        vec3 wi = toLocal(ls.wi, t, b, n);
+        if (wi.z <= 0.0f || dot(ls.wi, sideNormal) <= 0.0f) continue;  // light behind the surface
+        sum += evalBsdf(bsdf, wo, wi) * wi.z * ls.radiance;
+    }
+    direct[pixel] += vec4(sum, 0.0f);
+}
