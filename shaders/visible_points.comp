@@ -20,6 +20,7 @@ layout(local_size_x = 64) in;
 
 layout(std430, set = 0, binding = 8) buffer Film { vec4 film[]; };  // rgb sum, sample count
 layout(std430, set = 0, binding = 9) writeonly buffer VisiblePoints { GpuVisiblePoint visiblePoints[]; };
+layout(std430, set = 0, binding = 10) readonly buffer RasterDirect { vec4 rasterDirect[]; };  // --direct raster
 
 layout(push_constant) uniform Push { VisiblePointParams params; };
 
@@ -31,6 +32,7 @@ void main() {
     if (pixel >= params.width * params.height) return;
     Sampler rng = makeSampler(params.sampleIndex, hashCombine(hashCombine(params.seed, kVisiblePointStream), pixel));
     vec2 jitter = nextSample2(rng);
+    if ((params.flags & kPathFlagPixelCentres) != 0u) jitter = vec2(0.5f);
     vec3 origin = params.camera.position;
     vec3 dir = cameraRayDirection(params.camera, params.width, params.height,
                                   vec2(float(pixel % params.width) + jitter.x, float(pixel / params.width) + jitter.y));
@@ -65,6 +67,8 @@ void main() {
         // weighted against that vertex's next-event estimate.
         if (emitsTowards(material, hit.frontFace)) {
             float weight = lastDelta ? 1.0f : emissionMisWeight(hit, dir, tHit, lastPdf);
+            // The raster term holds all of a covered area light's light at the first vertex.
+            if (depth == 1u && !lastDelta && (params.flags & kPathFlagRasterAreaLights) != 0u) weight = 0.0f;
             radiance += throughput * emittedRadiance(material, hit.uv) * weight;
         }
 
@@ -76,8 +80,13 @@ void main() {
         vec3 wo = toLocal(-dir, t, b, n);
         if (wo.z <= 0.0f) wo.z = 1.0e-4f;
 
+        // --direct raster: the first vertex's covered lights come from the raster pass.
+        uint skip = 0u;
+        if (depth == 0u && (params.flags & kPathFlagRasterDeltaLights) != 0u)
+            skip |= (1u << kLightPoint) | (1u << kLightSpot) | (1u << kLightDirectional);
+        if (depth == 0u && (params.flags & kPathFlagRasterAreaLights) != 0u) skip |= 1u << kLightTriangle;
         if (storesPhotons(bsdf)) {
-            radiance += throughput * directLight(hit, bsdf, wo, t, b, n, params.lightCount, false, rng);
+            radiance += throughput * directLightSkipping(hit, bsdf, wo, t, b, n, params.lightCount, false, skip, rng);
             vp.position = hit.position;
             vp.material = hit.material;
             vp.throughput = throughput;
@@ -91,7 +100,7 @@ void main() {
         if (depth == params.maxSpecularDepth) break;
         // A polished metal: direct light by next-event estimation (MIS), then on by its lobe.
         if (!specularIsDelta(bsdf))
-            radiance += throughput * directLight(hit, bsdf, wo, t, b, n, params.lightCount, true, rng);
+            radiance += throughput * directLightSkipping(hit, bsdf, wo, t, b, n, params.lightCount, true, skip, rng);
         vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
         BsdfSample bs = sampleBsdf(bsdf, wo, hit.frontFace, true, u);
         if (bs.lobe == kLobeNone) break;
@@ -103,6 +112,7 @@ void main() {
         if ((bs.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)
             mediumSigma = hit.frontFace ? material.attenuationCoeff : vec3(0.0f);
     }
+    if ((params.flags & (kPathFlagRasterDeltaLights | kPathFlagRasterAreaLights)) != 0u) radiance += rasterDirect[pixel].rgb;
     if (any(isnan(radiance)) || any(isinf(radiance))) radiance = vec3(0.0f);
     film[pixel] += vec4(radiance, 1.0f);
     visiblePoints[pixel] = vp;

@@ -273,8 +273,7 @@ TEST(Cli, RasterDirectRendersAndReportsItsPass) {
 
 TEST(Cli, BadDirectSettingsExitWithTwo) {
     for (const std::string args : {"--direct rasterized", "--direct raster --area-light-samples -1",
-                                   "--direct raster --area-light-samples 5000",
-                                   "--direct raster --integrator photon"}) {
+                                   "--direct raster --area-light-samples 5000"}) {
         const RunResult r = runVkphoton("render " + kBox + " --quiet --spp 1 --width 8 --height 8 " + args + " -o " +
                                         (tempDir("bad-direct") / "x.exr").string());
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;

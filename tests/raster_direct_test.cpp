@@ -136,7 +136,13 @@ TEST_F(RasterDirect, CornellBoxSamePictureAsTraced) {
 
 // All bounces: the raster direct term plus the path tracer's remaining terms estimate the same
 // image as the traced reference, for point lights and for the Cornell box's area light.
+// Every integrator that takes --direct raster (path, guided, photon two-pass and progressive):
+// the same mean with the raster direct light as with next-event estimation.
 TEST_F(RasterDirect, FullRenderMeansAgree) {
+    struct Config { const char* name; Integrator integrator; bool progressive; };
+    for (const Config& config : {Config{"path", Integrator::Path, false}, Config{"guided", Integrator::Guided, false},
+                                 Config{"photon", Integrator::Photon, false},
+                                 Config{"photon --progressive", Integrator::Photon, true}})
     for (int sceneIndex = 0; sceneIndex < 2; ++sceneIndex) {
         const Scene scene = sceneIndex == 0 ? pointLitScene()
                                             : loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-box.gltf");
@@ -146,13 +152,19 @@ TEST_F(RasterDirect, FullRenderMeansAgree) {
         for (int mode = 0; mode < 2; ++mode)
             for (int seed = 0; seed < kSeeds; ++seed) {
                 RenderSettings s;
+                s.integrator = config.integrator;
                 s.width = 32;
                 s.height = 32;
-                s.samplesPerPixel = 32;
+                s.samplesPerPixel = config.progressive ? 8 : 32;
                 s.seed = 300 + seed;
                 s.maxDepth = 4;
                 s.pixelCentres = true;
                 s.areaLightSamples = 64;
+                s.guide.photons = 10000;
+                s.photon.globalPaths = config.progressive ? 10000 : 20000;
+                s.photon.causticPaths = 0;
+                s.photon.gatherRays = 1;
+                s.photon.progressive = config.progressive;
                 s.direct = mode == 0 ? DirectLight::Raster : DirectLight::Traced;
                 const double m = meanLuminance(renderer.render(s).image);
                 sum[mode] += m;
@@ -164,10 +176,10 @@ TEST_F(RasterDirect, FullRenderMeansAgree) {
             mean[mode] = sum[mode] / kSeeds;
             se2 += std::max(0.0, (sumSq[mode] - kSeeds * mean[mode] * mean[mode]) / (kSeeds - 1)) / kSeeds;
         }
-        fmt::print("scene {}: mean raster {:.5g}, traced {:.5g}, standard error {:.3g}\n", sceneIndex, mean[0], mean[1],
-                   std::sqrt(se2));
+        fmt::print("{}, scene {}: mean raster {:.5g}, traced {:.5g}, standard error {:.3g}\n", config.name, sceneIndex,
+                   mean[0], mean[1], std::sqrt(se2));
         // 5 standard errors plus 1 % for the area light's point-sample approximation.
-        EXPECT_NEAR(mean[0], mean[1], 5.0 * std::sqrt(se2) + 0.01 * mean[1]) << "scene " << sceneIndex;
+        EXPECT_NEAR(mean[0], mean[1], 5.0 * std::sqrt(se2) + 0.01 * mean[1]) << config.name << ", scene " << sceneIndex;
     }
 }
 

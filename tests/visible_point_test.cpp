@@ -27,7 +27,8 @@ VisiblePointRun runVisiblePoints(const Scene& scene, uint32_t size, uint32_t sam
     const uint64_t pixels = uint64_t(size) * size;
     vk::Buffer film(context, "film", pixels * sizeof(glm::vec4), vk::kStorageUsage);
     vk::Buffer points(context, "visible points", pixels * sizeof(gpu::GpuVisiblePoint), vk::kStorageUsage);
-    VisiblePointPass pass(context, buffers, film, points);
+    vk::Buffer noRasterDirect(context, "no raster direct", 16, vk::kStorageUsage);
+    VisiblePointPass pass(context, buffers, film, points, noRasterDirect);
     gpu::VisiblePointParams params{};
     params.camera = makeGpuCamera(chooseCamera(scene, -1), size, size);
     params.width = size;

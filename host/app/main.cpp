@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
                           "path (path tracing, the reference), photon (photon mapping) or guided (photon-guided path tracing)")
         ->transform(CLI::CheckedTransformer(integrators, CLI::ignore_case))->default_str("path");
     const std::map<std::string, DirectLight> directs{{"traced", DirectLight::Traced}, {"raster", DirectLight::Raster}};
-    renderCmd->add_option("--direct", s.direct, "Direct light at the first vertex: traced (next-event estimation, the reference) or raster (stencil shadow volumes; path and guided integrators)")
+    renderCmd->add_option("--direct", s.direct, "Direct light at the first vertex: traced (next-event estimation, the reference) or raster (stencil shadow volumes)")
         ->transform(CLI::CheckedTransformer(directs, CLI::ignore_case))->default_str("traced");
     renderCmd->add_option("--area-light-samples", s.areaLightSamples, "--direct raster: point samples per emissive triangle (0: emissive triangles stay traced)")
         ->capture_default_str()->check(CLI::Range(0u, 4096u));

@@ -11,8 +11,9 @@ namespace vkp {
 
 class VisiblePointPass {
 public:
+    // `rasterDirect`: the raster pass's direct light (any buffer when the flags do not ask for it).
     VisiblePointPass(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& film,
-                     const vk::Buffer& visiblePoints);
+                     const vk::Buffer& visiblePoints, const vk::Buffer& rasterDirect);
 
     void record(VkCommandBuffer cmd, const gpu::VisiblePointParams& params) const;
 

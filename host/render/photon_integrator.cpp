@@ -8,6 +8,7 @@
 #include "passes/radiance_photons.h"
 #include "passes/scene_pass.h"
 #include "passes/visible_point_pass.h"
+#include "render/raster_direct.h"
 #include "render/photon_map.h"
 #include "render/sample_loop.h"
 #include "shared/photon_render.glsl"
@@ -33,7 +34,8 @@ void checkSettings(const PhotonRenderSettings& p, float radius) {
     if (!(p.alpha > 0.0f && p.alpha < 1.0f)) throw InputError(fmt::format("alpha {}: must lie in (0, 1)", p.alpha));
 }
 
-gpu::VisiblePointParams visiblePointParams(const RenderSettings& s, const Scene& scene, uint32_t lightCount) {
+gpu::VisiblePointParams visiblePointParams(const RenderSettings& s, const Scene& scene, uint32_t lightCount,
+                                           const RasterDirectLight& raster) {
     gpu::VisiblePointParams params{};
     params.camera = makeGpuCamera(chooseCamera(scene, s.cameraIndex), s.width, s.height);
     params.width = s.width;
@@ -41,6 +43,7 @@ gpu::VisiblePointParams visiblePointParams(const RenderSettings& s, const Scene&
     params.seed = s.seed;
     params.maxSpecularDepth = kMaxSpecularDepth;
     params.lightCount = lightCount;
+    params.flags = raster.pathFlags() | (s.pixelCentres ? gpu::kPathFlagPixelCentres : 0u);
     return params;
 }
 
@@ -132,7 +135,9 @@ RenderResult PhotonIntegrator::renderTwoPass(const RenderSettings& settings, flo
     const uint64_t pixels = uint64_t(settings.width) * settings.height;
     vk::Buffer film(m_context, "film", pixels * sizeof(glm::vec4), vk::kStorageUsage);
     vk::Buffer points(m_context, "visible points", pixels * sizeof(gpu::GpuVisiblePoint), vk::kStorageUsage);
-    VisiblePointPass visiblePass(m_context, m_buffers, film, points);
+    const RasterDirectLight raster(m_context, m_scene, m_arrays, m_buffers, settings);
+    raster.addStats(stats);
+    VisiblePointPass visiblePass(m_context, m_buffers, film, points, raster.direct());
     ScenePass gatherPass(m_context, "final_gather.comp", m_buffers,
                          {&film, &points, &gatherGrid.cellStart(), &gatherGrid.photons()},
                          sizeof(gpu::FinalGatherParams));
@@ -143,7 +148,7 @@ RenderResult PhotonIntegrator::renderTwoPass(const RenderSettings& settings, flo
             std::vector<const vk::Buffer*>{&film, &points, &causticMap->grid().cellStart(), &causticMap->grid().photons()},
             sizeof(gpu::CausticEstimateParams));
 
-    gpu::VisiblePointParams vpParams = visiblePointParams(settings, m_scene, m_buffers.lightCount());
+    gpu::VisiblePointParams vpParams = visiblePointParams(settings, m_scene, m_buffers.lightCount(), raster);
     gpu::CausticEstimateParams causticParams{};
     if (causticMap) causticParams.grid = causticMap->grid().view(causticMap->photonPower());
     causticParams.width = settings.width;
@@ -189,7 +194,7 @@ RenderResult PhotonIntegrator::renderTwoPass(const RenderSettings& settings, flo
         });
     });
     stats.stopReason = loop.stopReason;
-    stats.renderSeconds = loop.seconds + stats.photonSeconds;
+    stats.renderSeconds = loop.seconds + stats.photonSeconds + stats.rasterSeconds;
     stats.samplesPerPixel = loop.samplesDone;
     result.image = resolveFilm(film.download<glm::vec4>(), settings.width, settings.height);
     return result;
@@ -218,10 +223,12 @@ RenderResult PhotonIntegrator::renderProgressive(const RenderSettings& settings,
     std::vector<gpu::SppmPixel> initial(pixels);
     for (auto& px : initial) px.radius2 = radius * radius;
     vk::Buffer sppm = vk::makeStorageBuffer(m_context, "sppm pixels", initial);
-    VisiblePointPass visiblePass(m_context, m_buffers, film, points);
+    const RasterDirectLight raster(m_context, m_scene, m_arrays, m_buffers, settings);
+    raster.addStats(stats);
+    VisiblePointPass visiblePass(m_context, m_buffers, film, points, raster.direct());
     ScenePass updatePass(m_context, "sppm_update.comp", m_buffers,
                          {&sppm, &points, &map.grid().cellStart(), &map.grid().photons()}, sizeof(gpu::SppmParams));
-    gpu::VisiblePointParams vpParams = visiblePointParams(settings, m_scene, m_buffers.lightCount());
+    gpu::VisiblePointParams vpParams = visiblePointParams(settings, m_scene, m_buffers.lightCount(), raster);
     gpu::SppmParams sppmParams{};
     sppmParams.grid = map.grid().view(map.photonPower());
     sppmParams.width = settings.width;
@@ -246,7 +253,7 @@ RenderResult PhotonIntegrator::renderProgressive(const RenderSettings& settings,
         });
     });
     stats.stopReason = loop.stopReason;
-    stats.renderSeconds = loop.seconds;
+    stats.renderSeconds = loop.seconds + stats.rasterSeconds;
     stats.samplesPerPixel = loop.samplesDone;
 
     // Direct light (the film's mean) plus tau / (P pi R^2).

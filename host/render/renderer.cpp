@@ -6,9 +6,8 @@
 #include <fmt/format.h>
 
 #include "passes/path_trace_pass.h"
-#include "passes/raster_direct_pass.h"
-#include "passes/raster_lights.h"
 #include "render/photon_integrator.h"
+#include "render/raster_direct.h"
 #include "render/path_guide.h"
 #include "render/sample_loop.h"
 #include "util/errors.h"
@@ -51,9 +50,6 @@ RenderResult Renderer::render(const RenderSettings& settings, const ProgressCall
         throw InputError("the image must be at least 1x1 pixels");
     RenderResult result;
     if (settings.integrator == Integrator::Photon) {
-        // The photon integrator's visible-point NEE does not skip raster-covered lights yet.
-        if (settings.direct == DirectLight::Raster)
-            throw InputError("--direct raster works with --integrator path or guided, not photon yet");
         PhotonIntegrator integrator(m_context, m_scene, m_arrays, m_buffers);
         result = integrator.render(settings, progress, stop);
     } else {
@@ -72,29 +68,9 @@ RenderResult Renderer::renderPath(const RenderSettings& settings, const Progress
     RenderResult result;
     RenderStats& stats = result.stats;
 
-    // --direct raster: the direct light of the covered lights at the first vertex, once per frame
-    // (it is deterministic); every sample adds it.
-    const bool raster = settings.direct == DirectLight::Raster;
-    std::unique_ptr<RasterDirectPass> rasterPass;
-    vk::Buffer noRasterDirect;
-    uint32_t rasterFlags = 0;
-    if (raster) {
-        const auto lights = buildRasterLights(m_arrays, settings.areaLightSamples);
-        rasterPass = std::make_unique<RasterDirectPass>(m_context, m_arrays, m_buffers, lights, settings.width,
-                                                        settings.height);
-        const auto start = Clock::now();
-        m_context.submitAndWait([&](VkCommandBuffer cmd) {
-            rasterPass->record(cmd, camera, rasterNearPlane(m_scene.bounds));
-        });
-        stats.rasterSeconds = secondsSince(start);
-        stats.rasterLights = lights.size();
-        rasterFlags = gpu::kPathFlagRasterDeltaLights |
-                      (settings.areaLightSamples > 0 ? gpu::kPathFlagRasterAreaLights : 0u);
-    } else {
-        noRasterDirect = vk::Buffer(m_context, "no raster direct", 16, vk::kStorageUsage);
-    }
-    stats.direct = raster ? "raster" : "traced";
-    const vk::Buffer& rasterDirect = raster ? rasterPass->direct() : noRasterDirect;
+    const RasterDirectLight raster(m_context, m_scene, m_arrays, m_buffers, settings);
+    raster.addStats(stats);
+    const vk::Buffer& rasterDirect = raster.direct();
 
     std::unique_ptr<PathGuide> guide;
     if (settings.integrator == Integrator::Guided)
@@ -111,7 +87,7 @@ RenderResult Renderer::renderPath(const RenderSettings& settings, const Progress
     params.seed = settings.seed;
     params.maxDepth = settings.maxDepth;
     params.lightCount = m_buffers.lightCount();
-    params.flags = (settings.nextEventEstimation ? 0u : gpu::kPathFlagNoDirectLightSampling) | rasterFlags |
+    params.flags = (settings.nextEventEstimation ? 0u : gpu::kPathFlagNoDirectLightSampling) | raster.pathFlags() |
                    (settings.pixelCentres ? gpu::kPathFlagPixelCentres : 0u);
 
     m_context.submitAndWait([&](VkCommandBuffer cmd) {

@@ -34,8 +34,9 @@ struct VisiblePointParams {
     uint seed;
     uint maxSpecularDepth;  // delta bounces followed before giving up on a path
     uint lightCount;
+    uint flags;             // kPathFlagRaster* (the raster pass covers the first vertex's direct
+                            // light of those lights), kPathFlagPixelCentres
     uint pad0;
-    uint pad1;
 };
 STATIC_ASSERT_SIZE(VisiblePointParams, 96)
 
