@@ -97,6 +97,14 @@ int runRender(const RenderCommandOptions& options) {
                    scene.triangles.size(), context.deviceName(), context.validationEnabled() ? " with validation" : "");
     installInterruptHandler();
     Renderer renderer(context, scene);
+    const RenderSettings& rs = options.settings;
+    if (!options.quiet && rs.integrator == Integrator::Photon)
+        fmt::print(stderr, "tracing {} photon paths{} ...\n",
+                   rs.photon.progressive ? uint64_t(rs.photon.globalPaths) * rs.samplesPerPixel
+                                         : uint64_t(rs.photon.globalPaths) + rs.photon.causticPaths,
+                   rs.photon.progressive ? fmt::format(" ({} per sample)", rs.photon.globalPaths) : "");
+    if (!options.quiet && rs.integrator == Integrator::Guided)
+        fmt::print(stderr, "tracing {} guiding photon paths ...\n", rs.guide.photons);
     ProgressReporter progress("render", options.quiet);
     RenderResult result = renderer.render(
         options.settings,
