@@ -14,8 +14,9 @@ namespace {
 
 // Gathers search up to this many times the map's even-spread radius for k photons.
 constexpr float kGuideRadiusFactor = 2.0f;
-// Cache cells are twice the even-spread radius: about 4k/pi photons on a flat cell.
-constexpr float kCacheCellFactor = 2.0f;
+// Cache cells are three times the even-spread radius: about 9k/pi photons on a flat cell. Grid
+// noise, not spatial detail, limits the cache (docs/benchmarks.md: factors 1 to 4 measured).
+constexpr float kCacheCellFactor = 3.0f;
 
 }  // namespace
 
