@@ -7,26 +7,8 @@
 #include "shared/shadow_volume.glsl"
 
 LightSample rasterLightSample(GpuLight light, vec3 x) {
-    LightSample ls;
-    ls.delta = true;
-    ls.pdf = 1.0f;
-    if (light.type == kLightDirectional) {
-        ls.wi = -light.direction;
-        ls.distance = kInfinity;
-        ls.position = vec3(0.0f);
-        ls.radiance = light.intensity;
-        return ls;
-    }
-    vec3 d = light.position - x;
-    float dist2 = dot(d, d);
-    ls.position = light.position;
-    ls.distance = sqrt(dist2);
-    ls.wi = d / ls.distance;
-    ls.radiance = light.intensity / dist2;
-    if (light.type == kLightSpot) {
-        float t = clamp(dot(-ls.wi, light.direction) * light.spotScale + light.spotOffset, 0.0f, 1.0f);
-        ls.radiance *= t * t;
-    } else if (light.type == kLightAreaSample) {
+    LightSample ls = punctualLightSample(light, x);
+    if (light.type == kLightAreaSample) {
         // A point sample of an emitter radiates intensity * |cos| to the sides it emits to.
         float cosLight = dot(-ls.wi, light.direction);
         if (cosLight < 0.0f && light.spotScale > 0.0f) cosLight = -cosLight;

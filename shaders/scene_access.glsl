@@ -141,41 +141,17 @@ struct LightSample {
     bool delta;
 };
 
-LightSample sampleLight(uint index, vec3 x, vec2 u) {
-    GpuLight light = lights[index];
+// Incident light at x from a directional, point or spot light (glTF's smooth spot falloff): a
+// delta sample with pdf 1 (callers that choose lights set their selection probability).
+LightSample punctualLightSample(GpuLight light, vec3 x) {
     LightSample ls;
-    ls.delta = light.type != kLightTriangle;
-    ls.pdf = light.selectPdf;
-    ls.radiance = vec3(0.0f);
+    ls.delta = true;
+    ls.pdf = 1.0f;
     if (light.type == kLightDirectional) {
         ls.wi = -light.direction;
         ls.distance = kInfinity;
         ls.position = vec3(0.0f);
         ls.radiance = light.intensity;
-        return ls;
-    }
-    if (light.type == kLightTriangle) {
-        GpuTriangle t = triangles[light.triangle];
-        GpuTriangleShading s = shading[light.triangle];
-        vec2 b = sampleTriangleBarycentrics(u);
-        vec3 p = (1.0f - b.x - b.y) * t.v0.xyz + b.x * t.v1.xyz + b.y * t.v2.xyz;
-        vec3 c = cross(t.v1.xyz - t.v0.xyz, t.v2.xyz - t.v0.xyz);
-        float area = 0.5f * length(c);
-        vec3 ng = c / (2.0f * area);
-        vec3 d = p - x;
-        float dist2 = dot(d, d);
-        ls.position = p;
-        ls.distance = sqrt(dist2);
-        ls.wi = d / ls.distance;
-        float cosLight = dot(-ls.wi, ng);
-        GpuMaterial m = materials[s.material];
-        if (!emitsTowards(m, cosLight > 0.0f) || abs(cosLight) < 1.0e-7f || area <= 0.0f) {
-            ls.pdf = 0.0f;
-            return ls;
-        }
-        vec2 uv = (1.0f - b.x - b.y) * s.uv01.xy + b.x * s.uv01.zw + b.y * s.uv2;
-        ls.radiance = emittedRadiance(m, uv);
-        ls.pdf = light.selectPdf / area * dist2 / abs(cosLight);
         return ls;
     }
     vec3 d = light.position - x;
@@ -188,6 +164,41 @@ LightSample sampleLight(uint index, vec3 x, vec2 u) {
         float t = clamp(dot(-ls.wi, light.direction) * light.spotScale + light.spotOffset, 0.0f, 1.0f);
         ls.radiance *= t * t;
     }
+    return ls;
+}
+
+LightSample sampleLight(uint index, vec3 x, vec2 u) {
+    GpuLight light = lights[index];
+    if (light.type != kLightTriangle) {
+        LightSample ls = punctualLightSample(light, x);
+        ls.pdf = light.selectPdf;
+        return ls;
+    }
+    LightSample ls;
+    ls.delta = false;
+    ls.pdf = light.selectPdf;
+    ls.radiance = vec3(0.0f);
+    GpuTriangle t = triangles[light.triangle];
+    GpuTriangleShading s = shading[light.triangle];
+    vec2 b = sampleTriangleBarycentrics(u);
+    vec3 p = (1.0f - b.x - b.y) * t.v0.xyz + b.x * t.v1.xyz + b.y * t.v2.xyz;
+    vec3 c = cross(t.v1.xyz - t.v0.xyz, t.v2.xyz - t.v0.xyz);
+    float area = 0.5f * length(c);
+    vec3 ng = c / (2.0f * area);
+    vec3 d = p - x;
+    float dist2 = dot(d, d);
+    ls.position = p;
+    ls.distance = sqrt(dist2);
+    ls.wi = d / ls.distance;
+    float cosLight = dot(-ls.wi, ng);
+    GpuMaterial m = materials[s.material];
+    if (!emitsTowards(m, cosLight > 0.0f) || abs(cosLight) < 1.0e-7f || area <= 0.0f) {
+        ls.pdf = 0.0f;
+        return ls;
+    }
+    vec2 uv = (1.0f - b.x - b.y) * s.uv01.xy + b.x * s.uv01.zw + b.y * s.uv2;
+    ls.radiance = emittedRadiance(m, uv);
+    ls.pdf = light.selectPdf / area * dist2 / abs(cosLight);
     return ls;
 }
 
