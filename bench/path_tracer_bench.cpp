@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "median.h"
 #include "passes/scene_buffers.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
@@ -30,11 +31,6 @@ struct RayPush {
     vkp::gpu::GpuCamera camera;
     uint32_t width, height, mode, seed;
 };
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 }  // namespace
 
@@ -76,7 +72,7 @@ int main(int argc, char** argv) {
                 context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, vk::groupCount(rayPixels, 64), push); });
                 if (r > 0) times.push_back(std::chrono::duration<double>(Clock::now() - start).count());
             }
-            return median(times);
+            return bench::median(times);
         };
         const double cameraSeconds = timeMode(0);
         const double bounceSeconds = timeMode(1);
@@ -94,7 +90,7 @@ int main(int argc, char** argv) {
         settings.samplesPerPixel = spp;
         std::vector<double> renderTimes;
         for (uint32_t r = 0; r < std::max(1u, repeat / 2); ++r) renderTimes.push_back(renderer.render(settings).stats.renderSeconds);
-        const double pathsPerSecond = pixels * spp / median(renderTimes);
+        const double pathsPerSecond = pixels * spp / bench::median(renderTimes);
 
         fmt::print("scene: {} ({} triangles), rays at {}x{}, path tracer at {}x{}, device: {}\n", scenePath,
                    scene.triangles.size(), raySize, raySize, width, height, context.deviceName());

@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "median.h"
 #include "image/metrics.h"
 #include "passes/scene_buffers.h"
 #include "reference_image.h"
@@ -39,11 +40,6 @@ struct GatherPush {
     uint32_t pad[3];
 };
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
 
 void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_t repeat) {
     const SceneArrays arrays = buildSceneArrays(scene);
@@ -62,9 +58,9 @@ void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_
     fmt::print("\n### Photon map build ({} paths, {} photons stored, {} chunk(s))\n\n", paths, stats.stored,
                stats.chunks);
     fmt::print("| measure | value |\n|---|---|\n");
-    fmt::print("| tracing + compaction | {:.3f} s ({:.2f} M paths/s) |\n", median(trace), paths / median(trace) / 1e6);
+    fmt::print("| tracing + compaction | {:.3f} s ({:.2f} M paths/s) |\n", bench::median(trace), paths / bench::median(trace) / 1e6);
     fmt::print("| grid build (count, scan, scatter, sort, copy) | {:.3f} s per million photons |\n",
-               median(grid) / millions);
+               bench::median(grid) / millions);
 
     // Gathers at every 8th photon of the map: where the scene's surfaces are.
     const uint32_t stride = 8;
@@ -85,7 +81,7 @@ void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_
             context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, vk::groupCount(queries, 64), push); });
             if (r > 0) times.push_back(secondsSince(start));
         }
-        fmt::print("| {} | {:.2f} M |\n", m.name, queries / median(times) / 1e6);
+        fmt::print("| {} | {:.2f} M |\n", m.name, queries / bench::median(times) / 1e6);
     }
 }
 

@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "median.h"
 #include "passes/raster_direct_pass.h"
 #include "passes/raster_lights.h"
 #include "passes/scene_buffers.h"
@@ -30,11 +31,6 @@ extern const vk::ShaderEntry* const vkphoton_bench_shaders_table[];
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 // Point lights spread through the middle of the bounds (deterministic).
 std::vector<vkp::gpu::GpuLight> pointLights(const vkp::Bounds& bounds, uint32_t count) {
@@ -132,8 +128,8 @@ int main(int argc, char** argv) {
                 maxDiff = std::max<double>(maxDiff, glm::length(glm::vec3(a[i]) - glm::vec3(b[i])));
                 maxDiffGs = std::max<double>(maxDiffGs, glm::length(glm::vec3(g[i]) - glm::vec3(b[i])));
             }
-            const double rasterMs = 1e3 * median(rasterTimes), tracedMs = 1e3 * median(tracedTimes);
-            const double gsMs = gsTimes.empty() ? 0.0 : 1e3 * median(gsTimes);
+            const double rasterMs = 1e3 * bench::median(rasterTimes), tracedMs = 1e3 * bench::median(tracedTimes);
+            const double gsMs = gsTimes.empty() ? 0.0 : 1e3 * bench::median(gsTimes);
             fmt::print("| {} | {:.1f} | {:.1f} | {:.1f} | {:.2f} | {:.3g} / {:.3g} |\n", count, rasterMs, gsMs, tracedMs,
                        tracedMs / rasterMs, maxDiff, maxDiffGs);
         }
