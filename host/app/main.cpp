@@ -38,10 +38,10 @@ int main(int argc, char** argv) {
         {"path", Integrator::Path}, {"photon", Integrator::Photon}, {"guided", Integrator::Guided}};
     renderCmd->add_option("--integrator", s.integrator,
                           "path (path tracing, the reference), photon (photon mapping) or guided (photon-guided path tracing)")
-        ->transform(CLI::CheckedTransformer(integrators, CLI::ignore_case))->default_str("path");
+        ->transform(CLI::CheckedTransformer(integrators, CLI::ignore_case))->option_text("path|photon|guided [path]");
     const std::map<std::string, DirectLight> directs{{"traced", DirectLight::Traced}, {"raster", DirectLight::Raster}};
     renderCmd->add_option("--direct", s.direct, "Direct light at the first vertex: traced (next-event estimation, the reference) or raster (stencil shadow volumes)")
-        ->transform(CLI::CheckedTransformer(directs, CLI::ignore_case))->default_str("traced");
+        ->transform(CLI::CheckedTransformer(directs, CLI::ignore_case))->option_text("traced|raster [traced]");
     renderCmd->add_option("--area-light-samples", s.areaLightSamples, "--direct raster: point samples per emissive triangle (0: emissive triangles stay traced)")
         ->capture_default_str()->check(CLI::Range(0u, 4096u));
     PhotonRenderSettings& ph = s.photon;
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
         });
     const std::map<std::string, bool> onOff{{"on", true}, {"off", false}};
     guideGroup->add_option("--guide-cache", gd.cache, "on: grids built once per cache cell and normal bin; off: a k-nearest gather at every vertex (the paper)")
-        ->transform(CLI::CheckedTransformer(onOff, CLI::ignore_case))->default_str("on");
+        ->transform(CLI::CheckedTransformer(onOff, CLI::ignore_case))->option_text("on|off [on]");
     guideGroup->add_option("--guide-mix", gd.mix, "Probability of sampling the guiding grid rather than the BSDF (1: the paper's method)")->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
 
     PhotonsCommandOptions photons;
