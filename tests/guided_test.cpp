@@ -12,6 +12,7 @@
 #include "image/metrics.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
+#include "test_scenes.h"
 
 namespace vkp {
 namespace {
@@ -91,6 +92,20 @@ TEST_F(GuidedTest, FiniteReproducibleAndLessNoisyWhereIndirectLightDominates) {
     const double errPath = relativeMse(path, reference);
     std::printf("cornell-ceiling, 32 spp: relMSE guided %.4f, path %.4f\n", errGuided, errPath);
     EXPECT_LT(errGuided, 0.7 * errPath);
+}
+
+// A black furnace: every photon is absorbed at its first hit, so the guiding map (direct photons
+// left out) is empty. The guided tracer then samples the BSDF, and still sees the emission.
+TEST_F(GuidedTest, AnEmptyGuidingMapFallsBackToBsdfSampling) {
+    const Scene scene = test::furnaceScene(0.0f, 1.0f);  // the renderer keeps a reference
+    Renderer renderer(test::gpu(), scene);
+    const RenderSettings s = settingsFor(Integrator::Guided, 16, 4, 3);
+    const RenderResult a = renderer.render(s);
+    test::poisonDeviceMemory(64u << 20);
+    const RenderResult b = renderer.render(s);
+    EXPECT_EQ(a.stats.globalPhotons, 0u);
+    EXPECT_NEAR(meanLuminance(a.image), 1.0, 1e-3);
+    EXPECT_EQ(std::memcmp(a.image.pixels.data(), b.image.pixels.data(), a.image.pixels.size() * sizeof(float)), 0);
 }
 
 }  // namespace

@@ -49,7 +49,9 @@ PathGuide::PathGuide(vk::Context& context, const Scene& scene, const SceneArrays
     m_params.maxRadius = m_searchRadius;
     m_params.gridSize = g.gridU | (g.gridV << 8);
     m_shader = "guided_pathtrace.comp";
-    if (g.cache) {
+    // No indirect photons (a scene lit only directly): nothing to guide by, sample the BSDF.
+    if (m_mapStats.stored == 0) m_params.mix = 0.0f;
+    if (g.cache && m_mapStats.stored > 0) {
         const float cellSize = kCacheCellFactor * m_mapStats.cellSize;
         const double cells = area / (double(cellSize) * cellSize);
         const auto table = static_cast<uint32_t>(std::clamp(2.0 * cells, 1024.0, double(1u << 20)));

@@ -119,7 +119,7 @@ RenderResult PhotonIntegrator::renderTwoPass(const RenderSettings& settings, flo
 
     // Final gathers read precomputed radiance photons unless told to estimate at every hit.
     std::unique_ptr<RadiancePhotons> radiancePhotons;
-    if (p.gatherRays > 0 && p.radiancePhotonStride > 0) {
+    if (p.gatherRays > 0 && p.radiancePhotonStride > 0 && globalStats.stored > 0) {
         const auto start = Clock::now();
         radiancePhotons = std::make_unique<RadiancePhotons>(m_context, globalMap.grid(),
                                                             static_cast<uint32_t>(globalStats.stored),
