@@ -1,14 +1,41 @@
 // vkphoton command line: `render`, `photons` and `devices`. Exit codes: 0 ok, 1 runtime failure, 2 bad usage
 // or bad input.
+#include <cctype>
 #include <cstdio>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include "app/commands.h"
 #include "util/errors.h"
+
+namespace {
+
+// A transform for an option whose value is one of `choices` (case-insensitive), with an error
+// that lists them ("--integrator: 'nope' is not one of path, photon, guided").
+template <typename T>
+CLI::Validator oneOf(const std::vector<std::pair<std::string, T>>& choices) {
+    std::string names;
+    for (const auto& [name, value] : choices) names += (names.empty() ? "" : ", ") + name;
+    return CLI::Validator(
+        [choices, names](std::string& input) -> std::string {
+            std::string lower = input;
+            for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            for (const auto& [name, value] : choices)
+                if (name == lower) {
+                    input = std::to_string(static_cast<int>(value));
+                    return {};
+                }
+            return "'" + input + "' is not one of " + names;
+        },
+        "");
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     using namespace vkp;
@@ -34,14 +61,13 @@ int main(int argc, char** argv) {
     renderCmd->add_flag("--quiet", render.quiet, "No progress output");
     bool bsdfOnly = false;
     renderCmd->add_flag("--no-nee", bsdfOnly, "Disable next-event estimation (BSDF sampling only; a reference)");
-    const std::map<std::string, Integrator> integrators{
-        {"path", Integrator::Path}, {"photon", Integrator::Photon}, {"guided", Integrator::Guided}};
     renderCmd->add_option("--integrator", s.integrator,
                           "path (path tracing, the reference), photon (photon mapping) or guided (photon-guided path tracing)")
-        ->transform(CLI::CheckedTransformer(integrators, CLI::ignore_case))->option_text("path|photon|guided [path]");
-    const std::map<std::string, DirectLight> directs{{"traced", DirectLight::Traced}, {"raster", DirectLight::Raster}};
+        ->transform(oneOf<Integrator>({{"path", Integrator::Path}, {"photon", Integrator::Photon}, {"guided", Integrator::Guided}}))
+        ->option_text("path|photon|guided [path]");
     renderCmd->add_option("--direct", s.direct, "Direct light at the first vertex: traced (next-event estimation, the reference) or raster (stencil shadow volumes)")
-        ->transform(CLI::CheckedTransformer(directs, CLI::ignore_case))->option_text("traced|raster [traced]");
+        ->transform(oneOf<DirectLight>({{"traced", DirectLight::Traced}, {"raster", DirectLight::Raster}}))
+        ->option_text("traced|raster [traced]");
     renderCmd->add_option("--area-light-samples", s.areaLightSamples, "--direct raster: point samples per emissive triangle (0: emissive triangles stay traced)")
         ->capture_default_str()->check(CLI::Range(0u, 4096u));
     PhotonRenderSettings& ph = s.photon;
@@ -68,9 +94,8 @@ int main(int argc, char** argv) {
                 return "expected MxN with M*N between 1 and 64, e.g. 4x16";
             return {};
         });
-    const std::map<std::string, bool> onOff{{"on", true}, {"off", false}};
     guideGroup->add_option("--guide-cache", gd.cache, "on: grids built once per cache cell and normal bin; off: a k-nearest gather at every vertex (the paper)")
-        ->transform(CLI::CheckedTransformer(onOff, CLI::ignore_case))->option_text("on|off [on]");
+        ->transform(oneOf<bool>({{"on", true}, {"off", false}}))->option_text("on|off [on]");
     guideGroup->add_option("--guide-mix", gd.mix, "Probability of sampling the guiding grid rather than the BSDF (1: the paper's method)")->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
 
     PhotonsCommandOptions photons;
