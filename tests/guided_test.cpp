@@ -19,8 +19,6 @@ namespace {
 
 class GuidedTest : public test::GpuTest {};
 
-Scene loadScene(const std::string& name) { return loadGltf(std::string(VKPHOTON_SCENES) + "/" + name + ".gltf"); }
-
 RenderSettings settingsFor(Integrator integrator, uint32_t size, uint32_t spp, uint32_t seed) {
     RenderSettings s;
     s.integrator = integrator;
@@ -59,7 +57,7 @@ void expectSameMean(const MeanAndError& a, const MeanAndError& b, const std::str
 class GuidedUnbiased : public GuidedTest, public ::testing::WithParamInterface<const char*> {};
 
 TEST_P(GuidedUnbiased, MeanMatchesThePathTracer) {
-    const Scene scene = loadScene(GetParam());
+    const Scene scene = test::shippedScene(GetParam());
     Renderer renderer(test::gpu(), scene);
     const MeanAndError path = meanOverSeeds(renderer, settingsFor(Integrator::Path, 24, 64, 0), 5);
     const MeanAndError cached = meanOverSeeds(renderer, settingsFor(Integrator::Guided, 24, 64, 0), 5);
@@ -77,7 +75,7 @@ INSTANTIATE_TEST_SUITE_P(Shipped, GuidedUnbiased, ::testing::Values("cornell-box
                          [](const auto& info) { return std::string(info.param) == "cornell-box" ? "box" : "ceiling"; });
 
 TEST_F(GuidedTest, FiniteReproducibleAndLessNoisyWhereIndirectLightDominates) {
-    const Scene scene = loadScene("cornell-ceiling");
+    const Scene scene = test::shippedScene("cornell-ceiling");
     Renderer renderer(test::gpu(), scene);
     const ImageRgb reference = renderer.render(settingsFor(Integrator::Path, 32, 2048, 1)).image;
     const RenderResult guided = renderer.render(settingsFor(Integrator::Guided, 32, 32, 2));

@@ -14,14 +14,13 @@
 #include "render/photon_map.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
+#include "test_scenes.h"
 #include "shared/photon.glsl"
 
 namespace vkp {
 namespace {
 
 class PhotonIntegratorTest : public test::GpuTest {};
-
-Scene loadScene(const char* name) { return loadGltf(std::string(VKPHOTON_SCENES) + "/" + name + ".gltf"); }
 
 RenderSettings smallRender(Integrator integrator, uint32_t size, uint32_t spp, uint32_t seed) {
     RenderSettings s;
@@ -49,7 +48,7 @@ ImageRgb blockMeans(const ImageRgb& image, uint32_t block) {
 }
 
 TEST_F(PhotonIntegratorTest, ChunkedMapsEqualOneChunkAndCountEveryStoredPhoton) {
-    const Scene scene = loadScene("cornell-glass");
+    const Scene scene = test::shippedScene("cornell-glass");
     const SceneArrays arrays = buildSceneArrays(scene);
     const SceneBuffers buffers(test::gpu(), arrays);
     PhotonMapSettings settings;
@@ -82,7 +81,7 @@ TEST_F(PhotonIntegratorTest, ChunkedMapsEqualOneChunkAndCountEveryStoredPhoton) 
 }
 
 TEST_F(PhotonIntegratorTest, AgreesWithThePathTracerOnTheCornellBox) {
-    const Scene scene = loadScene("cornell-box");
+    const Scene scene = test::shippedScene("cornell-box");
     Renderer renderer(test::gpu(), scene);
     const ImageRgb reference = renderer.render(smallRender(Integrator::Path, 48, 512, 1)).image;
 
@@ -109,7 +108,7 @@ TEST_F(PhotonIntegratorTest, AgreesWithThePathTracerOnTheCornellBox) {
 }
 
 TEST_F(PhotonIntegratorTest, ProgressiveConvergesTowardsThePathTracerAndIsReproducible) {
-    const Scene scene = loadScene("cornell-box");
+    const Scene scene = test::shippedScene("cornell-box");
     Renderer renderer(test::gpu(), scene);
     const ImageRgb reference = renderer.render(smallRender(Integrator::Path, 32, 1024, 1)).image;
     RenderSettings s = smallRender(Integrator::Photon, 32, 4, 5);
@@ -159,7 +158,7 @@ double windowLuminance(const ImageRgb& image, glm::vec2 centre, int halfSize) {
 }
 
 TEST_F(PhotonIntegratorTest, GlassSphereCausticIsInTheImageAndRendersAreReproducible) {
-    const Scene scene = loadScene("cornell-glass");
+    const Scene scene = test::shippedScene("cornell-glass");
     Renderer renderer(test::gpu(), scene);
     RenderSettings s = smallRender(Integrator::Photon, 64, 2, 9);
     s.photon.globalPaths = 50000;

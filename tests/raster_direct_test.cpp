@@ -44,18 +44,25 @@ RenderSettings directOnly(DirectLight direct, uint32_t spp, uint32_t seed) {
 
 class RasterDirect : public test::GpuTest {};
 
-TEST_F(RasterDirect, PointLightsMatchTracedUpToSamplingNoise) {
-    const Scene scene = pointLitScene();
-    Renderer renderer(test::gpu(), scene);
+// Direct light only: the raster image against a 64-spp traced one, compared with the noise of two
+// traced images. Returns the raster image.
+ImageRgb expectRasterMatchesTraced(Renderer& renderer, const char* what) {
     const ImageRgb raster = renderer.render(directOnly(DirectLight::Raster, 1, 1)).image;
     const ImageRgb traced1 = renderer.render(directOnly(DirectLight::Traced, 64, 1)).image;
     const ImageRgb traced2 = renderer.render(directOnly(DirectLight::Traced, 64, 2)).image;
     const double rasterError = relativeMse(raster, traced1);
     const double noise = relativeMse(traced2, traced1);
-    fmt::print("point lights: relMSE(raster, traced) = {:.3g}, relMSE(traced, traced') = {:.3g}\n", rasterError, noise);
-    EXPECT_GT(meanLuminance(raster), 0.01);
+    fmt::print("{}: relMSE(raster, traced) = {:.3g}, relMSE(traced, traced') = {:.3g}\n", what, rasterError, noise);
+    EXPECT_GT(meanLuminance(raster), 0.01) << what;
     // Unbiased: E[raster error] = noise / 2. Allow 30 % over it for the noise of the estimate.
-    EXPECT_LT(rasterError, 0.65 * noise);
+    EXPECT_LT(rasterError, 0.65 * noise) << what;
+    return raster;
+}
+
+TEST_F(RasterDirect, PointLightsMatchTracedUpToSamplingNoise) {
+    const Scene scene = pointLitScene();
+    Renderer renderer(test::gpu(), scene);
+    const ImageRgb raster = expectRasterMatchesTraced(renderer, "point lights");
     // And the raster image is noise-free: rendering it again gives the same bits.
     const ImageRgb again = renderer.render(directOnly(DirectLight::Raster, 1, 7)).image;
     EXPECT_EQ(again.pixels, raster.pixels);
@@ -64,28 +71,9 @@ TEST_F(RasterDirect, PointLightsMatchTracedUpToSamplingNoise) {
 TEST_F(RasterDirect, SpotAndDirectionalLightsMatchTracedUpToSamplingNoise) {
     Scene scene = pointLitScene();
     scene.lights.resize(1);
-    PunctualLight sun;
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f));
-    sun.intensity = glm::vec3(0.5f, 0.4f, 0.3f);
-    scene.lights.push_back(sun);
-    PunctualLight spot;
-    spot.type = LightType::Spot;
-    spot.position = {-1.0f, 3.0f, 1.0f};
-    spot.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.4f));
-    spot.innerConeAngle = 0.3f;
-    spot.outerConeAngle = 0.6f;
-    spot.intensity = glm::vec3(8.0f);
-    scene.lights.push_back(spot);
+    test::addSunAndSpot(scene, glm::vec3(0.5f, 0.4f, 0.3f), glm::vec3(8.0f));
     Renderer renderer(test::gpu(), scene);
-    const ImageRgb raster = renderer.render(directOnly(DirectLight::Raster, 1, 1)).image;
-    const ImageRgb traced1 = renderer.render(directOnly(DirectLight::Traced, 64, 1)).image;
-    const ImageRgb traced2 = renderer.render(directOnly(DirectLight::Traced, 64, 2)).image;
-    const double rasterError = relativeMse(raster, traced1);
-    const double noise = relativeMse(traced2, traced1);
-    fmt::print("spot + directional: relMSE(raster, traced) = {:.3g}, relMSE(traced, traced') = {:.3g}\n", rasterError, noise);
-    EXPECT_GT(meanLuminance(raster), 0.01);
-    EXPECT_LT(rasterError, 0.65 * noise);
+    expectRasterMatchesTraced(renderer, "spot + directional");
 }
 
 TEST_F(RasterDirect, AreaLightSamplesConvergeToTraced) {

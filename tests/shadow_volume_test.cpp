@@ -189,19 +189,7 @@ TEST_F(RasterShadowMask, SpotAndDirectionalLightsMatchRayTracedVisibility) {
     // lighting.
     Scene scene = cubeOnFloor(false);
     scene.lights.clear();
-    PunctualLight sun;
-    sun.type = LightType::Directional;
-    sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f));
-    sun.intensity = glm::vec3(2.0f);
-    scene.lights.push_back(sun);
-    PunctualLight spot;
-    spot.type = LightType::Spot;
-    spot.position = {-1.0f, 3.0f, 1.0f};
-    spot.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.4f));
-    spot.innerConeAngle = 0.3f;
-    spot.outerConeAngle = 0.6f;
-    spot.intensity = glm::vec3(10.0f);
-    scene.lights.push_back(spot);
+    test::addSunAndSpot(scene, glm::vec3(2.0f), glm::vec3(10.0f));
     expectAgreement(compareMaskWithRays(scene, test::lookAt({0.5f, 3.0f, 4.5f}, {0, 0.3f, 0}), 96, 96),
                     "spot and directional lights");
 }

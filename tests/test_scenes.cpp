@@ -1,5 +1,7 @@
 #include "test_scenes.h"
 
+#include "scene/gltf_loader.h"
+
 namespace vkp::test {
 
 Scene furnaceScene(float albedo, float emission) {
@@ -100,6 +102,26 @@ void addPointLight(Scene& scene, glm::vec3 position, glm::vec3 intensity) {
     l.position = position;
     l.intensity = intensity;
     scene.lights.push_back(l);
+}
+
+void addSunAndSpot(Scene& scene, glm::vec3 sunIntensity, glm::vec3 spotIntensity) {
+    PunctualLight sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.3f));
+    sun.intensity = sunIntensity;
+    scene.lights.push_back(sun);
+    PunctualLight spot;
+    spot.type = LightType::Spot;
+    spot.position = {-1.0f, 3.0f, 1.0f};
+    spot.direction = glm::normalize(glm::vec3(0.4f, -1.0f, -0.4f));
+    spot.innerConeAngle = 0.3f;
+    spot.outerConeAngle = 0.6f;
+    spot.intensity = spotIntensity;
+    scene.lights.push_back(spot);
+}
+
+Scene shippedScene(const std::string& name) {
+    return loadGltf(std::string(VKPHOTON_SCENES) + "/" + name + ".gltf");
 }
 
 Camera lookAt(glm::vec3 eye, glm::vec3 target, float yfov) {

@@ -1,6 +1,8 @@
 // Scenes built in code for tests with analytic answers.
 #pragma once
 
+#include <string>
+
 #include "scene/scene.h"
 
 namespace vkp::test {
@@ -9,6 +11,9 @@ namespace vkp::test {
 // specular) and emits `emission` from both sides, seen by a camera at its centre. The radiance
 // everywhere is emission / (1 - albedo).
 Scene furnaceScene(float albedo, float emission);
+
+// A scene shipped in scenes/, by name without the extension ("cornell-box").
+Scene shippedScene(const std::string& name);
 
 }  // namespace vkp::test
 
@@ -23,6 +28,9 @@ void addBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, bool openTop = false);
 // A quad (two triangles) with corners a, b, c, d counter-clockwise seen from its front.
 void addQuad(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d);
 void addPointLight(Scene& scene, glm::vec3 position, glm::vec3 intensity);
+// A directional light from above (0.4, -1, -0.3) and a spot light at (-1, 3, 1) aimed down
+// (cones 0.3 / 0.6 rad): the non-point lights of the raster tests.
+void addSunAndSpot(Scene& scene, glm::vec3 sunIntensity, glm::vec3 spotIntensity);
 Camera lookAt(glm::vec3 eye, glm::vec3 target, float yfov = 0.9f);
 
 }  // namespace vkp::test
