@@ -77,9 +77,12 @@ class GltfBuilder:
         self.doc["nodes"].append(node)
         self.doc["scenes"][0]["nodes"].append(len(self.doc["nodes"]) - 1)
 
-    def camera(self, position, yfov=0.6911):
-        self.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": yfov, "aspectRatio": 1.0, "znear": 0.01}}]
-        self.node({"name": "camera", "camera": 0, "translation": list(position)})
+    def camera(self, position, yfov=0.6911, aspect=1.0, rotation=None):
+        self.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": yfov, "aspectRatio": aspect, "znear": 0.01}}]
+        node = {"name": "camera", "camera": 0, "translation": list(position)}
+        if rotation is not None:
+            node["rotation"] = list(rotation)
+        self.node(node)
 
     def write(self, path):
         self.doc["buffers"] = [{"byteLength": len(self.data),
@@ -102,6 +105,29 @@ def cross(a, b):
 def normalize(v):
     n = math.sqrt(sum(c * c for c in v))
     return tuple(c / n for c in v)
+
+
+def look_at_rotation(eye, target):
+    """The unit quaternion (x, y, z, w) that turns a glTF camera (looking down -Z, +Y up) at `target`."""
+    zc = normalize(sub(eye, target))
+    xc = normalize(cross((0.0, 1.0, 0.0), zc))
+    yc = cross(zc, xc)
+    # Columns xc, yc, zc of the rotation matrix; m[r][c].
+    m = [[xc[0], yc[0], zc[0]], [xc[1], yc[1], zc[1]], [xc[2], yc[2], zc[2]]]
+    trace = m[0][0] + m[1][1] + m[2][2]
+    if trace > 0:
+        s = 2 * math.sqrt(1 + trace)
+        q = ((m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s, s / 4)
+    elif m[0][0] > m[1][1] and m[0][0] > m[2][2]:
+        s = 2 * math.sqrt(1 + m[0][0] - m[1][1] - m[2][2])
+        q = (s / 4, (m[0][1] + m[1][0]) / s, (m[0][2] + m[2][0]) / s, (m[2][1] - m[1][2]) / s)
+    elif m[1][1] > m[2][2]:
+        s = 2 * math.sqrt(1 + m[1][1] - m[0][0] - m[2][2])
+        q = ((m[0][1] + m[1][0]) / s, s / 4, (m[1][2] + m[2][1]) / s, (m[0][2] - m[2][0]) / s)
+    else:
+        s = 2 * math.sqrt(1 + m[2][2] - m[0][0] - m[1][1])
+        q = ((m[0][2] + m[2][0]) / s, (m[1][2] + m[2][1]) / s, s / 4, (m[1][0] - m[0][1]) / s)
+    return normalize(q)
 
 
 def quad(b, name, corners, material):
@@ -211,6 +237,136 @@ def cornell_glass(path):
     b.write(path)
 
 
+# Keller & Wald 2000's room scenes: a grid of square rooms whose walls (WALL_THICKNESS thick) are centred on
+# the grid lines, so room (ix, iz) of a grid with origin (x0, z0) is the square
+# [x0 + ix * ROOM_SIZE, x0 + (ix + 1) * ROOM_SIZE] x [z0 + iz * ROOM_SIZE, z0 + (iz + 1) * ROOM_SIZE].
+ROOM_SIZE = 4.0
+ROOM_HEIGHT = 2.5
+WALL_THICKNESS = 0.1
+DOOR_WIDTH = 0.9
+DOOR_HEIGHT = 2.0
+SLIT_WIDTH = 0.1
+FLOOR_COLOR = (0.5, 0.45, 0.4)
+WALL_X_COLOR = (0.7, 0.68, 0.6)  # walls in the planes x = const
+WALL_Z_COLOR = (0.55, 0.62, 0.7)  # walls in the planes z = const
+ROOM_LIGHT_SIZE = 0.5
+ROOM_LIGHT_RADIANCE = (30.0, 27.0, 22.0)
+SLIT_LIGHT_RADIANCE = (2000.0, 1800.0, 1500.0)
+
+
+class Parts:
+    """Quads gathered into one mesh (one node, one material)."""
+
+    def __init__(self):
+        self.positions, self.normals, self.indices = [], [], []
+
+    def quad(self, corners, facing):
+        """A planar quad whose front face (and normal) is turned towards the axis direction `facing`."""
+        n = cross(sub(corners[1], corners[0]), sub(corners[2], corners[0]))
+        if sum(a * b for a, b in zip(n, facing)) < 0:
+            corners = corners[::-1]
+        base = len(self.positions)
+        self.positions += corners
+        self.normals += [facing] * 4
+        self.indices += [base, base + 1, base + 2, base, base + 2, base + 3]
+
+    def emit(self, b, name, material):
+        b.mesh(name, self.positions, self.normals, self.indices, material)
+
+
+def wall(parts, axis, c, u0, u1, openings):
+    """A floor-to-ceiling wall WALL_THICKNESS thick centred on the plane `axis` = c ("x" or "z"), running from u0
+    to u1 along the other horizontal axis, with door openings (centre, width, height). Its two end faces are left
+    out: they touch another wall or lie outside the building."""
+    h = WALL_THICKNESS / 2
+
+    def p(u, y, w):
+        return (c + w, y, u) if axis == "x" else (u, y, c + w)
+
+    def n(du, dy, dw):
+        return (float(dw), float(dy), float(du)) if axis == "x" else (float(du), float(dy), float(dw))
+
+    def faces(a, b, y0):  # both sides of the part of the wall over [a, b] from height y0 to the ceiling
+        for side in (-h, h):
+            parts.quad([p(a, y0, side), p(b, y0, side), p(b, ROOM_HEIGHT, side), p(a, ROOM_HEIGHT, side)],
+                       n(0, 0, 1 if side > 0 else -1))
+
+    start = u0
+    for centre, width, height in openings:
+        a, b = centre - width / 2, centre + width / 2
+        faces(start, a, 0.0)
+        faces(a, b, height)  # the lintel
+        parts.quad([p(a, 0, -h), p(a, 0, h), p(a, height, h), p(a, height, -h)], n(1, 0, 0))  # jambs
+        parts.quad([p(b, 0, -h), p(b, 0, h), p(b, height, h), p(b, height, -h)], n(-1, 0, 0))
+        parts.quad([p(a, height, -h), p(b, height, -h), p(b, height, h), p(a, height, h)], n(0, -1, 0))
+        start = b
+    faces(start, u1, 0.0)
+
+
+def room_grid(b, nx, nz, origin, door_width, lit_rooms, light_radiance):
+    """nx x nz rooms; every interior wall has a door of door_width x DOOR_HEIGHT in its middle, the outer walls,
+    floor and ceiling are closed. Rooms in lit_rooms get a single-sided ROOM_LIGHT_SIZE square light facing down
+    just under the ceiling, in the room's centre. Nodes are named room-IX-IZ-walls-x (the walls in planes x = const
+    that the room owns: its -x wall, and its +x wall on the grid's +x edge), room-IX-IZ-walls-z (likewise its -z
+    and, on the +z edge, +z wall) and room-IX-IZ-light."""
+    x0, z0 = origin
+    s, t = ROOM_SIZE, WALL_THICKNESS
+    floor = b.material("floor", FLOOR_COLOR)
+    ceiling = b.material("ceiling", WHITE)
+    wall_x = b.material("wall-x", WALL_X_COLOR)
+    wall_z = b.material("wall-z", WALL_Z_COLOR)
+    light = b.material("light", (0.0, 0.0, 0.0), emissive=light_radiance)
+    xa, xb, za, zb = x0 - t / 2, x0 + nx * s + t / 2, z0 - t / 2, z0 + nz * s + t / 2
+    for name, y, facing, material in (("floor", 0.0, 1.0, floor), ("ceiling", ROOM_HEIGHT, -1.0, ceiling)):
+        parts = Parts()
+        parts.quad([(xa, y, za), (xb, y, za), (xb, y, zb), (xa, y, zb)], (0.0, facing, 0.0))
+        parts.emit(b, name, material)
+    for iz in range(nz):
+        for ix in range(nx):
+            x1, x2, z1, z2 = x0 + ix * s, x0 + (ix + 1) * s, z0 + iz * s, z0 + (iz + 1) * s
+            # Walls in planes z = const run the whole width of the grid (through the crossings)...
+            walls = Parts()
+            u0, u1 = (x1 - t / 2 if ix == 0 else x1), (x2 + t / 2 if ix == nx - 1 else x2)
+            wall(walls, "z", z1, u0, u1, [] if iz == 0 else [(x1 + s / 2, door_width, DOOR_HEIGHT)])
+            if iz == nz - 1:
+                wall(walls, "z", z2, u0, u1, [])
+            walls.emit(b, f"room-{ix}-{iz}-walls-z", wall_z)
+            # ...the walls in planes x = const stop at their faces.
+            walls = Parts()
+            wall(walls, "x", x1, z1 + t / 2, z2 - t / 2, [] if ix == 0 else [(z1 + s / 2, door_width, DOOR_HEIGHT)])
+            if ix == nx - 1:
+                wall(walls, "x", x2, z1 + t / 2, z2 - t / 2, [])
+            walls.emit(b, f"room-{ix}-{iz}-walls-x", wall_x)
+            if (ix, iz) in lit_rooms:
+                cx, cz, r, y = x1 + s / 2, z1 + s / 2, ROOM_LIGHT_SIZE / 2, ROOM_HEIGHT - 0.01
+                parts = Parts()
+                parts.quad([(cx - r, y, cz - r), (cx + r, y, cz - r), (cx + r, y, cz + r), (cx - r, y, cz + r)],
+                           (0.0, -1.0, 0.0))
+                parts.emit(b, f"room-{ix}-{iz}-light", light)
+
+
+def rooms_10x10(path):
+    """Keller & Wald 2000, figures 1 and 2: 10 x 10 rooms, each with its own light, doors to every neighbour."""
+    b = GltfBuilder()
+    room_grid(b, 10, 10, (-20.0, -20.0), DOOR_WIDTH, {(ix, iz) for ix in range(10) for iz in range(10)},
+              ROOM_LIGHT_RADIANCE)
+    # In room (5, 5) = [0, 4] x [0, 4], looking through its -z door (x = 2, z = 0) into rooms (5, 4), (5, 3)...
+    eye = (2.5, 1.6, 3.7)
+    b.camera(eye, yfov=math.radians(55), aspect=4 / 3, rotation=look_at_rotation(eye, (1.9, 1.1, -8.0)))
+    b.write(path)
+
+
+def door_slit(path):
+    """Keller & Wald 2000, figure 4: the camera's room is lit only through a slit in the wall to a lit room."""
+    b = GltfBuilder()
+    # Room (0, 0) = [-4, 0] x [-2, 2] (camera, no light), room (1, 0) = [0, 4] x [-2, 2] (light); the slit is at
+    # x = 0, z in [-0.05, 0.05], 2 m high.
+    room_grid(b, 2, 1, (-4.0, -2.0), SLIT_WIDTH, {(1, 0)}, SLIT_LIGHT_RADIANCE)
+    eye = (-3.6, 1.7, 1.7)
+    b.camera(eye, yfov=math.radians(55), aspect=4 / 3, rotation=look_at_rotation(eye, (-1.2, 0.3, -0.2)))
+    b.write(path)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "..", "scenes"))
@@ -219,6 +375,8 @@ def main():
     cornell_box(os.path.join(args.out, "cornell-box.gltf"))
     cornell_ceiling(os.path.join(args.out, "cornell-ceiling.gltf"))
     cornell_glass(os.path.join(args.out, "cornell-glass.gltf"))
+    rooms_10x10(os.path.join(args.out, "rooms-10x10.gltf"))
+    door_slit(os.path.join(args.out, "door-slit.gltf"))
 
 
 if __name__ == "__main__":
