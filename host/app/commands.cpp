@@ -46,7 +46,10 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
                                    {"gatherRays", p.gatherRays}, {"gatherK", p.gatherK},
                                    {"radiancePhotons", p.radiancePhotonStride},
                                    {"radius", stats.gatherRadius}, {"globalRadius", stats.globalRadius}, {"progressive", p.progressive},
-                                   {"alpha", p.alpha}};
+                                   {"alpha", p.alpha}, {"deposit", stats.deposit}, {"q", p.q},
+                                   {"importons", p.importonPaths}, {"depositEpsilon", p.depositEpsilon},
+                                   {"depositCutoff", p.depositCutoff}, {"densityAccuracy", p.densityAccuracy},
+                                   {"densityRounds", p.densityRounds}};
     }
     if (s.integrator == Integrator::Guided) {
         const GuideRenderSettings& g = s.guide;
@@ -56,7 +59,10 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
     if (s.integrator != Integrator::Path) {
         j["photons"] = {{"pathsTraced", stats.photonPathsTraced}, {"globalStored", stats.globalPhotons},
                         {"causticStored", stats.causticPhotons}, {"dropped", stats.photonsDropped},
-                        {"mapBytes", stats.photonMapBytes}, {"seconds", stats.photonSeconds}};
+                        {"mapBytes", stats.photonMapBytes}, {"seconds", stats.photonSeconds},
+                        {"deposit", stats.deposit}, {"globalDeposits", stats.globalCandidates},
+                        {"causticDeposits", stats.causticCandidates}, {"importonsStored", stats.importons},
+                        {"importanceScale", stats.importanceScale}};
     }
     j["device"] = stats.device;
     j["scene_stats"] = {{"triangles", stats.triangles}, {"lights", stats.lights},
@@ -71,6 +77,15 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
     j["partial"] = stats.partial;
     j["stopReason"] = stats.stopReason;
     return j;
+}
+
+void printDepositStats(const RenderStats& stats) {
+    const auto share = [](uint64_t kept, uint64_t deposited) { return deposited ? 100.0 * kept / deposited : 0.0; };
+    fmt::print(stderr, "deposit {}: kept {} of {} global deposits ({:.1f} %), {} of {} caustic ({:.1f} %); "
+                       "{} importons, f = {:.4g}\n",
+               stats.deposit, stats.globalPhotons, stats.globalCandidates, share(stats.globalPhotons, stats.globalCandidates),
+               stats.causticPhotons, stats.causticCandidates, share(stats.causticPhotons, stats.causticCandidates),
+               stats.importons, stats.importanceScale);
 }
 
 }  // namespace
@@ -137,10 +152,12 @@ int runRender(const RenderCommandOptions& options) {
                    stats.photonsDropped);
     if (stats.nonFiniteSamples > 0)
         fmt::print(stderr, "warning: {} sample(s) were NaN or infinite and were dropped\n", stats.nonFiniteSamples);
-    if (!options.quiet && s.integrator == Integrator::Photon)
-        fmt::print(stderr, "photon maps: {} global and {} caustic photons from {} paths in {:.2f} s ({} MB); radius {:.4g}\n",
+    if (!options.quiet && s.integrator == Integrator::Photon) {
+        fmt::print(stderr, "photon maps: {} global and {} caustic photons from {} paths in {:.2f} s ({:.1f} MB); radius {:.4g}\n",
                    stats.globalPhotons, stats.causticPhotons, stats.photonPathsTraced, stats.photonSeconds,
-                   stats.photonMapBytes >> 20, stats.gatherRadius);
+                   stats.photonMapBytes / 1048576.0, stats.gatherRadius);
+        if (stats.deposit != "all") printDepositStats(stats);
+    }
     if (!options.quiet)
         fmt::print(stderr, "wrote {} and {} ({} spp{}, {:.2f} s rendering, {:.2f} Mpaths/s)\n", exrPath.string(),
                    pngPath.string(), stats.samplesPerPixel, stats.partial ? ", partial: " + stats.stopReason : "",

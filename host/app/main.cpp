@@ -73,13 +73,23 @@ int main(int argc, char** argv) {
     PhotonRenderSettings& ph = s.photon;
     CLI::Option_group* photonGroup = renderCmd->add_option_group("photon integrator");
     photonGroup->add_option("--photons", ph.globalPaths, "Photon paths for the global map (per pass with --progressive)")->capture_default_str()->check(CLI::Range(1u, 1u << 26));
-    photonGroup->add_option("--caustic-photons", ph.causticPaths, "Photon paths for the caustic map (0: no caustic map)")->capture_default_str()->check(CLI::Range(0u, 1u << 26));
+    CLI::Option* causticOption = photonGroup->add_option("--caustic-photons", ph.causticPaths, "Photon paths for the caustic map (0: no caustic map)")->capture_default_str()->check(CLI::Range(0u, 1u << 26));
     photonGroup->add_option("--gather-rays", ph.gatherRays, "Final gather rays per sample (0: read the global map at the visible point)")->capture_default_str()->check(CLI::Range(0u, 1024u));
     photonGroup->add_option("--gather-k", ph.gatherK, "Nearest photons per global-map estimate")->capture_default_str()->check(CLI::Range(1u, 64u));
     photonGroup->add_option("--radiance-photons", ph.radiancePhotonStride, "Every n-th global photon carries a precomputed irradiance estimate that final gathers read (0: a k-nearest estimate at every gather hit)")->capture_default_str()->check(CLI::Range(0u, 1024u));
     photonGroup->add_option("--radius", ph.radius, "Caustic gather radius and initial progressive radius, world units [default: 1.5% of the scene's bounding radius]")->check(CLI::PositiveNumber);
     photonGroup->add_flag("--progressive", ph.progressive, "Stochastic progressive photon mapping: a fresh photon pass per sample, shrinking radii (converges to the path tracer)");
     photonGroup->add_option("--alpha", ph.alpha, "Progressive radius reduction: fraction of new photons kept per pass")->capture_default_str()->check(CLI::Range(0.01f, 0.99f));
+    photonGroup->add_option("--deposit", ph.deposit, "Which photons the maps keep: all; importance (kept with a probability from the camera's importance, Keller & Wald); density (kept until a required density is met, Suykens & Willems)")
+        ->transform(oneOf<DepositMode>({{"all", DepositMode::All}, {"importance", DepositMode::Importance}, {"density", DepositMode::Density}}))
+        ->option_text("all|importance|density [all]");
+    CLI::Option* qOption = photonGroup->add_option("--q", ph.q, "Keller & Wald's ratio: --photons paths fill the caustic map and the first q of them the global map (instead of --caustic-photons)")->check(CLI::Range(1e-6f, 1.0f));
+    qOption->excludes(causticOption);
+    photonGroup->add_option("--importons", ph.importonPaths, "Camera paths of the importon pass (--deposit importance|density)")->capture_default_str()->check(CLI::Range(1u, 1u << 24));
+    photonGroup->add_option("--deposit-epsilon", ph.depositEpsilon, "Least acceptance probability of a photon (its power grows at most 1/epsilon times)")->capture_default_str()->check(CLI::Range(1e-6f, 1.0f));
+    photonGroup->add_flag("--deposit-cutoff", ph.depositCutoff, "Drop photons whose acceptance is below --deposit-epsilon instead of clamping it (biased, fewer photons)");
+    photonGroup->add_option("--density-accuracy", ph.densityAccuracy, "--deposit density: required photons per square unit per unit of path importance")->capture_default_str()->check(CLI::PositiveNumber);
+    photonGroup->add_option("--density-rounds", ph.densityRounds, "--deposit density: rounds of tracing, deciding and rebuilding the grid")->capture_default_str()->check(CLI::Range(1u, 256u));
 
     GuideRenderSettings& gd = s.guide;
     CLI::Option_group* guideGroup = renderCmd->add_option_group("guided path tracer");

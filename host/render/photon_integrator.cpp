@@ -9,6 +9,7 @@
 #include "passes/scene_pass.h"
 #include "passes/visible_point_pass.h"
 #include "render/raster_direct.h"
+#include "render/importon_map.h"
 #include "render/photon_map.h"
 #include "render/sample_loop.h"
 #include "shared/photon_render.glsl"
@@ -32,6 +33,7 @@ void checkSettings(const PhotonRenderSettings& p, float radius) {
         throw InputError(fmt::format("--radius {}: must be a positive length", radius));
     if (!(p.coneK >= 1.0f)) throw InputError(fmt::format("cone filter k {}: must be at least 1", p.coneK));
     if (!(p.alpha > 0.0f && p.alpha < 1.0f)) throw InputError(fmt::format("alpha {}: must lie in (0, 1)", p.alpha));
+    if (!(p.q >= 0.0f && p.q <= 1.0f)) throw InputError(fmt::format("--q {}: must lie in (0, 1]", p.q));
 }
 
 gpu::VisiblePointParams visiblePointParams(const RenderSettings& s, const Scene& scene, uint32_t lightCount,
@@ -45,6 +47,57 @@ gpu::VisiblePointParams visiblePointParams(const RenderSettings& s, const Scene&
     params.lightCount = lightCount;
     params.flags = raster.pathFlags() | (s.pixelCentres ? gpu::kPathFlagPixelCentres : 0u);
     return params;
+}
+
+uint32_t depositModeCode(DepositMode mode) {
+    switch (mode) {
+        case DepositMode::Importance: return gpu::kDepositImportance;
+        case DepositMode::Density: return gpu::kDepositDensity;
+        default: return gpu::kDepositAll;
+    }
+}
+
+const char* depositModeName(DepositMode mode) {
+    switch (mode) {
+        case DepositMode::Importance: return "importance";
+        case DepositMode::Density: return "density";
+        default: return "all";
+    }
+}
+
+// The importon pass for the render's camera, unless every photon is kept.
+std::unique_ptr<ImportonMap> makeImportonMap(vk::Context& context, const Scene& scene, const SceneArrays& arrays,
+                                             const SceneBuffers& buffers, const RenderSettings& s, RenderStats& stats) {
+    if (s.photon.deposit == DepositMode::All) return nullptr;
+    ImportonSettings settings;
+    settings.paths = s.photon.importonPaths;
+    settings.seed = s.seed;
+    auto map = std::make_unique<ImportonMap>(context, arrays, buffers,
+                                             makeGpuCamera(chooseCamera(scene, s.cameraIndex), s.width, s.height),
+                                             s.width, s.height, settings);
+    stats.importons = map->stats().stored;
+    stats.importanceScale = map->stats().importanceScale;
+    stats.photonSeconds += map->stats().seconds;
+    stats.photonMapBytes += map->bytes();
+    return map;
+}
+
+DepositSettings depositSettings(const PhotonRenderSettings& p, DepositMode mode, const ImportonMap* importons) {
+    DepositSettings d;
+    d.mode = depositModeCode(mode);
+    d.importons = importons;
+    d.epsilon = p.depositEpsilon;
+    d.cutoff = p.depositCutoff;
+    d.densityAccuracy = p.densityAccuracy;
+    d.rounds = p.densityRounds;
+    return d;
+}
+
+// Density control's map: cells holding k photons at the mean required density.
+float densityCellSize(const PhotonRenderSettings& p, const ImportonMap& importons) {
+    const double required = double(p.densityAccuracy) * importons.stats().meanPathImportance;
+    if (!(required > 0.0)) throw InputError("--deposit density: no importon sees the scene through a bounce");
+    return static_cast<float>(std::sqrt(p.gatherK / (gpu::kPi * required)));
 }
 
 void addMapStats(RenderStats& stats, const PhotonMapStats& map) {
@@ -72,6 +125,7 @@ RenderResult PhotonIntegrator::render(const RenderSettings& settings, const Prog
     RenderResult result = settings.photon.progressive ? renderProgressive(settings, radius, progress, stop)
                                                       : renderTwoPass(settings, radius, progress, stop);
     RenderStats& stats = result.stats;
+    stats.deposit = depositModeName(settings.photon.deposit);
     stats.integrator = settings.photon.progressive ? "photon (progressive)" : "photon";
     stats.gatherRadius = radius;
     stats.partial = stats.samplesPerPixel < settings.samplesPerPixel;
@@ -85,35 +139,51 @@ RenderResult PhotonIntegrator::renderTwoPass(const RenderSettings& settings, flo
     RenderResult result;
     RenderStats& stats = result.stats;
 
-    // Pass 1: the photon maps. The global map's search radius follows its density: the radius
-    // of a disk holding k photons if they spread evenly over the scene's surfaces.
+    // Pass 1: the importons (unless every photon is kept) and the photon maps. The global map's
+    // search radius follows its density: the radius of a disk holding k photons if they spread
+    // evenly over the scene's surfaces (with importance deposition, the density where p = 1).
+    const std::unique_ptr<ImportonMap> importons = makeImportonMap(m_context, m_scene, m_arrays, m_buffers, settings, stats);
+    // Keller & Wald's (N, q): N paths for the caustic map, the first q N of them for the global one.
+    const bool splitByQ = p.q > 0.0f;
+    const uint32_t globalPaths = splitByQ ? std::max(1u, uint32_t(std::ceil(double(p.q) * p.globalPaths))) : p.globalPaths;
+    const uint32_t causticPaths = splitByQ ? p.globalPaths : p.causticPaths;
     PhotonMapSettings globalSettings;
-    globalSettings.paths = p.globalPaths;
+    globalSettings.paths = globalPaths;
     globalSettings.maxDeposits = p.maxDeposits;
     globalSettings.seed = settings.seed;
+    globalSettings.deposit = depositSettings(p, p.deposit, importons.get());
     const double area = sceneSurfaceArea(m_arrays);
-    globalSettings.cellSizeFor = [&](uint64_t stored) { return evenSpreadRadius(p.gatherK, stored, area); };
+    if (p.deposit == DepositMode::Density)
+        globalSettings.cellSize = densityCellSize(p, *importons);
+    else
+        globalSettings.cellSizeFor = [&](uint64_t photons) { return evenSpreadRadius(p.gatherK, photons, area); };
     PhotonMap globalMap(m_context, m_scene, m_arrays, m_buffers, globalSettings);
     const PhotonMapStats globalStats = globalMap.build(0);
     const float globalRadius = kGlobalRadiusFactor * globalStats.cellSize;
     stats.globalRadius = globalRadius;
     addMapStats(stats, globalStats);
     stats.globalPhotons = globalStats.stored;
+    stats.globalCandidates = globalStats.candidates;
     stats.photonMapBytes += globalMap.bytes();
 
     std::unique_ptr<PhotonMap> causticMap;
-    if (p.causticPaths > 0) {
+    if (causticPaths > 0) {
         PhotonMapSettings causticSettings;
-        causticSettings.paths = p.causticPaths;
+        causticSettings.paths = causticPaths;
         causticSettings.maxDeposits = 1;  // a caustic photon is its path's first deposit
         causticSettings.seed = settings.seed;
         causticSettings.requiredFlags = gpu::kPhotonCaustic;
         causticSettings.cellSize = 2.0f * radius;
+        // Caustics are seen directly, where density control's path importance does not reach:
+        // they are deposited by importance in that mode too.
+        causticSettings.deposit = depositSettings(
+            p, p.deposit == DepositMode::Density ? DepositMode::Importance : p.deposit, importons.get());
         causticMap = std::make_unique<PhotonMap>(m_context, m_scene, m_arrays, m_buffers, causticSettings);
-        // Fresh Halton indices: the caustic paths are not the global map's first paths again.
-        const PhotonMapStats causticStats = causticMap->build(p.globalPaths);
+        // Split by q, the global map's paths are the caustic map's first; else fresh Halton indices.
+        const PhotonMapStats causticStats = causticMap->build(splitByQ ? 0 : p.globalPaths);
         addMapStats(stats, causticStats);
         stats.causticPhotons = causticStats.stored;
+        stats.causticCandidates = causticStats.candidates;
         stats.photonMapBytes += causticMap->bytes();
     }
 
@@ -215,8 +285,9 @@ RenderResult PhotonIntegrator::renderProgressive(const RenderSettings& settings,
     mapSettings.seed = settings.seed;
     mapSettings.rejectedFlags = gpu::kPhotonPrimary;
     mapSettings.cellSize = 2.0f * radius;
+    const std::unique_ptr<ImportonMap> importons = makeImportonMap(m_context, m_scene, m_arrays, m_buffers, settings, stats);
+    mapSettings.deposit = depositSettings(p, p.deposit, importons.get());
     PhotonMap map(m_context, m_scene, m_arrays, m_buffers, mapSettings);
-    stats.photonMapBytes = map.bytes();
 
     vk::Buffer film(m_context, "film", pixels * sizeof(glm::vec4), vk::kStorageUsage);
     vk::Buffer points(m_context, "visible points", pixels * sizeof(gpu::GpuVisiblePoint), vk::kStorageUsage);
@@ -243,6 +314,7 @@ RenderResult PhotonIntegrator::renderProgressive(const RenderSettings& settings,
         const PhotonMapStats mapStats = map.build(pass * p.globalPaths);
         addMapStats(stats, mapStats);
         stats.globalPhotons = mapStats.stored;
+        stats.globalCandidates = mapStats.candidates;
         vpParams.sampleIndex = pass;
         m_context.submitAndWait([&](VkCommandBuffer cmd) {
             vk::computeBarrier(cmd);
@@ -254,6 +326,7 @@ RenderResult PhotonIntegrator::renderProgressive(const RenderSettings& settings,
     });
     stats.stopReason = loop.stopReason;
     stats.renderSeconds = loop.seconds + stats.rasterSeconds;
+    stats.photonMapBytes += map.bytes();
     stats.samplesPerPixel = loop.samplesDone;
 
     // Direct light (the film's mean) plus tau / (P pi R^2).

@@ -14,6 +14,17 @@ namespace vkp {
 namespace {
 
 constexpr uint64_t kChunkSlots = 1u << 21;  // 64 MiB of photon slots per traced chunk
+// Density control's current-density estimates search one cell (one ring of cells).
+constexpr float kDensityRadiusCells = 1.0f;
+
+// Deposits of the kinds a map keeps among what the tracer counted.
+uint64_t candidateCount(const PhotonCounters& c, uint32_t required, uint32_t rejected) {
+    uint64_t n = 0;
+    if (gpu::photonSelected(gpu::kPhotonValid | gpu::kPhotonCaustic, required, rejected)) n += c.storedCaustic;
+    if (gpu::photonSelected(gpu::kPhotonValid, required, rejected)) n += c.storedGlobal;
+    if (gpu::photonSelected(gpu::kPhotonValid | gpu::kPhotonPrimary, required, rejected)) n += c.storedPrimary;
+    return n;
+}
 
 }  // namespace
 
@@ -31,12 +42,23 @@ float evenSpreadRadius(uint32_t k, uint64_t photons, double area) {
 
 PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers,
                      const PhotonMapSettings& settings)
-    : m_context(context), m_settings(settings), m_tracer(context, scene, arrays, buffers) {
+    : m_context(context), m_buffers(buffers), m_settings(settings), m_tracer(context, scene, arrays, buffers) {
     if (settings.paths == 0 || settings.maxDeposits == 0)
         throw InputError("a photon map needs at least one path and one deposit per path");
+    const DepositSettings& deposit = settings.deposit;
+    if (deposit.mode != gpu::kDepositAll) {
+        if (!deposit.importons) throw std::logic_error("importance-driven deposition without an importon map");
+        if (!(deposit.epsilon > 0.0f && deposit.epsilon <= 1.0f))
+            throw InputError(fmt::format("--deposit-epsilon {}: must lie in (0, 1]", deposit.epsilon));
+        if (deposit.mode == gpu::kDepositDensity && deposit.rounds == 0)
+            throw InputError("--density-rounds must be at least 1");
+        if (deposit.mode == gpu::kDepositDensity && !(deposit.densityAccuracy > 0.0f))
+            throw InputError(fmt::format("--density-accuracy {}: must be positive", deposit.densityAccuracy));
+    }
     const uint64_t maxPhotons = context.properties().limits.maxStorageBufferRange / sizeof(gpu::GpuPhoton);
-    const uint64_t chunk = settings.chunkPaths ? settings.chunkPaths
-                                               : std::max<uint64_t>(1, kChunkSlots / settings.maxDeposits);
+    uint64_t chunk = settings.chunkPaths ? settings.chunkPaths : std::max<uint64_t>(1, kChunkSlots / settings.maxDeposits);
+    // Density control decides each round against the photons stored by the rounds before.
+    if (deposit.mode == gpu::kDepositDensity) chunk = std::min<uint64_t>(chunk, (settings.paths + deposit.rounds - 1) / deposit.rounds);
     m_chunkPaths = static_cast<uint32_t>(std::min<uint64_t>({chunk, settings.paths, maxPhotons / settings.maxDeposits}));
     if (m_chunkPaths == 0)
         throw InputError(fmt::format("--max-deposits {}: one path's slots exceed the device's storage-buffer range",
@@ -52,6 +74,30 @@ PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays
     m_grid = std::make_unique<PhotonGrid>(context, m_map, m_capacity, grid);
 }
 
+PhotonMap::~PhotonMap() = default;
+
+gpu::PhotonDepositParams PhotonMap::depositParams(uint32_t firstPath, uint32_t paths, uint32_t round) const {
+    const DepositSettings& d = m_settings.deposit;
+    gpu::PhotonDepositParams params{};
+    params.map = m_grid->view(1.0f);
+    params.slotCount = paths * m_settings.maxDeposits;
+    params.firstPath = firstPath;
+    params.maxDeposits = m_settings.maxDeposits;
+    params.seed = m_settings.seed;
+    params.mode = d.mode;
+    params.round = round;
+    params.densityK = d.densityK;
+    params.cutoff = d.cutoff ? 1u : 0u;
+    params.requiredFlags = m_settings.requiredFlags;
+    params.rejectedFlags = m_settings.rejectedFlags;
+    params.importanceScale = d.importons->stats().importanceScale;
+    params.epsilon = d.epsilon;
+    params.densityAccuracy = d.densityAccuracy;
+    params.minDensity = d.minDensity;
+    params.densityRadius = kDensityRadiusCells * m_grid->settings().cellSize;
+    return params;
+}
+
 PhotonMapStats PhotonMap::build(uint32_t firstPath) {
     PhotonMapStats stats;
     auto start = Clock::now();
@@ -59,6 +105,8 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
         m_map.fillZero(cmd);
         m_state.fillZero(cmd);
     });
+    const bool deposit = m_settings.deposit.mode != gpu::kDepositAll;
+    const bool densityControl = m_settings.deposit.mode == gpu::kDepositDensity;
     for (uint32_t done = 0; done < m_settings.paths; done += m_chunkPaths) {
         PhotonSettings chunk;
         chunk.paths = std::min(m_chunkPaths, m_settings.paths - done);
@@ -74,22 +122,37 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
             m_compaction = std::make_unique<PhotonCompaction>(m_context, m_tracer.photons(),
                                                               m_chunkPaths * m_settings.maxDeposits, m_map, m_state,
                                                               params);
+            if (deposit)
+                m_deposit = std::make_unique<PhotonDeposit>(m_context, m_buffers, m_settings.deposit.importons->grid(),
+                                                            m_tracer.photons(), m_chunkPaths * m_settings.maxDeposits,
+                                                            *m_grid);
         }
         m_context.submitAndWait([&](VkCommandBuffer cmd) {
             vk::transferToComputeBarrier(cmd);  // the map's clearing
-            vk::computeBarrier(cmd);            // the chunk's photon slots
+            vk::computeBarrier(cmd);            // the chunk's photon slots (and the last round's grid)
+            if (deposit) {
+                m_deposit->record(cmd, m_settings.deposit.importons->lookupParams(m_settings.requiredFlags, m_settings.rejectedFlags),
+                                  depositParams(chunk.firstPath, chunk.paths, stats.chunks));
+                vk::computeBarrier(cmd);
+            }
             m_compaction->record(cmd, chunk.paths * chunk.maxDeposits);
+            if (densityControl) {  // the next round's current density sees this round's photons
+                vk::computeBarrier(cmd);
+                m_grid->record(cmd);
+            }
         });
         stats.chunks += 1;
     }
+    stats.candidates = candidateCount(stats.traced, m_settings.requiredFlags, m_settings.rejectedFlags);
     uint32_t state[gpu::kPhotonMapStateSize];
     m_state.download(state, sizeof(state));
     stats.stored = state[gpu::kPhotonMapStateCount];
     stats.dropped = state[gpu::kPhotonMapStateDropped];
+    m_lastStored = stats.stored;
     stats.traceSeconds = secondsSince(start);
 
     start = Clock::now();
-    if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(stats.stored));
+    if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
     stats.cellSize = m_grid->settings().cellSize;
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
         vk::computeBarrier(cmd);
@@ -101,7 +164,12 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
 }
 
 uint64_t PhotonMap::bytes() const {
-    return m_map.size() + m_grid->photons().size() + m_grid->cellStart().size() * 2 + m_tracer.photons().size();
+    return m_lastStored * sizeof(gpu::GpuPhoton) + m_grid->cellStart().size();
+}
+
+uint64_t PhotonMap::scratchBytes() const {
+    return m_map.size() + m_grid->photons().size() - m_lastStored * sizeof(gpu::GpuPhoton) + m_grid->cellStart().size() +
+           m_tracer.photons().size() + (m_deposit ? m_deposit->bytes() : 0);
 }
 
 std::vector<gpu::GpuPhoton> PhotonMap::downloadPhotons() const {

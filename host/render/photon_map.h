@@ -10,10 +10,24 @@
 #include <vector>
 
 #include "passes/photon_compaction.h"
+#include "passes/photon_deposit.h"
 #include "passes/photon_grid.h"
+#include "render/importon_map.h"
 #include "render/photon_tracer.h"
 
 namespace vkp {
+
+// Which traced photons a map keeps (--deposit; docs/importance-deposition.md).
+struct DepositSettings {
+    uint32_t mode = gpu::kDepositAll;        // kDeposit*
+    const ImportonMap* importons = nullptr;  // required unless the mode is kDepositAll
+    float epsilon = 0.01f;                   // --deposit-epsilon: floor of the acceptance probability
+    bool cutoff = false;                     // --deposit-cutoff: drop below epsilon (biased) instead of clamping
+    float densityAccuracy = 0.0f;            // --density-accuracy C: required density = C * path importance
+    float minDensity = 0.0f;                 // required density where the path importance is lower
+    uint32_t densityK = 16;                  // nearest stored photons per current-density estimate
+    uint32_t rounds = 8;                     // density control: trace, deposit, rebuild the grid, repeat
+};
 
 struct PhotonMapSettings {
     uint32_t paths = 200000;      // photon paths emitted per build
@@ -23,13 +37,16 @@ struct PhotonMapSettings {
     uint32_t requiredFlags = 0;   // which photons the map keeps (PhotonGridSettings)
     uint32_t rejectedFlags = 0;
     float cellSize = 0.05f;
-    // When set, chooses the grid's cell size from the number of photons stored by each build.
-    std::function<float(uint64_t storedPhotons)> cellSizeFor;
+    // When set, chooses the grid's cell size from the number of photons stored by each build
+    // (with importance deposition: deposited before the decision, the density where p = 1).
+    std::function<float(uint64_t photons)> cellSizeFor;
     uint32_t chunkPaths = 0;      // paths per traced chunk; 0: a chunk of about 2 M slots
+    DepositSettings deposit;
 };
 
 struct PhotonMapStats {
     PhotonCounters traced;        // over all chunks
+    uint64_t candidates = 0;      // deposits of the map's kind the paths made (before any deposit decision)
     uint64_t stored = 0;          // photons in the map
     uint64_t dropped = 0;         // kept photons beyond the map's capacity
     uint32_t chunks = 0;
@@ -49,6 +66,7 @@ class PhotonMap {
 public:
     PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers,
               const PhotonMapSettings& settings);
+    ~PhotonMap();
 
     // Traces settings.paths paths with Halton indices firstPath... into a fresh map and builds
     // its grid (progressive passes call it again with fresh index ranges).
@@ -58,12 +76,18 @@ public:
     // Watts carried by a photon of relative power 1 (total light power / paths of one build).
     float photonPower() const { return m_photonPower; }
     uint32_t capacity() const { return m_capacity; }
+    // Device memory of the map's photons and grid (what a renderer keeps; the traced chunk's
+    // slots are scratch: see scratchBytes()).
     uint64_t bytes() const;
+    uint64_t scratchBytes() const;
     // The map's photons, in path order (after a build).
     std::vector<gpu::GpuPhoton> downloadPhotons() const;
 
 private:
+    gpu::PhotonDepositParams depositParams(uint32_t firstPath, uint32_t paths, uint32_t round) const;
+
     vk::Context& m_context;
+    const SceneBuffers& m_buffers;
     PhotonMapSettings m_settings;
     PhotonTracer m_tracer;
     uint32_t m_chunkPaths;
@@ -73,6 +97,8 @@ private:
     vk::Buffer m_state;
     std::unique_ptr<PhotonGrid> m_grid;
     std::unique_ptr<PhotonCompaction> m_compaction;  // bound to the tracer's slots (allocated by the first chunk)
+    std::unique_ptr<PhotonDeposit> m_deposit;        // likewise; only with a deposit mode other than all
+    uint64_t m_lastStored = 0;
 };
 
 }  // namespace vkp

@@ -30,6 +30,13 @@ struct GuideRenderSettings {
     bool cache = true;                // --guide-cache: grids per cache cell and normal bin, built once
 };
 
+// Which traced photons the photon maps keep (--deposit; docs/importance-deposition.md).
+enum class DepositMode {
+    All,         // every photon (Jensen)
+    Importance,  // kept with a probability from the camera's importance (Keller & Wald 2000)
+    Density,     // kept until a required density is met (Suykens & Willems 2000)
+};
+
 // Settings of the photon integrator (--integrator photon).
 struct PhotonRenderSettings {
     uint32_t globalPaths = 200000;    // --photons: paths traced for the global map (per pass when progressive)
@@ -43,6 +50,14 @@ struct PhotonRenderSettings {
     bool progressive = false;         // --progressive: SPPM, a fresh photon pass per sample
     float alpha = 0.7f;               // SPPM's fraction of new photons kept per pass
     uint32_t maxDeposits = 8;         // stored photons per global path at most
+    DepositMode deposit = DepositMode::All;  // --deposit
+    float q = 0.0f;                   // --q: --photons paths fill the caustic map, the first q of them the
+                                      // global map (Keller & Wald's N, q); 0: --caustic-photons paths
+    uint32_t importonPaths = 1u << 16;  // --importons: camera paths of the importon pass
+    float depositEpsilon = 0.01f;     // --deposit-epsilon: floor of the acceptance probability
+    bool depositCutoff = false;       // --deposit-cutoff: drop photons below epsilon (biased)
+    float densityAccuracy = 2.0e4f;   // --density-accuracy: required density per unit path importance
+    uint32_t densityRounds = 8;       // --density-rounds
 };
 
 // Who computes the direct light at the first path vertex (--direct).
@@ -96,7 +111,12 @@ struct RenderStats {
     uint64_t globalPhotons = 0;       // in the global map (last pass when progressive)
     uint64_t causticPhotons = 0;
     uint64_t photonsDropped = 0;      // beyond a map's capacity
-    uint64_t photonMapBytes = 0;
+    uint64_t photonMapBytes = 0;      // stored photons and grid tables
+    std::string deposit = "all";      // --deposit
+    uint64_t globalCandidates = 0;    // photons the global paths deposited before the deposit decision
+    uint64_t causticCandidates = 0;
+    uint64_t importons = 0;           // stored by the importon pass
+    float importanceScale = 0.0f;     // Keller & Wald's f
     double photonSeconds = 0.0;       // tracing, compaction and grid builds
     float gatherRadius = 0.0f;        // caustic radius / initial SPPM radius, world units
     float globalRadius = 0.0f;        // largest k-nearest search radius in the global (or guiding) map

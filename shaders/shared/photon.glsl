@@ -60,6 +60,13 @@ INLINE GpuPhoton makePhoton(vec3 position, vec3 relativePower, vec3 direction, v
     return p;
 }
 
+// The photon with another relative power (position, directions and flags bit for bit the same).
+INLINE GpuPhoton withRelativePower(GpuPhoton p, vec3 relativePower) {
+    p.powerRG = packHalf2x16(vec2(relativePower.x, relativePower.y));
+    p.powerBFlags = (packHalf2x16(vec2(relativePower.z, 0.0f)) & 0xffffu) | (p.powerBFlags & 0xffff0000u);
+    return p;
+}
+
 INLINE vec3 photonRelativePower(GpuPhoton p) {
     vec2 rg = unpackHalf2x16(p.powerRG);
     float b = unpackHalf2x16(p.powerBFlags & 0xffffu).x;
