@@ -12,20 +12,20 @@ namespace vkp {
 
 class PhotonDeposit {
 public:
-    // Bound to the chunk's `slots` (up to maxSlots), the importon grid and the map's own grid
-    // (read by density control).
-    PhotonDeposit(vk::Context& context, const SceneBuffers& scene, const PhotonGrid& importons, const vk::Buffer& slots,
-                  uint32_t maxSlots, const PhotonGrid& map);
+    // Bound to the chunk's `slots` (up to maxSlots), the importance grid's table
+    // (shared/importance.glsl) and the map's own grid (read by density control).
+    PhotonDeposit(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& importanceTable,
+                  const vk::Buffer& slots, uint32_t maxSlots, const PhotonGrid& map);
 
     // Records the lookup and the decision for params.slotCount slots (lookup.slotCount is set
     // from it); the caller places a barrier before (after the slot writes) and after.
-    void record(VkCommandBuffer cmd, gpu::ImportanceLookupParams lookup, const gpu::PhotonDepositParams& params) const;
+    void record(VkCommandBuffer cmd, gpu::ImportanceGridParams lookup, const gpu::PhotonDepositParams& params) const;
 
     uint64_t bytes() const { return m_importance.size(); }
 
 private:
     vk::Buffer m_importance;  // per slot: importance density, largest path importance
-    ScenePass m_lookup;
+    vk::ComputeKernel m_lookup;
     ScenePass m_deposit;
 };
 

@@ -1,6 +1,8 @@
 #include "render/importon_map.h"
 
 #include <algorithm>
+#include <bit>
+#include <stdexcept>
 #include <cmath>
 #include <limits>
 #include <unordered_map>
@@ -8,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "passes/scene_pass.h"
+#include "shared/importance.glsl"
 #include "render/photon_map.h"
 #include "util/errors.h"
 #include "util/stopwatch.h"
@@ -17,12 +20,8 @@
 namespace vkp {
 namespace {
 
-// Nearest-importon searches reach one cell, so they visit one ring of cells: on lavapipe, a
-// lookup's cost is mostly the cells it visits (two rings: 153 cells, one ring: 28).
-constexpr float kSearchRadiusCells = 1.0f;
-// occupancyCellSize aims at this many points, per point, in the point's own cell per k: cells
-// about as wide as the k-nearest radius, so a search visits few points beyond its k.
-constexpr double kOccupancyPerK = 0.5;
+// occupancyCellSize aims at this many points, per point, in the point's own cell per k.
+constexpr double kOccupancyPerK = 1.0;
 
 uint64_t cellKey(const glm::vec3& p, float invCellSize) {
     const glm::ivec3 c = gpu::gridCell(p, invCellSize);
@@ -98,41 +97,59 @@ ImportonMap::ImportonMap(vk::Context& context, const SceneArrays& arrays, const 
     m_stats.meanPathImportance = seenThroughBounce ? static_cast<float>(pathImportanceSum / seenThroughBounce) : 0.0f;
     m_stats.cellSize = occupancyCellSize(positions, settings.k, sceneSurfaceArea(arrays));
 
-    PhotonGridSettings grid;
-    grid.cellSize = m_stats.cellSize;
-    m_grid = std::make_unique<PhotonGrid>(context, m_slots, slots, grid);
-    context.submitAndWait([&](VkCommandBuffer cmd) {
-        m_grid->record(cmd);
-        vk::computeBarrier(cmd);
-    });
-    m_stats.importanceScale = estimateImportanceScale(context, buffers, importons);
+    buildTable(context);
+    m_stats.importanceScale = estimateImportanceScale(context, importons);
     m_stats.seconds = secondsSince(start);
 }
 
-gpu::ImportanceLookupParams ImportonMap::lookupParams(uint32_t requiredFlags, uint32_t rejectedFlags) const {
-    gpu::ImportanceLookupParams params{};
+// Splats the importons into a table with room for every cell at every level (at most one per
+// importon and level); doubles it should the probes ever run out (an importon would be lost).
+void ImportonMap::buildTable(vk::Context& context) {
+    vk::ComputeKernel splat(context, "importance_splat.comp", 2, sizeof(gpu::ImportanceGridParams));
+    uint64_t entries = std::bit_ceil(std::max<uint64_t>(1024, m_stats.stored * gpu::kImportanceLevels / 4));
+    for (;; entries *= 2) {
+        m_table = vk::Buffer(context, "importance grid", entries * sizeof(gpu::ImportanceCell), vk::kStorageUsage);
+        splat.bind({&m_slots, &m_table});
+        gpu::ImportanceGridParams params = lookupParams();
+        params.tableMask = static_cast<uint32_t>(entries - 1);
+        params.slotCount = m_settings.paths * m_settings.maxDeposits;
+        context.submitAndWait([&](VkCommandBuffer cmd) {
+            m_table.fillZero(cmd);
+            vk::transferToComputeBarrier(cmd);
+            splat.record(cmd, vk::groupCount(params.slotCount, 64), params);
+            vk::computeToHostBarrier(cmd);
+        });
+        uint64_t counted = 0;
+        for (const gpu::ImportanceCell& cell : m_table.download<gpu::ImportanceCell>())
+            if (cell.key != gpu::kImportanceEmptyKey) counted += cell.count;
+        if (counted == m_stats.stored * gpu::kImportanceLevels) break;
+        if (entries >= (uint64_t(1) << 26)) throw std::runtime_error("importance grid: importons do not fit the table");
+    }
+    m_stats.tableSize = static_cast<uint32_t>(entries);
+}
+
+gpu::ImportanceGridParams ImportonMap::lookupParams(uint32_t requiredFlags, uint32_t rejectedFlags) const {
+    gpu::ImportanceGridParams params{};
+    params.invCellSize = 1.0f / m_stats.cellSize;
+    params.tableMask = m_stats.tableSize ? m_stats.tableSize - 1 : 0;
+    params.k = m_settings.k;
     params.requiredFlags = requiredFlags;
     params.rejectedFlags = rejectedFlags;
-    params.importons = m_grid->view(1.0f);
-    params.k = m_settings.k;
-    params.maxRadius = kSearchRadiusCells * m_stats.cellSize;
     return params;
 }
 
 // Keller & Wald: f is the reciprocal of the least importance that test rays from the camera
 // sense, so p = 1 wherever the camera looks directly. The test rays are the first importon
 // paths' directly seen importons.
-float ImportonMap::estimateImportanceScale(vk::Context& context, const SceneBuffers& buffers,
-                                           const std::vector<gpu::GpuPhoton>& importons) const {
+float ImportonMap::estimateImportanceScale(vk::Context& context, const std::vector<gpu::GpuPhoton>& importons) const {
     const uint32_t testSlots = std::min(m_settings.testRays, m_settings.paths) * m_settings.maxDeposits;
     vk::Buffer sensed(context, "importon test rays", VkDeviceSize(testSlots) * sizeof(glm::vec2), vk::kStorageUsage);
-    const ScenePass lookup(context, "importance_lookup.comp", buffers,
-                           {&m_grid->cellStart(), &m_grid->photons(), &m_slots, &sensed},
-                           sizeof(gpu::ImportanceLookupParams));
-    gpu::ImportanceLookupParams params = lookupParams();
+    vk::ComputeKernel lookup(context, "importance_lookup.comp", 3, sizeof(gpu::ImportanceGridParams));
+    lookup.bind({&m_table, &m_slots, &sensed});
+    gpu::ImportanceGridParams params = lookupParams();
     params.slotCount = testSlots;
     context.submitAndWait([&](VkCommandBuffer cmd) {
-        lookup.record(cmd, testSlots, params);
+        lookup.record(cmd, vk::groupCount(testSlots, 64), params);
         vk::computeToHostBarrier(cmd);
     });
     const auto values = sensed.download<glm::vec2>();

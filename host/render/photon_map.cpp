@@ -123,7 +123,7 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
                                                               m_chunkPaths * m_settings.maxDeposits, m_map, m_state,
                                                               params);
             if (deposit)
-                m_deposit = std::make_unique<PhotonDeposit>(m_context, m_buffers, m_settings.deposit.importons->grid(),
+                m_deposit = std::make_unique<PhotonDeposit>(m_context, m_buffers, m_settings.deposit.importons->table(),
                                                             m_tracer.photons(), m_chunkPaths * m_settings.maxDeposits,
                                                             *m_grid);
         }

@@ -7,6 +7,7 @@
 #include "compat.glsl"
 #include "constants.glsl"
 #include "gpu_types.glsl"
+#include "hash.glsl"
 #include "photon_grid.glsl"
 SHARED_BEGIN
 
@@ -38,20 +39,55 @@ struct ImportonTraceParams {
 };
 STATIC_ASSERT_SIZE(ImportonTraceParams, 96)
 
-// Push constants of importance_lookup.comp: for every photon slot, the importance density and
-// the largest path importance among the k nearest importons.
-struct ImportanceLookupParams {
-    PhotonGridView importons;
-    uint slotCount;
-    uint k;                  // nearest importons per lookup (<= kMaxGatherK)
-    float maxRadius;         // search radius; fewer than k importons within it: the disk of this radius
-    uint requiredFlags;      // only the photons the map keeps are looked up (photonSelected)
+// The importance grid: importons summed into hashed cells at kImportanceLevels cell sizes (each
+// twice the last) and six normal bins, so a photon finds the importance around it with one
+// lookup per level: the finest cell holding at least k importons (Keller & Wald's n nearest)
+// gives the importance density, its sum over the cell's size squared (a surface crossing a cell
+// of size h covers about h^2). Sparse regions read a coarse level; no level's search grows
+// with the importons around the photon. Open addressing with 32-bit keys; integer sums, so the
+// table does not depend on the order the importons arrive in.
+const uint kImportanceLevels = 8u;
+const uint kPathImportanceLevels = 4u;        // path importance is read from the finest levels only
+const uint kImportanceEmptyKey = 0u;         // a zero-filled table is empty
+const uint kImportanceMaxProbes = 64u;
+const float kImportanceFixedPoint = 1024.0f;  // importance units per integer step
+const float kMaxImportonImportance = 64.0f;   // W clamped to it (sums stay within 32 bits)
+
+struct ImportanceCell {
+    uint key;                // kImportanceEmptyKey while free
+    uint count;              // importons in the cell
+    uint importance;         // sum of W * kImportanceFixedPoint
+    uint maxPathImportance;  // float bits of the largest path importance (positive: ordered as uints)
+};
+STATIC_ASSERT_SIZE(ImportanceCell, 16)
+
+// Push constants of importance_splat.comp and importance_lookup.comp.
+struct ImportanceGridParams {
+    float invCellSize;       // of level 0
+    uint tableMask;          // table size - 1 (a power of two)
+    uint slotCount;          // slots of the input (importons, or photons)
+    uint k;                  // importons a cell needs before its level is used
+    uint requiredFlags;      // lookup: only the photons the map keeps (photonSelected)
     uint rejectedFlags;
     uint pad0;
     uint pad1;
-    uint pad2;
 };
-STATIC_ASSERT_SIZE(ImportanceLookupParams, 48)
+STATIC_ASSERT_SIZE(ImportanceGridParams, 32)
+
+INLINE uint importanceSlotHash(ivec3 c, uint level, uint bin) {
+    return hashCombine(hashCombine(hashCombine(hashCombine(level * 8u + bin, uint(c.x)), uint(c.y)), uint(c.z)),
+                       0x494d5047u);
+}
+
+// The key stored for a cell: a second, independent hash (never the empty key).
+INLINE uint importanceKey(ivec3 c, uint level, uint bin) {
+    uint key = pcgHash(uint(c.x) * 73856093u ^ uint(c.y) * 19349663u ^ uint(c.z) * 83492791u ^ (level * 8u + bin) * 2654435761u);
+    return key == kImportanceEmptyKey ? 1u : key;
+}
+
+INLINE ivec3 importanceCell(vec3 x, float invCellSize, uint level) {
+    return gridCell(x, invCellSize / float(1u << level));
+}
 
 // Push constants of photon_deposit.comp.
 struct PhotonDepositParams {

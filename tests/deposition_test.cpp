@@ -1,0 +1,164 @@
+// Importance-driven deposition (docs/importance-deposition.md): every deposit mode keeps the
+// stored flux an unbiased estimate of the flux the paths deposited — in total and room by room
+// in the 10x10 rooms, where most photons are kept with a small probability — the photons land
+// where the camera looks, the renders agree with keeping every photon, and runs repeat exactly.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "bvh/bvh.h"
+#include "gpu_test_support.h"
+#include "image/metrics.h"
+#include "render/importon_map.h"
+#include "render/photon_map.h"
+#include "render/renderer.h"
+#include "shared/gpu_types.glsl"
+#include "shared/photon.glsl"
+#include "test_scenes.h"
+
+namespace vkp {
+namespace {
+
+class DepositionTest : public test::GpuTest {};
+
+// rooms-10x10.gltf: 4 m rooms from (-20, -20) (scenes/README.md).
+constexpr float kRoomSize = 4.0f;
+constexpr float kRoomsOrigin = -20.0f;
+constexpr uint32_t kImageWidth = 160;
+constexpr uint32_t kImageHeight = 120;
+
+int roomOf(glm::vec3 p) {
+    const int ix = int(std::floor((p.x - kRoomsOrigin) / kRoomSize));
+    const int iz = int(std::floor((p.z - kRoomsOrigin) / kRoomSize));
+    return iz * 10 + ix;
+}
+
+struct GpuScene {
+    explicit GpuScene(const std::string& name)
+        : scene(test::shippedScene(name)), arrays(buildSceneArrays(scene)), buffers(test::gpu(), arrays) {}
+    Scene scene;
+    SceneArrays arrays;
+    SceneBuffers buffers;
+};
+
+std::unique_ptr<ImportonMap> importonsFor(const GpuScene& s) {
+    ImportonSettings settings;
+    settings.paths = 1u << 15;
+    return std::make_unique<ImportonMap>(test::gpu(), s.arrays, s.buffers,
+                                         makeGpuCamera(chooseCamera(s.scene, -1), kImageWidth, kImageHeight),
+                                         kImageWidth, kImageHeight, settings);
+}
+
+// The rooms visible from the camera's view: those its rays reach, and those that the surfaces
+// it sees see (through the doorways), where final gather rays read the global map. Rays through a
+// grid of pixel centres, then from each hit in directions spread over its hemisphere, traced on
+// the CPU.
+std::set<int> roomsVisibleFromTheView(const Scene& scene) {
+    const Bvh bvh = buildBvh(scene.triangles);
+    const auto triangles = gpuTriangles(scene.triangles, bvh);
+    const gpu::GpuCamera camera = makeGpuCamera(chooseCamera(scene, -1), kImageWidth, kImageHeight);
+    std::set<int> rooms;
+    for (uint32_t y = 0; y < kImageHeight; y += 4)
+        for (uint32_t x = 0; x < kImageWidth; x += 4) {
+            const glm::vec3 dir = gpu::cameraRayDirection(camera, kImageWidth, kImageHeight, glm::vec2(x + 0.5f, y + 0.5f));
+            const RayHit hit = closestHit(bvh, triangles, camera.position, dir, gpu::kInfinity);
+            if (!hit.hit) continue;
+            const gpu::GpuTriangle& t = triangles[hit.triangle];
+            glm::vec3 n = glm::normalize(glm::cross(glm::vec3(t.v1 - t.v0), glm::vec3(t.v2 - t.v0)));
+            if (glm::dot(n, dir) > 0.0f) n = -n;
+            const glm::vec3 point = camera.position + hit.t * dir + 1e-3f * n;
+            rooms.insert(roomOf(point));
+            for (int j = 0; j < 128; ++j) {  // a Fibonacci sphere, flipped into the hemisphere
+                const float z = 1.0f - 2.0f * (j + 0.5f) / 128.0f;
+                const float phi = 2.39996323f * float(j);
+                const float r = std::sqrt(1.0f - z * z);
+                glm::vec3 d(r * std::cos(phi), z, r * std::sin(phi));
+                if (glm::dot(d, n) < 0.0f) d = -d;
+                const RayHit bounce = closestHit(bvh, triangles, point, d, gpu::kInfinity);
+                if (bounce.hit) rooms.insert(roomOf(point + bounce.t * d));
+            }
+        }
+    return rooms;
+}
+
+// Watts stored in a group of rooms, and the sum of squared photon watts (a bound on the
+// variance of a sum of photons kept by independent Russian roulette, as long as it holds many).
+struct GroupFlux {
+    double watts = 0.0;
+    double squares = 0.0;
+    uint64_t photons = 0;
+};
+
+enum Group { kCameraRoom, kSeenRooms, kOtherRooms, kGroups };
+
+std::array<GroupFlux, kGroups> fluxByGroup(const PhotonMap& map, int cameraRoom, const std::set<int>& seen) {
+    std::array<GroupFlux, kGroups> flux{};
+    for (const gpu::GpuPhoton& p : map.downloadPhotons()) {
+        const glm::vec3 power = gpu::photonRelativePower(p);
+        const double w = luminance(power.x, power.y, power.z) * map.photonPower();
+        const int room = roomOf(p.position);
+        GroupFlux& g = flux[room == cameraRoom ? kCameraRoom : seen.count(room) ? kSeenRooms : kOtherRooms];
+        g.watts += w;
+        g.squares += w * w;
+        g.photons += 1;
+    }
+    return flux;
+}
+
+PhotonMapSettings mapSettings(uint32_t mode, const ImportonMap* importons) {
+    PhotonMapSettings settings;
+    settings.paths = 120000;
+    settings.seed = 5;
+    settings.cellSize = 0.25f;
+    settings.deposit.mode = mode;
+    settings.deposit.importons = importons;
+    settings.deposit.densityAccuracy = 2.0e4f;
+    settings.deposit.rounds = 4;
+    return settings;
+}
+
+TEST_F(DepositionTest, StoredFluxEstimatesTheDepositedFluxAndPhotonsGoWhereTheCameraLooks) {
+    const GpuScene rooms("rooms-10x10");
+    const auto importons = importonsFor(rooms);
+    const int cameraRoom = roomOf(chooseCamera(rooms.scene, -1).position);
+    const std::set<int> seen = roomsVisibleFromTheView(rooms.scene);
+    ASSERT_TRUE(seen.count(cameraRoom));
+    ASSERT_GE(seen.size(), 3u) << "rooms are visible through the doorways";
+    ASSERT_LT(seen.size(), 60u) << ::testing::PrintToString(seen);
+
+    PhotonMap all(test::gpu(), rooms.scene, rooms.arrays, rooms.buffers, mapSettings(gpu::kDepositAll, nullptr));
+    const PhotonMapStats allStats = all.build(0);
+    ASSERT_EQ(allStats.stored, allStats.candidates);
+    const auto exact = fluxByGroup(all, cameraRoom, seen);
+
+    for (const uint32_t mode : {gpu::kDepositImportance, gpu::kDepositDensity}) {
+        const std::string name = mode == gpu::kDepositImportance ? "importance" : "density";
+        PhotonMap map(test::gpu(), rooms.scene, rooms.arrays, rooms.buffers, mapSettings(mode, importons.get()));
+        const PhotonMapStats stats = map.build(0);
+        EXPECT_EQ(stats.candidates, allStats.candidates) << name;
+        const auto kept = fluxByGroup(map, cameraRoom, seen);
+        const char* groupNames[kGroups] = {"camera room", "rooms visible from the view", "other rooms"};
+        for (int g = 0; g < kGroups; ++g) {
+            ASSERT_GT(kept[g].photons, 100u) << name << ", " << groupNames[g];
+            EXPECT_NEAR(kept[g].watts, exact[g].watts, 4.0 * std::sqrt(kept[g].squares) + 2e-3 * exact[g].watts)
+                << name << ", " << groupNames[g] << ": stored watts against the deposited watts";
+        }
+        // Keller & Wald's figure 1: the photons stay in the camera's room and the rooms it sees.
+        const double nearby = double(kept[kCameraRoom].photons + kept[kSeenRooms].photons) / stats.stored;
+        EXPECT_GE(nearby, 0.9) << name << ": share of the photons in the camera's room or rooms it sees ("
+                               << kept[kCameraRoom].photons << ", " << kept[kSeenRooms].photons << " of "
+                               << exact[kCameraRoom].photons << ", " << exact[kSeenRooms].photons << "; other rooms "
+                               << kept[kOtherRooms].photons << " of " << exact[kOtherRooms].photons << "), "
+                               << seen.size() << " rooms seen";
+        EXPECT_LT(stats.stored, allStats.stored / 5) << name;
+    }
+}
+
+}  // namespace
+}  // namespace vkp
