@@ -40,6 +40,10 @@ void main() {
     if (params.mode == kDepositDensity) {
         float required = max(params.densityAccuracy * sensed.y, params.minDensity);
         accept = densityAcceptance(currentDensity(p.position, decodeOctahedral(p.normal)), required);
+        // Russian roulette against an over-dense region: the weight 1 / p stays below
+        // 1 / densityFloor, so the map's photons keep nearly equal powers (Suykens & Willems saw
+        // the variance grow with the weights).
+        if (required > 0.0f) accept = max(accept, params.densityFloor);
     } else {
         accept = importanceAcceptance(sensed.x, params.importanceScale);
     }

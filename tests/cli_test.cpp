@@ -136,7 +136,9 @@ TEST(Cli, PhotonIntegratorRendersAndReportsItsMaps) {
 TEST(Cli, BadPhotonSettingsExitWithTwo) {
     for (const std::string args : {"--integrator bidirectional", "--integrator photon --gather-k 65",
                                    "--integrator photon --radius -1", "--integrator photon --photons 0",
-                                   "--integrator photon --alpha 1.5"}) {
+                                   "--integrator photon --alpha 1.5", "--integrator photon --deposit nope",
+                                   "--integrator photon --q 0.5 --caustic-photons 10", "--integrator photon --q 2",
+                                   "--integrator photon --deposit-epsilon 0", "--integrator photon --density-rounds 0"}) {
         const RunResult r = runVkphoton("render " + kBox + " --quiet --spp 1 --width 8 --height 8 " + args + " -o " +
                                         (tempDir("bad-photon") / "x.exr").string());
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
@@ -243,6 +245,11 @@ TEST(Cli, PhotonsWritesAPlyPointCloud) {
     const auto bodyStart = in.tellg();
     in.seekg(0, std::ios::end);
     EXPECT_EQ(static_cast<long>(in.tellg() - bodyStart), vertices * (9 * 4 + 1));
+    // Importance deposition keeps fewer photons and says so.
+    const RunResult d = runVkphoton("photons " + std::string(VKPHOTON_SCENES) + "/cornell-glass.gltf --validate --photons 5000 "
+                                    "--deposit importance --importons 4096 -o " + (dir / "deposit.ply").string());
+    ASSERT_EQ(d.exitCode, 0) << d.output;
+    EXPECT_NE(d.output.find("deposit importance: kept"), std::string::npos) << d.output;
     // Bad input: wrong extension, bad counts.
     EXPECT_EQ(runVkphoton("photons " + kBox + " -o " + (dir / "x.txt").string()).exitCode, 2);
     EXPECT_EQ(runVkphoton("photons " + kBox + " --photons 0").exitCode, 2);

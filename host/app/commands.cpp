@@ -13,6 +13,7 @@
 #include "image/metrics.h"
 #include "render/photon_export.h"
 #include "render/guide_debug.h"
+#include "render/deposition.h"
 #include "render/photon_map.h"
 #include "image/png.h"
 #include "scene/gltf_loader.h"
@@ -176,10 +177,20 @@ int runPhotons(const PhotonsCommandOptions& options) {
     vk::Context context({options.validate, options.device});
     const SceneArrays arrays = buildSceneArrays(scene);
     const SceneBuffers buffers(context, arrays);
+    RenderSettings render;  // what the importons need: camera, image, seed, deposit flags
+    render.photon = options.deposit;
+    render.width = options.width;
+    render.height = options.height;
+    render.cameraIndex = options.cameraIndex;
+    render.seed = options.seed;
+    const std::unique_ptr<ImportonMap> importons = makeImportonMap(context, scene, arrays, buffers, render);
     PhotonMapSettings settings;  // every stored photon, in chunks: maps of millions fit
     settings.paths = options.photons;
     settings.maxDeposits = options.maxDeposits;
     settings.seed = options.seed;
+    settings.deposit = depositSettings(options.deposit, options.deposit.deposit, importons.get());
+    if (options.deposit.deposit == DepositMode::Density)
+        settings.cellSize = densityCellSize(options.deposit, options.deposit.gatherK, *importons);
     PhotonMap map(context, scene, arrays, buffers, settings);
     const PhotonMapStats stats = map.build(0);
     const PhotonCounters& c = stats.traced;
@@ -194,6 +205,11 @@ int runPhotons(const PhotonsCommandOptions& options) {
                    "absorbed {}, lost {}, truncated {}; wrote {}\n",
                    c.emitted, seconds, context.deviceName(), c.storedCaustic, c.storedGlobal, c.storedPrimary,
                    c.absorbed, c.lost, c.truncated, output.string());
+    if (!options.quiet && importons)
+        fmt::print(stderr, "deposit {}: kept {} of {} photons ({:.1f} %, {:.1f} MB); {} importons, f = {:.4g}\n",
+                   depositModeName(options.deposit.deposit), stats.stored, stats.candidates,
+                   stats.candidates ? 100.0 * stats.stored / stats.candidates : 0.0, map.bytes() / 1048576.0,
+                   importons->stats().stored, importons->stats().importanceScale);
     if (context.validationEnabled()) context.throwOnValidationMessages();
     return kExitOk;
 }

@@ -115,6 +115,16 @@ int main(int argc, char** argv) {
     photonsCmd->add_option("--photons", photons.photons, "Photon paths to emit")->capture_default_str()->check(CLI::Range(1u, 1u << 26));
     photonsCmd->add_option("--max-deposits", photons.maxDeposits, "Stored photons per path at most")->capture_default_str()->check(CLI::Range(1u, 64u));
     photonsCmd->add_option("--seed", photons.seed, "Random seed")->capture_default_str();
+    photonsCmd->add_option("--deposit", photons.deposit.deposit, "Which photons the map keeps: all, importance or density (as for render)")
+        ->transform(oneOf<DepositMode>({{"all", DepositMode::All}, {"importance", DepositMode::Importance}, {"density", DepositMode::Density}}))
+        ->option_text("all|importance|density [all]");
+    photonsCmd->add_option("--importons", photons.deposit.importonPaths, "Camera paths of the importon pass")->capture_default_str()->check(CLI::Range(1u, 1u << 24));
+    photonsCmd->add_option("--deposit-epsilon", photons.deposit.depositEpsilon, "Least acceptance probability of a photon")->capture_default_str()->check(CLI::Range(1e-6f, 1.0f));
+    photonsCmd->add_flag("--deposit-cutoff", photons.deposit.depositCutoff, "Drop photons below --deposit-epsilon (biased)");
+    photonsCmd->add_option("--density-accuracy", photons.deposit.densityAccuracy, "--deposit density: required photons per square unit per unit of path importance")->capture_default_str()->check(CLI::PositiveNumber);
+    photonsCmd->add_option("--width", photons.width, "Width of the image the importons' camera looks at")->capture_default_str()->check(CLI::Range(1u, 16384u));
+    photonsCmd->add_option("--height", photons.height, "Height of that image")->capture_default_str()->check(CLI::Range(1u, 16384u));
+    photonsCmd->add_option("--camera", photons.cameraIndex, "Scene camera index for the importons")->check(CLI::NonNegativeNumber);
     photonsCmd->add_option("--device", photons.device, "Vulkan device: index or name substring");
     photonsCmd->add_flag("--validate", photons.validate, "Enable the Khronos validation layer; any message is an error");
     photonsCmd->add_flag("--quiet", photons.quiet, "No summary output");

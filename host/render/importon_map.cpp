@@ -82,19 +82,19 @@ ImportonMap::ImportonMap(vk::Context& context, const SceneArrays& arrays, const 
 
     const std::vector<gpu::GpuPhoton> importons = downloadImportons();
     std::vector<glm::vec3> positions;
-    double pathImportanceSum = 0.0;
-    uint64_t seenThroughBounce = 0;
+    std::vector<float> pathImportance;
     for (const gpu::GpuPhoton& p : importons) {
         if ((gpu::photonFlags(p) & gpu::kPhotonValid) == 0) continue;
         positions.push_back(p.position);
         const float w = gpu::photonRelativePower(p).y;
-        if (w > 0.0f) {
-            pathImportanceSum += w;
-            seenThroughBounce += 1;
-        }
+        if (w > 0.0f) pathImportance.push_back(w);
     }
     m_stats.stored = positions.size();
-    m_stats.meanPathImportance = seenThroughBounce ? static_cast<float>(pathImportanceSum / seenThroughBounce) : 0.0f;
+    // The median: 1 / |x - y|^2 makes the mean follow a few importons near corners.
+    if (!pathImportance.empty()) {
+        std::nth_element(pathImportance.begin(), pathImportance.begin() + pathImportance.size() / 2, pathImportance.end());
+        m_stats.medianPathImportance = pathImportance[pathImportance.size() / 2];
+    }
     m_stats.cellSize = occupancyCellSize(positions, settings.k, sceneSurfaceArea(arrays));
 
     buildTable(context);

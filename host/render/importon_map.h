@@ -32,7 +32,7 @@ struct ImportonStats {
     float cellSize = 0.0f;            // of the importance grid's finest level
     uint32_t tableSize = 0;           // importance grid entries
     float importanceScale = 0.0f;     // f: 1 / the least importance density a test ray sensed
-    float meanPathImportance = 0.0f;  // over importons seen through a bounce (Suykens & Willems)
+    float medianPathImportance = 0.0f;  // over importons seen through a bounce (Suykens & Willems)
     double seconds = 0.0;
 };
 

@@ -9,7 +9,7 @@
 #include "passes/scene_pass.h"
 #include "passes/visible_point_pass.h"
 #include "render/raster_direct.h"
-#include "render/importon_map.h"
+#include "render/deposition.h"
 #include "render/photon_map.h"
 #include "render/sample_loop.h"
 #include "shared/photon_render.glsl"
@@ -47,57 +47,6 @@ gpu::VisiblePointParams visiblePointParams(const RenderSettings& s, const Scene&
     params.lightCount = lightCount;
     params.flags = raster.pathFlags() | (s.pixelCentres ? gpu::kPathFlagPixelCentres : 0u);
     return params;
-}
-
-uint32_t depositModeCode(DepositMode mode) {
-    switch (mode) {
-        case DepositMode::Importance: return gpu::kDepositImportance;
-        case DepositMode::Density: return gpu::kDepositDensity;
-        default: return gpu::kDepositAll;
-    }
-}
-
-const char* depositModeName(DepositMode mode) {
-    switch (mode) {
-        case DepositMode::Importance: return "importance";
-        case DepositMode::Density: return "density";
-        default: return "all";
-    }
-}
-
-// The importon pass for the render's camera, unless every photon is kept.
-std::unique_ptr<ImportonMap> makeImportonMap(vk::Context& context, const Scene& scene, const SceneArrays& arrays,
-                                             const SceneBuffers& buffers, const RenderSettings& s, RenderStats& stats) {
-    if (s.photon.deposit == DepositMode::All) return nullptr;
-    ImportonSettings settings;
-    settings.paths = s.photon.importonPaths;
-    settings.seed = s.seed;
-    auto map = std::make_unique<ImportonMap>(context, arrays, buffers,
-                                             makeGpuCamera(chooseCamera(scene, s.cameraIndex), s.width, s.height),
-                                             s.width, s.height, settings);
-    stats.importons = map->stats().stored;
-    stats.importanceScale = map->stats().importanceScale;
-    stats.photonSeconds += map->stats().seconds;
-    stats.photonMapBytes += map->bytes();
-    return map;
-}
-
-DepositSettings depositSettings(const PhotonRenderSettings& p, DepositMode mode, const ImportonMap* importons) {
-    DepositSettings d;
-    d.mode = depositModeCode(mode);
-    d.importons = importons;
-    d.epsilon = p.depositEpsilon;
-    d.cutoff = p.depositCutoff;
-    d.densityAccuracy = p.densityAccuracy;
-    d.rounds = p.densityRounds;
-    return d;
-}
-
-// Density control's map: cells holding k photons at the mean required density.
-float densityCellSize(const PhotonRenderSettings& p, const ImportonMap& importons) {
-    const double required = double(p.densityAccuracy) * importons.stats().meanPathImportance;
-    if (!(required > 0.0)) throw InputError("--deposit density: no importon sees the scene through a bounce");
-    return static_cast<float>(std::sqrt(p.gatherK / (gpu::kPi * required)));
 }
 
 void addMapStats(RenderStats& stats, const PhotonMapStats& map) {
@@ -142,7 +91,8 @@ RenderResult PhotonIntegrator::renderTwoPass(const RenderSettings& settings, flo
     // Pass 1: the importons (unless every photon is kept) and the photon maps. The global map's
     // search radius follows its density: the radius of a disk holding k photons if they spread
     // evenly over the scene's surfaces (with importance deposition, the density where p = 1).
-    const std::unique_ptr<ImportonMap> importons = makeImportonMap(m_context, m_scene, m_arrays, m_buffers, settings, stats);
+    const std::unique_ptr<ImportonMap> importons = makeImportonMap(m_context, m_scene, m_arrays, m_buffers, settings);
+    addImportonStats(stats, importons.get());
     // Keller & Wald's (N, q): N paths for the caustic map, the first q N of them for the global one.
     const bool splitByQ = p.q > 0.0f;
     const uint32_t globalPaths = splitByQ ? std::max(1u, uint32_t(std::ceil(double(p.q) * p.globalPaths))) : p.globalPaths;
@@ -153,10 +103,15 @@ RenderResult PhotonIntegrator::renderTwoPass(const RenderSettings& settings, flo
     globalSettings.seed = settings.seed;
     globalSettings.deposit = depositSettings(p, p.deposit, importons.get());
     const double area = sceneSurfaceArea(m_arrays);
-    if (p.deposit == DepositMode::Density)
-        globalSettings.cellSize = densityCellSize(p, *importons);
-    else
-        globalSettings.cellSizeFor = [&](uint64_t photons) { return evenSpreadRadius(p.gatherK, photons, area); };
+    globalSettings.cellSizeFor = [&](uint64_t photons) { return evenSpreadRadius(p.gatherK, photons, area); };
+    if (p.deposit == DepositMode::Density) {
+        // Rounds decide against cells of the required density; the stored density is at most
+        // the one of all deposits (the even-spread radius of the candidates).
+        globalSettings.cellSize = densityCellSize(p, p.gatherK, *importons);
+        globalSettings.cellSizeFor = [&, densityCell = globalSettings.cellSize](uint64_t photons) {
+            return std::max(densityCell, evenSpreadRadius(p.gatherK, photons, area));
+        };
+    }
     PhotonMap globalMap(m_context, m_scene, m_arrays, m_buffers, globalSettings);
     const PhotonMapStats globalStats = globalMap.build(0);
     const float globalRadius = kGlobalRadiusFactor * globalStats.cellSize;
@@ -285,7 +240,8 @@ RenderResult PhotonIntegrator::renderProgressive(const RenderSettings& settings,
     mapSettings.seed = settings.seed;
     mapSettings.rejectedFlags = gpu::kPhotonPrimary;
     mapSettings.cellSize = 2.0f * radius;
-    const std::unique_ptr<ImportonMap> importons = makeImportonMap(m_context, m_scene, m_arrays, m_buffers, settings, stats);
+    const std::unique_ptr<ImportonMap> importons = makeImportonMap(m_context, m_scene, m_arrays, m_buffers, settings);
+    addImportonStats(stats, importons.get());
     mapSettings.deposit = depositSettings(p, p.deposit, importons.get());
     PhotonMap map(m_context, m_scene, m_arrays, m_buffers, mapSettings);
 

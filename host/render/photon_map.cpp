@@ -95,6 +95,7 @@ gpu::PhotonDepositParams PhotonMap::depositParams(uint32_t firstPath, uint32_t p
     params.densityAccuracy = d.densityAccuracy;
     params.minDensity = d.minDensity;
     params.densityRadius = kDensityRadiusCells * m_grid->settings().cellSize;
+    params.densityFloor = d.densityFloor;
     return params;
 }
 

@@ -25,6 +25,7 @@ struct DepositSettings {
     bool cutoff = false;                     // --deposit-cutoff: drop below epsilon (biased) instead of clamping
     float densityAccuracy = 0.0f;            // --density-accuracy C: required density = C * path importance
     float minDensity = 0.0f;                 // required density where the path importance is lower
+    float densityFloor = 0.1f;               // least acceptance where density is required (weights <= 10)
     uint32_t densityK = 16;                  // nearest stored photons per current-density estimate
     uint32_t rounds = 8;                     // density control: trace, deposit, rebuild the grid, repeat
 };

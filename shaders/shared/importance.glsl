@@ -107,7 +107,7 @@ struct PhotonDepositParams {
     float densityAccuracy;   // C: required density = C * path importance (photons per square unit)
     float minDensity;        // required density where the path importance is lower
     float densityRadius;     // search radius of the current-density estimate
-    uint pad0;
+    float densityFloor;      // least acceptance where some density is required (bounds the weight 1/p)
 };
 STATIC_ASSERT_SIZE(PhotonDepositParams, 80)
 
