@@ -62,7 +62,7 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
                         {"causticStored", stats.causticPhotons}, {"dropped", stats.photonsDropped},
                         {"mapBytes", stats.photonMapBytes}, {"seconds", stats.photonSeconds},
                         {"deposit", stats.deposit}, {"globalDeposits", stats.globalCandidates},
-                        {"causticDeposits", stats.causticCandidates}, {"importonsStored", stats.importons},
+                        {"causticDeposits", stats.causticCandidates}, {"importonsStored", stats.importons}, {"importonBytes", stats.importonBytes},
                         {"importanceScale", stats.importanceScale}};
     }
     j["device"] = stats.device;
@@ -83,10 +83,10 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
 void printDepositStats(const RenderStats& stats) {
     const auto share = [](uint64_t kept, uint64_t deposited) { return deposited ? 100.0 * kept / deposited : 0.0; };
     fmt::print(stderr, "deposit {}: kept {} of {} global deposits ({:.1f} %), {} of {} caustic ({:.1f} %); "
-                       "{} importons, f = {:.4g}\n",
+                       "{} importons ({:.1f} MB), f = {:.4g}\n",
                stats.deposit, stats.globalPhotons, stats.globalCandidates, share(stats.globalPhotons, stats.globalCandidates),
                stats.causticPhotons, stats.causticCandidates, share(stats.causticPhotons, stats.causticCandidates),
-               stats.importons, stats.importanceScale);
+               stats.importons, stats.importonBytes / 1048576.0, stats.importanceScale);
 }
 
 }  // namespace

@@ -41,7 +41,7 @@ void addImportonStats(RenderStats& stats, const ImportonMap* importons) {
     stats.importons = importons->stats().stored;
     stats.importanceScale = importons->stats().importanceScale;
     stats.photonSeconds += importons->stats().seconds;
-    stats.photonMapBytes += importons->bytes();
+    stats.importonBytes += importons->bytes();
 }
 
 DepositSettings depositSettings(const PhotonRenderSettings& p, DepositMode mode, const ImportonMap* importons) {

@@ -116,6 +116,7 @@ struct RenderStats {
     uint64_t globalCandidates = 0;    // photons the global paths deposited before the deposit decision
     uint64_t causticCandidates = 0;
     uint64_t importons = 0;           // stored by the importon pass
+    uint64_t importonBytes = 0;       // the importons and their importance grid
     float importanceScale = 0.0f;     // Keller & Wald's f
     double photonSeconds = 0.0;       // tracing, compaction and grid builds
     float gatherRadius = 0.0f;        // caustic radius / initial SPPM radius, world units

@@ -47,7 +47,7 @@ STATIC_ASSERT_SIZE(ImportonTraceParams, 96)
 // with the importons around the photon. Open addressing with 32-bit keys; integer sums, so the
 // table does not depend on the order the importons arrive in.
 const uint kImportanceLevels = 8u;
-const uint kPathImportanceLevels = 4u;        // path importance is read from the finest levels only
+const uint kPathImportanceLevels = 6u;        // path importance is read from the finest levels only
 const uint kImportanceEmptyKey = 0u;         // a zero-filled table is empty
 const uint kImportanceMaxProbes = 64u;
 const float kImportanceFixedPoint = 1024.0f;  // importance units per integer step
