@@ -18,6 +18,7 @@
 
 #include "image/metrics.h"
 #include "render/renderer.h"
+#include "shared/photon.glsl"
 #include "scene/gltf_loader.h"
 #include "vk/context.h"
 
@@ -97,14 +98,15 @@ int main(int argc, char** argv) {
         const std::vector<std::pair<DepositMode, const char*>> modes{
             {DepositMode::All, "all"}, {DepositMode::Importance, "importance"}, {DepositMode::Density, "density"}};
         std::map<std::string, std::vector<Point>> curves;
-        fmt::print("| deposit | paths | stored photons | map MB | importon MB | relMSE | photon pass s | render s |\n");
+        fmt::print("| deposit | paths | stored photons | photon MB | importon MB | relMSE | photon pass s | render s |\n");
         fmt::print("|---|---:|---:|---:|---:|---:|---:|---:|\n");
         for (const auto& [mode, name] : modes)
             for (const uint32_t n : mode == DepositMode::All ? paths : depositPaths) {
                 RenderSettings s = settingsFor(width, height, spp, mode, n);
                 s.photon.densityAccuracy = densityAccuracy;
                 const RenderResult r = renderer.render(s);
-                Point p{n, r.stats.globalPhotons + r.stats.causticPhotons, r.stats.photonMapBytes,
+                const uint64_t stored = r.stats.globalPhotons + r.stats.causticPhotons;
+                Point p{n, stored, stored * sizeof(gpu::GpuPhoton),
                         relativeMse(r.image, reference.image), r.stats.photonSeconds};
                 curves[name].push_back(p);
                 fmt::print("| {} | {} | {} | {:.2f} | {:.2f} | {:.3g} | {:.2f} | {:.2f} |\n", name, n, p.stored,
