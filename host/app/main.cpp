@@ -96,6 +96,8 @@ int main(int argc, char** argv) {
         });
     guideGroup->add_option("--guide-cache", gd.cache, "on: grids built once per cache cell and normal bin; off: a k-nearest gather at every vertex (the paper)")
         ->transform(oneOf<bool>({{"on", true}, {"off", false}}))->option_text("on|off [on]");
+    guideGroup->add_option("--guide-rr", gd.roulette, "on: Russian roulette by the guide's estimate of the light a path still brings against the pixel's (adjoint-driven); off: by the path's throughput")
+        ->transform(oneOf<bool>({{"on", true}, {"off", false}}))->option_text(gd.roulette ? "on|off [on]" : "on|off [off]");
     guideGroup->add_option("--guide-mix", gd.mix, "Probability of sampling the guiding grid rather than the BSDF (1: the paper's method)")->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
 
     PhotonsCommandOptions photons;

@@ -69,7 +69,7 @@ PathGuide::PathGuide(vk::Context& context, const Scene& scene, const SceneArrays
 }
 
 std::vector<const vk::Buffer*> PathGuide::buffers() const {
-    if (m_cache) return {&m_cache->cells(), &m_cache->cdfs()};
+    if (m_cache) return {&m_cache->cells(), &m_cache->cdfs(), &m_cache->irradiance()};
     return {&m_map->grid().cellStart(), &m_map->grid().photons()};
 }
 

@@ -88,6 +88,26 @@ INLINE vec3 guideBinNormal(uint bin) {
     return vec3(axis == 0u ? s : 0.0f, axis == 1u ? s : 0.0f, axis == 2u ? s : 0.0f);
 }
 
+// Guide-driven Russian roulette (--guide-rr on), after Vorba and Krivanek, "Adjoint-Driven Russian
+// Roulette and Splitting in Light Transport Simulation" (2016): at a vertex, the path's expected
+// further contribution is its throughput times the radiance the vertex reflects from indirect
+// light, estimated from the guiding photons' irradiance. Measured against the pixel's value (the
+// reference: what the path has gathered so far plus that expectation, at its first vertex with an
+// estimate), a path whose ratio falls below the weight window's lower bound 2 / (1 + s) survives
+// with probability `ratio` (a survivor then sits at the window's centre); others go on. There is
+// no splitting. Any survival probability above zero keeps the estimator unbiased; the floor
+// bounds the weight where the estimate says "nothing" but some light still arrives.
+const float kGuideRouletteWindow = 5.0f;        // s, the weight window's width (the paper's value)
+const float kGuideRouletteMinSurvival = 0.05f;
+
+// Survival probability of a path expected to bring `expected` (luminance) more, against `reference`.
+INLINE float guideSurvival(float expected, float reference) {
+    if (!(reference > 0.0f)) return 1.0f;
+    float ratio = expected / reference;
+    if (!(ratio < 2.0f / (1.0f + kGuideRouletteWindow))) return 1.0f;  // in the window, or NaN
+    return max(ratio, kGuideRouletteMinSurvival);
+}
+
 // Push constants the guided path tracer adds after PathTraceParams.
 struct GuideParams {
     PhotonGridView grid;  // the guiding photon map (with the cache: the cache's cells)
