@@ -1,6 +1,7 @@
 // The photon-guided sampling grid (shaders/shared/guiding.glsl) on the host: its pdf integrates to
 // one, matches what it samples (chi-square), puts more samples where more flux arrives, and gives
-// every direction a non-zero density.
+// every direction a non-zero density; guide-driven Russian roulette never gives a path zero odds.
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -84,6 +85,20 @@ TEST(Guiding, FollowsTheFluxAndNeverVanishes) {
     Grid empty{{}, 4, 16};
     guideFinalize(empty.cdf, 4, 16);
     EXPECT_NEAR(guidePdf(empty.cdf, 4, 16, peak), cosineHemispherePdf(peak.z), 1e-5f);
+}
+
+// Inside the weight window (from 2 / (1 + s) of the reference up) a path goes on; below it, it
+// survives with the ratio, never less than the floor; without a reference nothing is decided.
+TEST(Guiding, RouletteSurvivalFollowsTheWeightWindow) {
+    const float lower = 2.0f / (1.0f + kGuideRouletteWindow);
+    EXPECT_EQ(guideSurvival(lower, 1.0f), 1.0f);
+    EXPECT_EQ(guideSurvival(5.0f, 1.0f), 1.0f);
+    EXPECT_FLOAT_EQ(guideSurvival(0.5f * lower, 1.0f), 0.5f * lower);
+    EXPECT_FLOAT_EQ(guideSurvival(0.5f * lower * 8.0f, 8.0f), 0.5f * lower);
+    EXPECT_EQ(guideSurvival(0.0f, 1.0f), kGuideRouletteMinSurvival);
+    EXPECT_GT(kGuideRouletteMinSurvival, 0.0f);
+    EXPECT_EQ(guideSurvival(1.0f, 0.0f), 1.0f);
+    EXPECT_EQ(guideSurvival(std::nanf(""), 1.0f), 1.0f);
 }
 
 }  // namespace
