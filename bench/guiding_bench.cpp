@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
     std::string device, referencePath, only;
     std::vector<float> mixes{0.5f};
     std::vector<std::string> roulettes{"off", "on"};
+    uint32_t adapt = 0;
     uint32_t guidePhotons = GuideRenderSettings{}.photons;
     app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
     app.add_option("--size", size, "image size")->capture_default_str();
@@ -41,6 +42,7 @@ int main(int argc, char** argv) {
     app.add_option("--mixes", mixes, "guide-mix values of the default (cached) guided rows")->delimiter(',');
     app.add_option("--guide-rr", roulettes, "--guide-rr choices of the guided rows")->delimiter(',')
         ->check(CLI::IsMember({"off", "on"}));
+    app.add_option("--guide-adapt", adapt, "--guide-adapt of the guided rows")->capture_default_str();
     app.add_option("--guide-photons", guidePhotons, "guiding map paths")->capture_default_str();
     app.add_option("--only", only, "run only this method (cosine, path, paper, guided)");
     app.add_option("--device", device);
@@ -80,6 +82,7 @@ int main(int argc, char** argv) {
             guided.integrator = Integrator::Guided;
             guided.guide.mix = mixes[i / roulettes.size()];
             guided.guide.roulette = roulettes[i % roulettes.size()] == "on";
+            guided.guide.adaptPhotons = adapt;
             methods.push_back({guidedNames[i].c_str(), guided});
         }
         fmt::print("\n| method | spp | seconds | relMSE | segments per path |\n|---|---|---|---|---|\n");

@@ -6,7 +6,8 @@
 // cells hashed to the same bucket. For guide-driven Russian roulette it also stores the grid's
 // indirect irradiance: the photons' flux over the area they cover in the bin's plane (their
 // bounding rectangle, each side widened by the range's expected shortfall for that many uniform
-// points, (count + 1) / (count - 1), and kept between a quarter and the whole cell edge).
+// points, (count + 1) / (count - 1), and kept between a quarter and the whole cell edge), and the
+// photon count, from which lookups recompute the grid's resolution under --guide-adapt.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -29,7 +30,7 @@ void main() {
     uint bin = index - bucket * kGuideNormalBins;
     if (bucket > guide.grid.tableMask) return;
     uint gm = guide.gridSize & 0xffu;
-    uint gn = guide.gridSize >> 8u;
+    uint gn = (guide.gridSize >> 8u) & 0xffu;
     uint begin = cellStart[bucket];
     uint end = cellStart[bucket + 1u];
     ivec3 cell = begin < end ? gridCell(gridPhotons[begin].position, guide.grid.invCellSize) : ivec3(0);
@@ -57,7 +58,10 @@ void main() {
         lo = min(lo, st);
         hi = max(hi, st);
     }
-    guideFinalize(cells, gm, gn);
+    uint photonsPerCell = guide.gridSize >> 16u;
+    uvec2 size = photonsPerCell > 0u ? guideAdaptiveSize(gm, gn, photonsPerCell, count) : uvec2(gm, gn);
+    guideCoarsen(cells, gm, gn, size.x, size.y);
+    guideFinalize(cells, size.x, size.y);
     for (uint i = 0u; i < kMaxGuideCells; ++i) cacheCdfs[index * kMaxGuideCells + i] = cells[i];
     float edge = 1.0f / guide.grid.invCellSize;
     vec2 extent = count > 0.0f ? (hi - lo) * ((count + 1.0f) / max(count - 1.0f, 1.0f)) : vec2(edge);

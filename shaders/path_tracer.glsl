@@ -82,7 +82,7 @@ BsdfSample sampleGuided(vec3 position, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b,
     if (guide.mix <= 0.0f || specularIsDelta(bsdf) || bsdf.transmission > 0.0f || !storesPhotons(bsdf))
         return sampleBsdf(bsdf, wo, entering, true, u);
     uint gm = guide.gridSize & 0xffu;
-    uint gn = guide.gridSize >> 8u;
+    uint gn = (guide.gridSize >> 8u) & 0xffu;
     float cells[kMaxGuideCells];
     // The grid's frame: the shading frame, or the cache bin's axis frame.
     vec3 gt = t;
@@ -98,7 +98,14 @@ BsdfSample sampleGuided(vec3 position, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b,
     orthonormalBasis(gnrm, gt, gb);
     uint base = (bucket * kGuideNormalBins + bin) * kMaxGuideCells;
     for (uint i = 0u; i < kMaxGuideCells; ++i) cells[i] = cacheCdfs[base + i];
-    irradiance = vec4(cacheIrradiance[bucket * kGuideNormalBins + bin].rgb, 1.0f);
+    vec4 cachedIrradiance = cacheIrradiance[bucket * kGuideNormalBins + bin];
+    irradiance = vec4(cachedIrradiance.rgb, 1.0f);
+    uint photonsPerCell = guide.gridSize >> 16u;
+    if (photonsPerCell > 0u) {
+        uvec2 size = guideAdaptiveSize(gm, gn, photonsPerCell, cachedIrradiance.w);
+        gm = size.x;
+        gn = size.y;
+    }
 #else
     for (uint i = 0u; i < kMaxGuideCells; ++i) cells[i] = 0.0f;
     float radius2;

@@ -51,7 +51,7 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
     if (s.integrator == Integrator::Guided) {
         const GuideRenderSettings& g = s.guide;
         j["settings"]["guide"] = {{"photons", g.photons}, {"k", g.k}, {"grid", fmt::format("{}x{}", g.gridU, g.gridV)},
-                                  {"mix", g.mix}, {"cache", g.cache}, {"roulette", g.roulette},
+                                  {"mix", g.mix}, {"cache", g.cache}, {"roulette", g.roulette}, {"adapt", g.adaptPhotons},
                                   {"searchRadius", stats.globalRadius}};
     }
     if (s.integrator != Integrator::Path) {

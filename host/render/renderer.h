@@ -28,6 +28,7 @@ struct GuideRenderSettings {
     uint32_t gridV = 16;              // ... by n sectors of phi (m * n <= 64)
     float mix = 0.5f;                 // --guide-mix: probability of sampling the grid (1: the paper's method)
     bool cache = true;                // --guide-cache: grids per cache cell and normal bin, built once
+    uint32_t adaptPhotons = 0;        // --guide-adapt: coarsen cache grids to this many photons per cell (0: off)
     bool roulette = false;            // --guide-rr: Russian roulette by the guide's irradiance estimate
 };
 
