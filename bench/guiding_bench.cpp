@@ -4,9 +4,10 @@
 //   path     the path tracer: next-event estimation + BSDF sampling, MIS
 //   paper    guided, the paper's method: a k-nearest gather per vertex, grid only (mix 1)
 //   per-vertex  a k-nearest gather per vertex, mixed with the BSDF like the default (no cache)
-//   guided   vkphoton's default: guiding cache, one-sample MIS with the BSDF (mix 0.5)
+//   guided   vkphoton's default: guiding cache, one-sample MIS with the BSDF (mix 0.5), one row
+//            per --mixes value and --guide-rr choice (Russian roulette by throughput or by the guide)
 // Usage: build/bench/guiding_bench [SCENE] [--size N --reference-spp N --reference FILE.exr
-//                                   --max-spp N --max-seconds S --device D]
+//                                   --max-spp N --max-seconds S --mixes M,.. --guide-rr off,on --device D]
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -29,6 +30,8 @@ int main(int argc, char** argv) {
     double maxSeconds = 60.0;
     std::string device, referencePath, only;
     std::vector<float> mixes{0.5f};
+    std::vector<std::string> roulettes{"off", "on"};
+    uint32_t adapt = 0;
     uint32_t guidePhotons = GuideRenderSettings{}.photons;
     app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
     app.add_option("--size", size, "image size")->capture_default_str();
@@ -37,6 +40,9 @@ int main(int argc, char** argv) {
     app.add_option("--max-spp", maxSpp, "largest sample count per method")->capture_default_str();
     app.add_option("--max-seconds", maxSeconds, "stop a method's curve once a render takes longer")->capture_default_str();
     app.add_option("--mixes", mixes, "guide-mix values of the default (cached) guided rows")->delimiter(',');
+    app.add_option("--guide-rr", roulettes, "--guide-rr choices of the guided rows")->delimiter(',')
+        ->check(CLI::IsMember({"off", "on"}));
+    app.add_option("--guide-adapt", adapt, "--guide-adapt of the guided rows")->capture_default_str();
     app.add_option("--guide-photons", guidePhotons, "guiding map paths")->capture_default_str();
     app.add_option("--only", only, "run only this method (cosine, path, paper, guided)");
     app.add_option("--device", device);
@@ -69,14 +75,17 @@ int main(int argc, char** argv) {
         perVertex.guide.mix = mixes.front();
         methods.push_back({"per-vertex", perVertex});
         std::vector<std::string> guidedNames;
-        for (float mix : mixes) guidedNames.push_back(fmt::format("guided mix {}", mix));
-        for (size_t i = 0; i < mixes.size(); ++i) {
+        for (float mix : mixes)
+            for (const std::string& rr : roulettes) guidedNames.push_back(fmt::format("guided mix {} rr {}", mix, rr));
+        for (size_t i = 0; i < guidedNames.size(); ++i) {
             RenderSettings guided = base;
             guided.integrator = Integrator::Guided;
-            guided.guide.mix = mixes[i];
+            guided.guide.mix = mixes[i / roulettes.size()];
+            guided.guide.roulette = roulettes[i % roulettes.size()] == "on";
+            guided.guide.adaptPhotons = adapt;
             methods.push_back({guidedNames[i].c_str(), guided});
         }
-        fmt::print("\n| method | spp | seconds | relMSE |\n|---|---|---|---|\n");
+        fmt::print("\n| method | spp | seconds | relMSE | segments per path |\n|---|---|---|---|---|\n");
         for (const Method& m : methods) {
             if (!only.empty() && std::string(m.name).rfind(only, 0) != 0) continue;
             for (uint32_t spp = 1; spp <= maxSpp; spp *= 2) {
@@ -84,8 +93,8 @@ int main(int argc, char** argv) {
                 s.samplesPerPixel = spp;
                 s.seed = 1;
                 const RenderResult r = renderer.render(s);
-                fmt::print("| {} | {} | {:.2f} | {:.5f} |\n", m.name, spp, r.stats.renderSeconds,
-                           relativeMse(r.image, reference));
+                fmt::print("| {} | {} | {:.2f} | {:.5f} | {:.3f} |\n", m.name, spp, r.stats.renderSeconds,
+                           relativeMse(r.image, reference), double(r.stats.pathSegments) / double(r.stats.cameraPaths));
                 std::fflush(stdout);
                 if (r.stats.renderSeconds > maxSeconds) break;
             }

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Plots benchmark convergence tables as a PNG (no plotting library needed).
 
-Reads the Markdown rows `| method | spp | seconds | relMSE |` that bench/guiding_bench and
+Reads the Markdown rows `| method | spp | seconds | relMSE | ...` that bench/guiding_bench and
 bench/photon_map_bench print, and draws two log-log panels side by side: relMSE against samples
 per pixel (left) and against seconds (right), one colour per method, with grid lines at every
 decade. Usage: python3 scripts/plot_convergence.py TABLE.txt OUT.png
@@ -19,7 +19,7 @@ def read_rows(path):
     curves = {}
     for line in open(path):
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
-        if len(cells) != 4:
+        if len(cells) < 4:  # later columns (e.g. segments per path) are ignored
             continue
         try:
             spp, seconds, err = int(cells[1]), float(cells[2]), float(cells[3])

@@ -19,7 +19,8 @@ layout(local_size_x = 64) in;
 
 layout(std430, set = 0, binding = 8) buffer Film { vec4 film[]; };  // rgb sum, sample count
 layout(std430, set = 0, binding = 9) buffer Counters { uint counters[]; };
-// counters[0]: samples that produced a non-finite value (dropped)
+// counters[0]: samples that produced a non-finite value (dropped); counters[1] (low) and [2] (high
+// word): rays traced from camera-path vertices (the work Russian roulette saves)
 layout(std430, set = 0, binding = 10) readonly buffer RasterDirect { vec4 rasterDirect[]; };
 
 #ifdef GUIDED
@@ -27,6 +28,7 @@ layout(std430, set = 0, binding = 10) readonly buffer RasterDirect { vec4 raster
 #ifdef GUIDE_CACHE
 layout(std430, set = 0, binding = 11) readonly buffer CacheCells { ivec4 cacheCells[]; };
 layout(std430, set = 0, binding = 12) readonly buffer CacheCdfs { float cacheCdfs[]; };
+layout(std430, set = 0, binding = 13) readonly buffer CacheIrradiance { vec4 cacheIrradiance[]; };
 #else
 #define PHOTON_GRID_BINDING 11
 #include "photon_gather.glsl"
@@ -45,6 +47,7 @@ struct PathState {
     vec3 mediumSigma;  // absorption of the solid the ray is inside (Beer-Lambert)
     float lastPdf;     // solid-angle pdf of the last BSDF sample (for MIS at emitters)
     bool lastDelta;    // camera rays and delta lobes: emission is added unweighted
+    float reference;   // guide-driven Russian roulette: the pixel's estimated value (< 0: not yet)
     uint depth;
     Sampler rng;
 };
@@ -61,6 +64,7 @@ PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
     st.mediumSigma = vec3(0.0f);
     st.lastPdf = 0.0f;
     st.lastDelta = true;
+    st.reference = -1.0f;
     st.depth = 0u;
     return st;
 }
@@ -70,13 +74,15 @@ PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
 // the guiding map (direct photons left out: next-event estimation covers direct light) weighted
 // by f_r fill the grid; one-sample MIS picks the grid with probability guide.mix, else the BSDF,
 // and weights by the mixture density, so neither a mis-estimated grid nor a narrow lobe can make
-// the variance blow up. mix = 1 is the paper's method.
+// the variance blow up. mix = 1 is the paper's method. `irradiance`: the guiding photons' indirect
+// irradiance at the vertex (rgb; w 1 where there is an estimate, else 0).
 BsdfSample sampleGuided(vec3 position, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n, bool entering, vec3 u,
-                        float uSelect) {
+                        float uSelect, out vec4 irradiance) {
+    irradiance = vec4(0.0f);
     if (guide.mix <= 0.0f || specularIsDelta(bsdf) || bsdf.transmission > 0.0f || !storesPhotons(bsdf))
         return sampleBsdf(bsdf, wo, entering, true, u);
     uint gm = guide.gridSize & 0xffu;
-    uint gn = guide.gridSize >> 8u;
+    uint gn = (guide.gridSize >> 8u) & 0xffu;
     float cells[kMaxGuideCells];
     // The grid's frame: the shading frame, or the cache bin's axis frame.
     vec3 gt = t;
@@ -92,16 +98,27 @@ BsdfSample sampleGuided(vec3 position, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b,
     orthonormalBasis(gnrm, gt, gb);
     uint base = (bucket * kGuideNormalBins + bin) * kMaxGuideCells;
     for (uint i = 0u; i < kMaxGuideCells; ++i) cells[i] = cacheCdfs[base + i];
+    vec4 cachedIrradiance = cacheIrradiance[bucket * kGuideNormalBins + bin];
+    irradiance = vec4(cachedIrradiance.rgb, 1.0f);
+    uint photonsPerCell = guide.gridSize >> 16u;
+    if (photonsPerCell > 0u) {
+        uvec2 size = guideAdaptiveSize(gm, gn, photonsPerCell, cachedIrradiance.w);
+        gm = size.x;
+        gn = size.y;
+    }
 #else
     for (uint i = 0u; i < kMaxGuideCells; ++i) cells[i] = 0.0f;
     float radius2;
     uint found = gatherNearest(guide.grid, position, n, guide.k, guide.maxRadius, 0u, kPhotonPrimary, radius2);
+    vec3 flux = vec3(0.0f);
     for (uint j = 0u; j < found; ++j) {
         GpuPhoton p = gridPhotons[heapIndex[j]];
         vec3 wi = toLocal(decodeOctahedral(p.direction), t, b, n);
         guideAdd(cells, gm, gn, wi, luminance(evalBsdf(bsdf, wo, wi) * photonRelativePower(p)));
+        flux += photonRelativePower(p);
     }
     guideFinalize(cells, gm, gn);
+    irradiance = vec4(flux * (guide.grid.photonPower / (kPi * radius2)), 1.0f);
 #endif
     BsdfSample s;
     if (uSelect < guide.mix) {
@@ -119,6 +136,13 @@ BsdfSample sampleGuided(vec3 position, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b,
     }
     s.weight = evalBsdf(bsdf, wo, s.wi) * (s.wi.z / s.pdf);
     return s;
+}
+
+// Radiance the vertex reflects towards wo per unit of irradiance, for the roulette's estimate: the
+// diffuse part, and a non-delta specular lobe as if it spread its Fresnel reflectance evenly.
+vec3 rouletteReflectance(BsdfParams bsdf, vec3 wo) {
+    vec3 specular = specularIsDelta(bsdf) ? vec3(0.0f) : specularFresnel(bsdf, wo.z) * (kInvPi * (1.0f - bsdf.transmission));
+    return diffuseReflectance(bsdf, wo) + specular;
 }
 #endif
 
@@ -169,12 +193,14 @@ bool extendPath(inout PathState st) {
 
     vec3 u = vec3(nextSample(st.rng), nextSample(st.rng), nextSample(st.rng));
 #ifdef GUIDED
-    BsdfSample bs = sampleGuided(hit.position, bsdf, wo, t, b, n, hit.frontFace, u, nextSample(st.rng));
+    vec4 irradiance;
+    BsdfSample bs = sampleGuided(hit.position, bsdf, wo, t, b, n, hit.frontFace, u, nextSample(st.rng), irradiance);
 #else
     BsdfSample bs = sampleBsdf(bsdf, wo, hit.frontFace, true, u);
 #endif
     float uRoulette = nextSample(st.rng);
     if (bs.lobe == kLobeNone) return false;
+    vec3 arriving = st.throughput;
     st.throughput *= bs.weight;
     st.lastDelta = (bs.lobe & kLobeDelta) != 0u;
     st.lastPdf = bs.pdf;
@@ -185,9 +211,18 @@ bool extendPath(inout PathState st) {
     if ((bs.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)
         st.mediumSigma = hit.frontFace ? material.attenuationCoeff : vec3(0.0f);
 
-    // Russian roulette after a few bounces, survival by the throughput's largest component.
-    if (st.depth >= 3u) {
-        float survive = min(max(st.throughput.r, max(st.throughput.g, st.throughput.b)), 0.95f);
+    // Russian roulette: by the guide's estimate where there is one and --guide-rr is on (guiding.glsl),
+    // else after a few bounces, survival by the throughput's largest component.
+    float survive = 1.0f;
+#ifdef GUIDED
+    if ((params.flags & kPathFlagGuideRoulette) != 0u && irradiance.w > 0.0f) {
+        float expected = luminance(arriving * rouletteReflectance(bsdf, wo) * irradiance.rgb);
+        if (st.reference < 0.0f) st.reference = luminance(st.radiance) + expected;
+        survive = guideSurvival(expected, st.reference);
+    } else
+#endif
+    if (st.depth >= 3u) survive = min(max(st.throughput.r, max(st.throughput.g, st.throughput.b)), 0.95f);
+    if (survive < 1.0f) {
         if (uRoulette >= survive) return false;
         st.throughput /= survive;
     }
@@ -208,8 +243,10 @@ void main() {
     vec4 acc = film[pixel];
     bool addRaster = (params.flags & (kPathFlagRasterDeltaLights | kPathFlagRasterAreaLights)) != 0u;
     uint done = 0u;
+    uint segments = 0u;
     PathState st = startPath(params.firstSample, streamSeed, px, py);
     while (done < params.sampleCount) {
+        segments += 1u;
         if (extendPath(st)) continue;
         vec3 l = st.radiance;
         if (addRaster) l += rasterDirect[pixel].rgb;
@@ -222,6 +259,7 @@ void main() {
         if (done < params.sampleCount) st = startPath(params.firstSample + done, streamSeed, px, py);
     }
     film[pixel] = acc;
+    if (atomicAdd(counters[1], segments) + segments < segments) atomicAdd(counters[2], 1u);  // carry
 }
 
 #endif

@@ -150,13 +150,15 @@ TEST(Cli, GuidedIntegratorAndItsGridAtAPixel) {
     const std::string ceiling = std::string(VKPHOTON_SCENES) + "/cornell-ceiling.gltf";
     const fs::path stats = dir / "stats.json";
     RunResult r = runVkphoton("render " + ceiling + " --validate --integrator guided --guide-photons 20000 "
-                              "--guide-grid 2x8 --guide-mix 0.7 --spp 2 --width 16 --height 16 -o " +
+                              "--guide-grid 2x8 --guide-mix 0.7 --guide-rr on --spp 2 --width 16 --height 16 -o " +
                               (dir / "g.exr").string() + " --stats-json " + stats.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     std::ifstream in(stats);
     const nlohmann::json j = nlohmann::json::parse(in);
     EXPECT_EQ(j["integrator"], "guided");
     EXPECT_EQ(j["settings"]["guide"]["grid"], "2x8");
+    EXPECT_EQ(j["settings"]["guide"]["roulette"], true);
+    EXPECT_GT(j["counters"]["pathSegments"].get<uint64_t>(), j["counters"]["cameraPaths"].get<uint64_t>());
     EXPECT_GT(j["photons"]["globalStored"].get<int>(), 0);
 
     // A floor pixel: the light faces the ceiling, so indirect light comes from above.
@@ -177,6 +179,7 @@ TEST(Cli, GuidedIntegratorAndItsGridAtAPixel) {
                                    "render " + ceiling + " --integrator guided --guide-mix 2",
                                    "render " + ceiling + " --integrator guided --guide-k 0",
                                    "render " + ceiling + " --integrator guided --guide-cache maybe",
+                                   "render " + ceiling + " --integrator guided --guide-rr 1",
                                    "guide-grid " + ceiling + " --pixel 600 1",
                                    "guide-grid " + ceiling + " --pixel 1"}) {
         r = runVkphoton(args + " --quiet -o " + (dir / "bad.png").string());

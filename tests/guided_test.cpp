@@ -1,6 +1,8 @@
 // The photon-guided path tracer (--integrator guided): unbiased — its mean radiance equals the
 // path tracer's within statistical bounds on the shipped Cornell boxes, with the guiding cache,
-// with a k-nearest gather at every vertex, and with the paper's pure grid sampling (mix 1) —
+// with a k-nearest gather at every vertex, with the paper's pure grid sampling (mix 1) and with
+// Russian roulette driven by the guide (cached and per-vertex irradiance estimates), and with the
+// cache's adaptive grid resolution —
 // finite, reproducible, and less noisy than the path tracer at equal samples where indirect
 // light dominates (cornell-ceiling).
 #include <cmath>
@@ -65,10 +67,18 @@ TEST_P(GuidedUnbiased, MeanMatchesThePathTracer) {
     RenderSettings paper = settingsFor(Integrator::Guided, 24, 64, 0);
     paper.guide.mix = 1.0f;
     expectSameMean(meanOverSeeds(renderer, paper, 5), path, "guided, cache, mix 1");
+    RenderSettings roulette = settingsFor(Integrator::Guided, 24, 64, 0);
+    roulette.guide.roulette = true;
+    expectSameMean(meanOverSeeds(renderer, roulette, 5), path, "guided, cache, guide-driven roulette");
+    RenderSettings adaptive = settingsFor(Integrator::Guided, 24, 64, 0);
+    adaptive.guide.adaptPhotons = 4;
+    expectSameMean(meanOverSeeds(renderer, adaptive, 5), path, "guided, cache, adaptive grids");
     RenderSettings perVertex = settingsFor(Integrator::Guided, 16, 8, 0);
     perVertex.guide.cache = false;
     const MeanAndError pathSmall = meanOverSeeds(renderer, settingsFor(Integrator::Path, 16, 64, 0), 5);
     expectSameMean(meanOverSeeds(renderer, perVertex, 5), pathSmall, "guided, k nearest per vertex");
+    perVertex.guide.roulette = true;
+    expectSameMean(meanOverSeeds(renderer, perVertex, 5), pathSmall, "guided, k nearest per vertex, roulette");
 }
 
 INSTANTIATE_TEST_SUITE_P(Shipped, GuidedUnbiased, ::testing::Values("cornell-box", "cornell-ceiling"),

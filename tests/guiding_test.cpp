@@ -1,6 +1,7 @@
 // The photon-guided sampling grid (shaders/shared/guiding.glsl) on the host: its pdf integrates to
 // one, matches what it samples (chi-square), puts more samples where more flux arrives, and gives
-// every direction a non-zero density.
+// every direction a non-zero density; guide-driven Russian roulette never gives a path zero odds.
+#include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -84,6 +85,50 @@ TEST(Guiding, FollowsTheFluxAndNeverVanishes) {
     Grid empty{{}, 4, 16};
     guideFinalize(empty.cdf, 4, 16);
     EXPECT_NEAR(guidePdf(empty.cdf, 4, 16, peak), cosineHemispherePdf(peak.z), 1e-5f);
+}
+
+// Adaptive resolution: a sparse grid is coarsened into unions of its cells (the energy of each
+// direction stays where it was), a well-filled one is kept, and the result is still a pdf.
+TEST(Guiding, CoarsensSparseGridsIntoUnionsOfCells) {
+    EXPECT_EQ(guideAdaptiveSize(4, 16, 2, 200.0f), glm::uvec2(4, 16));
+    EXPECT_EQ(guideAdaptiveSize(4, 16, 2, 100.0f), glm::uvec2(4, 8));
+    EXPECT_EQ(guideAdaptiveSize(4, 16, 2, 0.0f), glm::uvec2(2, 4));
+    EXPECT_EQ(guideAdaptiveSize(3, 5, 4, 0.0f), glm::uvec2(3, 5));  // nothing halves evenly
+    float fine[kMaxGuideCells] = {};
+    float coarse[kMaxGuideCells] = {};
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (int i = 0; i < 40; ++i) {
+        const glm::vec3 w = sampleCosineHemisphere({u(rng), u(rng)});
+        const float energy = 0.5f + u(rng);
+        guideAdd(fine, 4, 16, w, energy);
+        guideAdd(coarse, 2, 4, w, energy);
+    }
+    guideCoarsen(fine, 4, 16, 2, 4);
+    for (uint32_t c = 0; c < kMaxGuideCells; ++c) EXPECT_NEAR(fine[c], coarse[c], 1e-4f) << c;
+    guideFinalize(fine, 2, 4);
+    double integral = 0.0;
+    const int steps = 256;
+    for (int i = 0; i < steps; ++i)
+        for (int j = 0; j < steps; ++j) {
+            const glm::vec3 w = sampleCosineHemisphere({(i + 0.5f) / steps, (j + 0.5f) / steps});
+            integral += guidePdf(fine, 2, 4, w) / cosineHemispherePdf(w.z) / (steps * steps);
+        }
+    EXPECT_NEAR(integral, 1.0, 1e-3);
+}
+
+// Inside the weight window (from 2 / (1 + s) of the reference up) a path goes on; below it, it
+// survives with the ratio, never less than the floor; without a reference nothing is decided.
+TEST(Guiding, RouletteSurvivalFollowsTheWeightWindow) {
+    const float lower = 2.0f / (1.0f + kGuideRouletteWindow);
+    EXPECT_EQ(guideSurvival(lower, 1.0f), 1.0f);
+    EXPECT_EQ(guideSurvival(5.0f, 1.0f), 1.0f);
+    EXPECT_FLOAT_EQ(guideSurvival(0.5f * lower, 1.0f), 0.5f * lower);
+    EXPECT_FLOAT_EQ(guideSurvival(0.5f * lower * 8.0f, 8.0f), 0.5f * lower);
+    EXPECT_EQ(guideSurvival(0.0f, 1.0f), kGuideRouletteMinSurvival);
+    EXPECT_GT(kGuideRouletteMinSurvival, 0.0f);
+    EXPECT_EQ(guideSurvival(1.0f, 0.0f), 1.0f);
+    EXPECT_EQ(guideSurvival(std::nanf(""), 1.0f), 1.0f);
 }
 
 }  // namespace

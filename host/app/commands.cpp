@@ -55,7 +55,8 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
     if (s.integrator == Integrator::Guided) {
         const GuideRenderSettings& g = s.guide;
         j["settings"]["guide"] = {{"photons", g.photons}, {"k", g.k}, {"grid", fmt::format("{}x{}", g.gridU, g.gridV)},
-                                  {"mix", g.mix}, {"cache", g.cache}, {"searchRadius", stats.globalRadius}};
+                                  {"mix", g.mix}, {"cache", g.cache}, {"roulette", g.roulette}, {"adapt", g.adaptPhotons},
+                                  {"searchRadius", stats.globalRadius}};
     }
     if (s.integrator != Integrator::Path) {
         j["photons"] = {{"pathsTraced", stats.photonPathsTraced}, {"globalStored", stats.globalPhotons},
@@ -72,7 +73,7 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
                     {"uploadSeconds", stats.uploadSeconds}, {"renderSeconds", stats.renderSeconds},
                     {"totalSeconds", totalSeconds}};
     j["counters"] = {{"samplesPerPixel", stats.samplesPerPixel}, {"cameraPaths", stats.cameraPaths},
-                     {"nonFiniteSamples", stats.nonFiniteSamples},
+                     {"nonFiniteSamples", stats.nonFiniteSamples}, {"pathSegments", stats.pathSegments},
                      {"pathsPerSecond", stats.renderSeconds > 0 ? stats.cameraPaths / stats.renderSeconds : 0.0}};
     j["meanRadiance"] = meanRadiance(image);
     j["partial"] = stats.partial;

@@ -106,6 +106,9 @@ int main(int argc, char** argv) {
         });
     guideGroup->add_option("--guide-cache", gd.cache, "on: grids built once per cache cell and normal bin; off: a k-nearest gather at every vertex (the paper)")
         ->transform(oneOf<bool>({{"on", true}, {"off", false}}))->option_text("on|off [on]");
+    guideGroup->add_option("--guide-adapt", gd.adaptPhotons, "Coarsen a guiding-cache grid whose photons are too few, down to this many photons per direction cell (0: every grid at --guide-grid)")->capture_default_str()->check(CLI::Range(0u, 65535u));
+    guideGroup->add_option("--guide-rr", gd.roulette, "on: Russian roulette by the guide's estimate of the light a path still brings against the pixel's (adjoint-driven); off: by the path's throughput")
+        ->transform(oneOf<bool>({{"on", true}, {"off", false}}))->option_text(gd.roulette ? "on|off [on]" : "on|off [off]");
     guideGroup->add_option("--guide-mix", gd.mix, "Probability of sampling the guiding grid rather than the BSDF (1: the paper's method)")->capture_default_str()->check(CLI::Range(0.0f, 1.0f));
 
     PhotonsCommandOptions photons;

@@ -19,9 +19,11 @@ GuideCache::GuideCache(vk::Context& context, const vk::Buffer& photons, uint32_t
       m_cdfs(context, "guide cache grids",
              VkDeviceSize(m_grid.tableSize()) * gpu::kGuideNormalBins * gpu::kMaxGuideCells * sizeof(float),
              vk::kStorageUsage),
-      m_build(context, "guide_cache_build.comp", 4, sizeof(gpu::GuideParams)) {
-    m_params.grid = m_grid.view(1.0f);
-    m_build.bind({&m_grid.cellStart(), &m_grid.photons(), &m_cells, &m_cdfs});
+      m_irradiance(context, "guide cache irradiance",
+                   VkDeviceSize(m_grid.tableSize()) * gpu::kGuideNormalBins * sizeof(glm::vec4), vk::kStorageUsage),
+      m_build(context, "guide_cache_build.comp", 5, sizeof(gpu::GuideParams)) {
+    m_params.grid = m_grid.view(params.grid.photonPower);
+    m_build.bind({&m_grid.cellStart(), &m_grid.photons(), &m_cells, &m_cdfs, &m_irradiance});
 }
 
 void GuideCache::record(VkCommandBuffer cmd) const {

@@ -1,6 +1,7 @@
 // The guiding cache pass (shaders/guide_cache_build.comp): a coarse grid over the guiding
 // photons and, per bucket and normal bin, the CDF of the photon-flux grid of the bucket's cell, so
-// the guided path tracer looks a grid up instead of gathering k photons at every vertex.
+// the guided path tracer looks a grid up instead of gathering k photons at every vertex, and the
+// grid's indirect irradiance (for guide-driven Russian roulette).
 #pragma once
 
 #include <memory>
@@ -15,7 +16,8 @@ namespace vkp {
 class GuideCache {
 public:
     // A cache over the `slotCount` photon slots of `photons` (e.g. a map's grid photons) with
-    // cells of `cellSize` and `tableSize` buckets; `params` gives the grid size (m, n).
+    // cells of `cellSize` and `tableSize` buckets; `params` gives the grid size (m, n) and, in
+    // params.grid.photonPower, the watts of a photon of relative power 1.
     GuideCache(vk::Context& context, const vk::Buffer& photons, uint32_t slotCount, float cellSize, uint32_t tableSize,
                const gpu::GuideParams& params);
 
@@ -24,15 +26,17 @@ public:
 
     const vk::Buffer& cells() const { return m_cells; }
     const vk::Buffer& cdfs() const { return m_cdfs; }
+    const vk::Buffer& irradiance() const { return m_irradiance; }
     // The guided path tracer's view of the cache (the coarse grid's cells).
     const gpu::GuideParams& params() const { return m_params; }
-    uint64_t bytes() const { return m_cells.size() + m_cdfs.size(); }
+    uint64_t bytes() const { return m_cells.size() + m_cdfs.size() + m_irradiance.size(); }
 
 private:
     PhotonGrid m_grid;
     gpu::GuideParams m_params;
     vk::Buffer m_cells;
     vk::Buffer m_cdfs;
+    vk::Buffer m_irradiance;
     vk::ComputeKernel m_build;
 };
 

@@ -27,6 +27,7 @@ void checkGuideSettings(const GuideRenderSettings& g) {
     if (g.gridU == 0 || g.gridV == 0 || g.gridU * g.gridV > gpu::kMaxGuideCells || g.gridV > 255)
         throw InputError(fmt::format("--guide-grid {}x{}: needs 1 <= m * n <= {}", g.gridU, g.gridV,
                                      gpu::kMaxGuideCells));
+    if (g.adaptPhotons > 0xffff) throw InputError(fmt::format("--guide-adapt {}: at most 65535", g.adaptPhotons));
     if (!(g.mix >= 0.0f && g.mix <= 1.0f)) throw InputError(fmt::format("--guide-mix {}: must lie in [0, 1]", g.mix));
 }
 
@@ -47,7 +48,7 @@ PathGuide::PathGuide(vk::Context& context, const Scene& scene, const SceneArrays
     m_params.mix = g.mix;
     m_params.k = g.k;
     m_params.maxRadius = m_searchRadius;
-    m_params.gridSize = g.gridU | (g.gridV << 8);
+    m_params.gridSize = g.gridU | (g.gridV << 8) | (g.adaptPhotons << 16);
     m_shader = "guided_pathtrace.comp";
     // No indirect photons (a scene lit only directly): nothing to guide by, sample the BSDF.
     if (m_mapStats.stored == 0) m_params.mix = 0.0f;
@@ -69,7 +70,7 @@ PathGuide::PathGuide(vk::Context& context, const Scene& scene, const SceneArrays
 }
 
 std::vector<const vk::Buffer*> PathGuide::buffers() const {
-    if (m_cache) return {&m_cache->cells(), &m_cache->cdfs()};
+    if (m_cache) return {&m_cache->cells(), &m_cache->cdfs(), &m_cache->irradiance()};
     return {&m_map->grid().cellStart(), &m_map->grid().photons()};
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -88,7 +89,8 @@ RenderResult Renderer::renderPath(const RenderSettings& settings, const Progress
     params.maxDepth = settings.maxDepth;
     params.lightCount = m_buffers.lightCount();
     params.flags = (settings.nextEventEstimation ? 0u : gpu::kPathFlagNoDirectLightSampling) | raster.pathFlags() |
-                   (settings.pixelCentres ? gpu::kPathFlagPixelCentres : 0u);
+                   (settings.pixelCentres ? gpu::kPathFlagPixelCentres : 0u) |
+                   (guide && settings.guide.roulette ? gpu::kPathFlagGuideRoulette : 0u);
 
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
         film.fillZero(cmd);
@@ -115,7 +117,9 @@ RenderResult Renderer::renderPath(const RenderSettings& settings, const Progress
     stats.samplesPerPixel = loop.samplesDone;
     stats.partial = loop.samplesDone < settings.samplesPerPixel;
     stats.cameraPaths = pixels * loop.samplesDone;
-    stats.nonFiniteSamples = counters.download<uint32_t>()[0];
+    const std::vector<uint32_t> counts = counters.download<uint32_t>();
+    stats.nonFiniteSamples = counts[0];
+    stats.pathSegments = counts[1] | (uint64_t(counts[2]) << 32);
     result.image = resolveFilm(film.download<glm::vec4>(), settings.width, settings.height);
     return result;
 }

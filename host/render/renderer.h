@@ -28,6 +28,8 @@ struct GuideRenderSettings {
     uint32_t gridV = 16;              // ... by n sectors of phi (m * n <= 64)
     float mix = 0.5f;                 // --guide-mix: probability of sampling the grid (1: the paper's method)
     bool cache = true;                // --guide-cache: grids per cache cell and normal bin, built once
+    uint32_t adaptPhotons = 0;        // --guide-adapt: coarsen cache grids to this many photons per cell (0: off)
+    bool roulette = false;            // --guide-rr: Russian roulette by the guide's irradiance estimate
 };
 
 // Which traced photons the photon maps keep (--deposit; docs/importance-deposition.md).
@@ -104,6 +106,7 @@ struct RenderStats {
     uint32_t samplesPerPixel = 0;     // samples actually accumulated
     uint64_t nonFiniteSamples = 0;    // dropped samples that were NaN or infinite
     uint64_t cameraPaths = 0;
+    uint64_t pathSegments = 0;        // path tracers: rays traced from camera-path vertices (no shadow rays)
     bool partial = false;             // stopped before the requested sample count
     std::string integrator = "path";
     // Photon integrator only.

@@ -109,6 +109,9 @@ const uint kPathFlagRasterDeltaLights = 2u;  // point, spot and directional ligh
 const uint kPathFlagRasterAreaLights = 4u;   // emissive triangles (as point samples)
 // Camera rays through pixel centres, no jitter: the raster term is evaluated there (tests).
 const uint kPathFlagPixelCentres = 8u;
+// Guided path tracer: Russian roulette by the guide's estimate of what the path still brings
+// (--guide-rr on, shared/guiding.glsl guideSurvival).
+const uint kPathFlagGuideRoulette = 16u;
 
 // Push constants of pathtrace.comp.
 struct PathTraceParams {

@@ -88,13 +88,67 @@ INLINE vec3 guideBinNormal(uint bin) {
     return vec3(axis == 0u ? s : 0.0f, axis == 1u ? s : 0.0f, axis == 2u ? s : 0.0f);
 }
 
+// Per-cell adaptive resolution of the guiding cache (--guide-adapt P): a cache grid whose photons
+// are too few for its cells is coarsened, halving phi sectors while there are at least twice as
+// many as theta bands, else theta bands, until it has P photons per cell or kGuideMinAdaptiveCells
+// cells. The (m, n) grid is the finest; every coarser one's cells are unions of its cells.
+const uint kGuideMinAdaptiveCells = 8u;
+
+INLINE uvec2 guideAdaptiveSize(uint m, uint n, uint photonsPerCell, float photons) {
+    while (m * n > kGuideMinAdaptiveCells && photons < float(photonsPerCell * m * n)) {
+        if (n >= 2u * m && n % 2u == 0u) n = n / 2u;
+        else if (m % 2u == 0u) m = m / 2u;
+        else break;
+    }
+    return uvec2(m, n);
+}
+
+// Merges an (m, n) grid's energies into the coarser (m2, n2) grid in place (m2 divides m, n2
+// divides n); the cells past m2 * n2 become zero. A coarse cell's sources all lie at or after its
+// own index, so ascending order never reads a written cell.
+INLINE void guideCoarsen(INOUT_ARRAY(float, cells, kMaxGuideCells), uint m, uint n, uint m2, uint n2) {
+    if (m2 == m && n2 == n) return;
+    uint fm = m / m2;
+    uint fn = n / n2;
+    for (uint c = 0u; c < m2 * n2; ++c) {
+        uint iu2 = c / n2;
+        uint iv2 = c - iu2 * n2;
+        float sum = 0.0f;
+        for (uint iu = iu2 * fm; iu < (iu2 + 1u) * fm; ++iu)
+            for (uint iv = iv2 * fn; iv < (iv2 + 1u) * fn; ++iv) sum += cells[iu * n + iv];
+        cells[c] = sum;
+    }
+    for (uint c = m2 * n2; c < kMaxGuideCells; ++c) cells[c] = 0.0f;
+}
+
+// Guide-driven Russian roulette (--guide-rr on), after Vorba and Krivanek, "Adjoint-Driven Russian
+// Roulette and Splitting in Light Transport Simulation" (2016): at a vertex, the path's expected
+// further contribution is its throughput times the radiance the vertex reflects from indirect
+// light, estimated from the guiding photons' irradiance. Measured against the pixel's value (the
+// reference: what the path has gathered so far plus that expectation, at its first vertex with an
+// estimate), a path whose ratio falls below the weight window's lower bound 2 / (1 + s) survives
+// with probability `ratio` (a survivor then sits at the window's centre); others go on. There is
+// no splitting. Any survival probability above zero keeps the estimator unbiased; the floor
+// bounds the weight where the estimate says "nothing" but some light still arrives.
+const float kGuideRouletteWindow = 5.0f;        // s, the weight window's width (the paper's value)
+const float kGuideRouletteMinSurvival = 0.05f;
+
+// Survival probability of a path expected to bring `expected` (luminance) more, against `reference`.
+INLINE float guideSurvival(float expected, float reference) {
+    if (!(reference > 0.0f)) return 1.0f;
+    float ratio = expected / reference;
+    if (!(ratio < 2.0f / (1.0f + kGuideRouletteWindow))) return 1.0f;  // in the window, or NaN
+    return max(ratio, kGuideRouletteMinSurvival);
+}
+
 // Push constants the guided path tracer adds after PathTraceParams.
 struct GuideParams {
     PhotonGridView grid;  // the guiding photon map (with the cache: the cache's cells)
     float mix;            // probability of sampling the grid (else the BSDF); 1: the paper's method
     uint k;               // nearest photons per grid (<= kMaxGatherK)
     float maxRadius;      // world units
-    uint gridSize;        // m | (n << 8), m * n <= kMaxGuideCells
+    uint gridSize;        // m | (n << 8) | (P << 16): m * n <= kMaxGuideCells, P photons per cell
+                          // for the cache's adaptive resolution (0: off)
 };
 STATIC_ASSERT_SIZE(GuideParams, 32)
 
