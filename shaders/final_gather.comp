@@ -60,10 +60,7 @@ vec3 gatherRay(GpuVisiblePoint vp, VisibleSurface s, inout Sampler rng) {
                 return weight * radianceNearest(params.grid, hit.position, params.k, params.maxRadius, 0u, 0u, bsdf,
                                                 wo, t, b, n);
             float radius2;
-            // Where the map is sparser than its cells (importance deposition keeps few photons
-            // where the camera cares little), the nearest radiance photon may lie further out.
-            if (gatherNearest(params.grid, hit.position, n, 1u, params.lookupRadius, 0u, 0u, radius2) == 0u &&
-                gatherNearest(params.grid, hit.position, n, 1u, 2.0f * params.maxRadius, 0u, 0u, radius2) == 0u)
+            if (gatherNearest(params.grid, hit.position, n, 1u, params.lookupRadius, 0u, 0u, radius2) == 0u)
                 return vec3(0.0f);
             vec3 irradiance = photonRelativePower(gridPhotons[heapIndex[0]]) * params.grid.photonPower;
             return weight * diffuseReflectance(bsdf, wo) * irradiance;
