@@ -1,8 +1,9 @@
 // Deposition benchmark (issue 4): stored photons and memory at equal image error, and image
 // error at equal stored photons, for --deposit all, importance and density. Usage:
 //   build/bench/deposition_bench [SCENE] [--width W --height H --spp N --paths a,b,c
-//                                 --deposit-paths a,b,c --reference-paths N --density-accuracy C
-//                                 --device D]
+//                                 --deposit-paths a,b,c --reference-paths N --reference FILE.exr
+//                                 --modes all,importance,density --density-accuracy C
+//                                 --deposit-epsilon E --deposit-cutoff --device D]
 // Every render uses the same seed, so the camera samples, next-event estimates and final-gather
 // rays are the same in all of them: the difference between two renders is the photon maps'
 // alone. The error is the relMSE against a render of the same samples with every photon of
@@ -13,9 +14,13 @@
 #include <string>
 #include <vector>
 
+#include <filesystem>
+#include <stdexcept>
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "image/exr.h"
 #include "image/metrics.h"
 #include "render/renderer.h"
 #include "shared/photon.glsl"
@@ -73,6 +78,10 @@ int main(int argc, char** argv) {
     std::vector<uint32_t> paths{25000, 50000, 100000, 200000, 400000};
     std::vector<uint32_t> depositPaths{100000, 200000, 400000, 800000, 1600000};
     float densityAccuracy = PhotonRenderSettings{}.densityAccuracy;
+    float epsilon = PhotonRenderSettings{}.depositEpsilon;
+    bool cutoff = false;
+    std::vector<std::string> modeNames{"all", "importance", "density"};
+    std::string referencePath;
     std::string device;
     app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
     app.add_option("--width", width)->capture_default_str();
@@ -81,6 +90,10 @@ int main(int argc, char** argv) {
     app.add_option("--paths", paths, "photon paths per render, keeping every photon")->delimiter(',');
     app.add_option("--deposit-paths", depositPaths, "photon paths per render, importance and density")->delimiter(',');
     app.add_option("--density-accuracy", densityAccuracy)->capture_default_str();
+    app.add_option("--deposit-epsilon", epsilon)->capture_default_str();
+    app.add_flag("--deposit-cutoff", cutoff);
+    app.add_option("--modes", modeNames, "deposit modes to measure (all is needed for the summary)")->delimiter(',');
+    app.add_option("--reference", referencePath, "EXR: read the reference from it if it exists, else write it there");
     app.add_option("--reference-paths", referencePaths)->capture_default_str();
     app.add_option("--device", device);
     CLI11_PARSE(app, argc, argv);
@@ -89,14 +102,23 @@ int main(int argc, char** argv) {
         const Scene scene = loadGltf(scenePath);
         vk::Context context({false, device});
         Renderer renderer(context, scene);
-        const RenderResult reference =
-            renderer.render(settingsFor(width, height, spp, DepositMode::All, referencePaths));
-        fmt::print("scene: {}, {}x{}, {} spp, device: {}; reference: every photon of {} paths ({} stored, {:.1f} s)\n\n",
-                   scenePath, width, height, spp, context.deviceName(), referencePaths, reference.stats.globalPhotons,
-                   reference.stats.renderSeconds);
+        fmt::print("scene: {}, {}x{}, {} spp, device: {}; reference: every photon of {} paths\n\n", scenePath, width,
+                   height, spp, context.deviceName(), referencePaths);
+        ImageRgb reference;
+        if (!referencePath.empty() && std::filesystem::exists(referencePath)) {
+            reference = readExr(referencePath);
+        } else {
+            reference = renderer.render(settingsFor(width, height, spp, DepositMode::All, referencePaths)).image;
+            if (!referencePath.empty()) writeExr(referencePath, reference);
+        }
 
-        const std::vector<std::pair<DepositMode, const char*>> modes{
-            {DepositMode::All, "all"}, {DepositMode::Importance, "importance"}, {DepositMode::Density, "density"}};
+        const std::map<std::string, DepositMode> known{
+            {"all", DepositMode::All}, {"importance", DepositMode::Importance}, {"density", DepositMode::Density}};
+        std::vector<std::pair<DepositMode, std::string>> modes;
+        for (const std::string& name : modeNames) {
+            if (!known.count(name)) throw std::runtime_error("--modes: " + name + " is not all, importance or density");
+            modes.emplace_back(known.at(name), name);
+        }
         std::map<std::string, std::vector<Point>> curves;
         fmt::print("| deposit | paths | stored photons | photon MB | importon MB | relMSE | photon pass s | render s |\n");
         fmt::print("|---|---:|---:|---:|---:|---:|---:|---:|\n");
@@ -104,10 +126,12 @@ int main(int argc, char** argv) {
             for (const uint32_t n : mode == DepositMode::All ? paths : depositPaths) {
                 RenderSettings s = settingsFor(width, height, spp, mode, n);
                 s.photon.densityAccuracy = densityAccuracy;
+                s.photon.depositEpsilon = epsilon;
+                s.photon.depositCutoff = cutoff;
                 const RenderResult r = renderer.render(s);
                 const uint64_t stored = r.stats.globalPhotons + r.stats.causticPhotons;
                 Point p{n, stored, stored * sizeof(gpu::GpuPhoton),
-                        relativeMse(r.image, reference.image), r.stats.photonSeconds};
+                        relativeMse(r.image, reference), r.stats.photonSeconds};
                 curves[name].push_back(p);
                 fmt::print("| {} | {} | {} | {:.2f} | {:.2f} | {:.3g} | {:.2f} | {:.2f} |\n", name, n, p.stored,
                            p.bytes / 1048576.0, r.stats.importonBytes / 1048576.0, p.relMse, p.seconds,
@@ -117,6 +141,7 @@ int main(int argc, char** argv) {
 
         // Equal error: the error of keeping every photon of the largest path count; equal
         // storage: the photons that keeping every photon of the smallest count stores.
+        if (!curves.count("all")) return 0;
         const Point& allBest = curves["all"].back();
         const Point& allSmallest = curves["all"].front();
         fmt::print("\n| deposit | stored photons at relMSE {:.3g} | × fewer than all | relMSE at {} stored photons | × lower than all |\n",

@@ -21,7 +21,7 @@ namespace vkp {
 struct DepositSettings {
     uint32_t mode = gpu::kDepositAll;        // kDeposit*
     const ImportonMap* importons = nullptr;  // required unless the mode is kDepositAll
-    float epsilon = 0.001f;                  // --deposit-epsilon: floor of the acceptance probability
+    float epsilon = 0.01f;                   // --deposit-epsilon: floor of the acceptance probability
     bool cutoff = false;                     // --deposit-cutoff: drop below epsilon (biased) instead of clamping
     float densityAccuracy = 0.0f;            // --density-accuracy C: required density = C * path importance
     float minDensity = 0.0f;                 // required density where the path importance is lower

@@ -56,7 +56,7 @@ struct PhotonRenderSettings {
     float q = 0.0f;                   // --q: --photons paths fill the caustic map, the first q of them the
                                       // global map (Keller & Wald's N, q); 0: --caustic-photons paths
     uint32_t importonPaths = 1u << 16;  // --importons: camera paths of the importon pass
-    float depositEpsilon = 0.001f;    // --deposit-epsilon: floor of the acceptance probability
+    float depositEpsilon = 0.01f;     // --deposit-epsilon: floor of the acceptance probability
     bool depositCutoff = false;       // --deposit-cutoff: drop photons below epsilon (biased)
     float densityAccuracy = 2.0e4f;   // --density-accuracy: required density per unit path importance
     uint32_t densityRounds = 8;       // --density-rounds
