@@ -24,7 +24,12 @@ struct PhotonsCommandOptions {
     uint32_t photons = 200000;          // photon paths to emit
     uint32_t maxDeposits = 8;
     uint32_t seed = 0;
-    PhotonRenderSettings deposit;       // --deposit and its flags (the rest is unused)
+    // --deposit and its flags (the rest is unused); every photon unless told otherwise.
+    PhotonRenderSettings deposit = [] {
+        PhotonRenderSettings p;
+        p.deposit = DepositMode::All;
+        return p;
+    }();
     uint32_t width = 512, height = 512; // the image the importons' camera looks at
     int cameraIndex = -1;
     std::string device;

@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
     photonGroup->add_option("--alpha", ph.alpha, "Progressive radius reduction: fraction of new photons kept per pass")->capture_default_str()->check(CLI::Range(0.01f, 0.99f));
     photonGroup->add_option("--deposit", ph.deposit, "Which photons the maps keep: all; importance (kept with a probability from the camera's importance, Keller & Wald); density (kept until a required density is met, Suykens & Willems)")
         ->transform(oneOf<DepositMode>({{"all", DepositMode::All}, {"importance", DepositMode::Importance}, {"density", DepositMode::Density}}))
-        ->option_text("all|importance|density [all]");
+        ->option_text("all|importance|density [importance]");
     CLI::Option* qOption = photonGroup->add_option("--q", ph.q, "Keller & Wald's ratio: --photons paths fill the caustic map and the first q of them the global map (instead of --caustic-photons)")->check(CLI::Range(1e-6f, 1.0f));
     qOption->excludes(causticOption);
     photonGroup->add_option("--importons", ph.importonPaths, "Camera paths of the importon pass (--deposit importance|density)")->capture_default_str()->check(CLI::Range(1u, 1u << 24));

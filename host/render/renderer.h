@@ -52,7 +52,7 @@ struct PhotonRenderSettings {
     bool progressive = false;         // --progressive: SPPM, a fresh photon pass per sample
     float alpha = 0.7f;               // SPPM's fraction of new photons kept per pass
     uint32_t maxDeposits = 8;         // stored photons per global path at most
-    DepositMode deposit = DepositMode::All;  // --deposit
+    DepositMode deposit = DepositMode::Importance;  // --deposit (docs/benchmarks.md: importance wins)
     float q = 0.0f;                   // --q: --photons paths fill the caustic map, the first q of them the
                                       // global map (Keller & Wald's N, q); 0: --caustic-photons paths
     uint32_t importonPaths = 1u << 16;  // --importons: camera paths of the importon pass
