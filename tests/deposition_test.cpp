@@ -1,5 +1,6 @@
 // Importance-driven deposition (docs/importance-deposition.md): every deposit mode keeps the
-// stored flux an unbiased estimate of the flux the paths deposited, in the 10x10 rooms both
+// stored flux an estimate of the flux the paths deposited (unbiased, or with density control's
+// redistribution nearly exact but moved to neighbours), in the 10x10 rooms both
 // where the camera looks and where most photons are kept with a small probability; the photons
 // land where the camera looks; the renders agree with keeping every photon; runs repeat exactly.
 #include <algorithm>
@@ -137,9 +138,18 @@ TEST_F(DepositionTest, StoredFluxEstimatesTheDepositedFluxAndPhotonsGoWhereTheCa
     ASSERT_EQ(allStats.stored, allStats.candidates);
     const auto exact = fluxByGroup(all, cameraRoom, seen);
 
-    for (const uint32_t mode : {gpu::kDepositImportance, gpu::kDepositDensity}) {
-        const std::string name = mode == gpu::kDepositImportance ? "importance" : "density";
-        PhotonMap map(test::gpu(), rooms.scene, rooms.arrays, rooms.buffers, mapSettings(mode, importons.get()));
+    struct Variant {
+        uint32_t mode;
+        bool redistribute;
+        std::string name;
+    };
+    for (const Variant& v : {Variant{gpu::kDepositImportance, false, "importance"},
+                             Variant{gpu::kDepositDensity, true, "density, redistributing"},
+                             Variant{gpu::kDepositDensity, false, "density, Russian roulette"}}) {
+        const std::string& name = v.name;
+        PhotonMapSettings settings = mapSettings(v.mode, importons.get());
+        settings.deposit.redistribute = v.redistribute;
+        PhotonMap map(test::gpu(), rooms.scene, rooms.arrays, rooms.buffers, settings);
         const PhotonMapStats stats = map.build(0);
         EXPECT_EQ(stats.candidates, allStats.candidates) << name;
         const auto kept = fluxByGroup(map, cameraRoom, seen);

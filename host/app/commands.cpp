@@ -50,7 +50,7 @@ nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStat
                                    {"alpha", p.alpha}, {"deposit", stats.deposit}, {"q", p.q},
                                    {"importons", p.importonPaths}, {"depositEpsilon", p.depositEpsilon},
                                    {"depositCutoff", p.depositCutoff}, {"densityAccuracy", p.densityAccuracy},
-                                   {"densityRounds", p.densityRounds}};
+                                   {"densityRounds", p.densityRounds}, {"densityRoulette", p.densityRoulette}};
     }
     if (s.integrator == Integrator::Guided) {
         const GuideRenderSettings& g = s.guide;

@@ -90,6 +90,7 @@ int main(int argc, char** argv) {
     photonGroup->add_flag("--deposit-cutoff", ph.depositCutoff, "Drop photons whose acceptance is below --deposit-epsilon instead of clamping it (biased, fewer photons)");
     photonGroup->add_option("--density-accuracy", ph.densityAccuracy, "--deposit density: required photons per square unit per unit of path importance")->capture_default_str()->check(CLI::PositiveNumber);
     photonGroup->add_option("--density-rounds", ph.densityRounds, "--deposit density: rounds of tracing, deciding and rebuilding the grid")->capture_default_str()->check(CLI::Range(1u, 256u));
+    photonGroup->add_flag("--density-roulette", ph.densityRoulette, "--deposit density: keep photons with Russian-roulette weights instead of handing rejected power to the stored neighbours");
 
     GuideRenderSettings& gd = s.guide;
     CLI::Option_group* guideGroup = renderCmd->add_option_group("guided path tracer");

@@ -13,20 +13,27 @@ namespace vkp {
 class PhotonDeposit {
 public:
     // Bound to the chunk's `slots` (up to maxSlots), the importance grid's table
-    // (shared/importance.glsl) and the map's own grid (read by density control).
+    // (shared/importance.glsl), the dense map's photons and the grid over them (read by density
+    // control, which also hands rejected photons' power to the map's photons).
     PhotonDeposit(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& importanceTable,
-                  const vk::Buffer& slots, uint32_t maxSlots, const PhotonGrid& map);
+                  const vk::Buffer& slots, uint32_t maxSlots, const vk::Buffer& map, const PhotonGrid& mapGrid);
 
     // Records the lookup and the decision for params.slotCount slots (lookup.slotCount is set
     // from it); the caller places a barrier before (after the slot writes) and after.
     void record(VkCommandBuffer cmd, gpu::ImportanceGridParams lookup, const gpu::PhotonDepositParams& params) const;
 
-    uint64_t bytes() const { return m_importance.size(); }
+    // Density control with redistribution, after record(): adds the power handed to the grid's
+    // `gridPhotons` photons to them in the map. Barriers as for record().
+    void recordRedistribution(VkCommandBuffer cmd, uint32_t gridPhotons) const;
+
+    uint64_t bytes() const { return m_importance.size() + m_redistributed.size(); }
 
 private:
-    vk::Buffer m_importance;  // per slot: importance density, largest path importance
+    vk::Buffer m_importance;     // per slot: importance density, largest path importance
+    vk::Buffer m_redistributed;  // per grid photon, rgb: power handed to it (fixed point), zero between rounds
     vk::ComputeKernel m_lookup;
     ScenePass m_deposit;
+    vk::ComputeKernel m_redistribute;
 };
 
 }  // namespace vkp

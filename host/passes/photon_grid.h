@@ -34,6 +34,9 @@ public:
     const vk::Buffer& cellStart() const { return m_cellStart; }  // tableSize + 1 entries
     // Bucket order; only the first downloadPhotonCount() entries are written by a build.
     const vk::Buffer& photons() const { return m_gridPhotons; }
+    // Map slot of each grid entry (the order the grid's photons follow).
+    const vk::Buffer& sortedSlots() const { return m_sortedSlots; }
+    uint32_t slotCount() const { return m_params.slotCount; }
     uint32_t tableSize() const { return m_params.tableMask + 1; }
     const PhotonGridSettings& settings() const { return m_settings; }
     // What a gather shader needs to find its photons, with the watts of a relative power of 1.

@@ -52,6 +52,7 @@ DepositSettings depositSettings(const PhotonRenderSettings& p, DepositMode mode,
     d.cutoff = p.depositCutoff;
     d.densityAccuracy = p.densityAccuracy;
     d.rounds = p.densityRounds;
+    d.redistribute = !p.densityRoulette;
     return d;
 }
 

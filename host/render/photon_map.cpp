@@ -96,6 +96,7 @@ gpu::PhotonDepositParams PhotonMap::depositParams(uint32_t firstPath, uint32_t p
     params.minDensity = d.minDensity;
     params.densityRadius = kDensityRadiusCells * m_grid->settings().cellSize;
     params.densityFloor = d.densityFloor;
+    params.redistribute = d.redistribute ? 1u : 0u;
     return params;
 }
 
@@ -108,6 +109,8 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
     });
     const bool deposit = m_settings.deposit.mode != gpu::kDepositAll;
     const bool densityControl = m_settings.deposit.mode == gpu::kDepositDensity;
+    const bool redistribute = densityControl && m_settings.deposit.redistribute;
+    uint32_t storedSoFar = 0;  // photons in the grid the next round reads
     for (uint32_t done = 0; done < m_settings.paths; done += m_chunkPaths) {
         PhotonSettings chunk;
         chunk.paths = std::min(m_chunkPaths, m_settings.paths - done);
@@ -126,7 +129,7 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
             if (deposit)
                 m_deposit = std::make_unique<PhotonDeposit>(m_context, m_buffers, m_settings.deposit.importons->table(),
                                                             m_tracer.photons(), m_chunkPaths * m_settings.maxDeposits,
-                                                            *m_grid);
+                                                            m_map, *m_grid);
         }
         m_context.submitAndWait([&](VkCommandBuffer cmd) {
             vk::transferToComputeBarrier(cmd);  // the map's clearing
@@ -135,13 +138,19 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
                 m_deposit->record(cmd, m_settings.deposit.importons->lookupParams(m_settings.requiredFlags, m_settings.rejectedFlags),
                                   depositParams(chunk.firstPath, chunk.paths, stats.chunks));
                 vk::computeBarrier(cmd);
+                if (redistribute && storedSoFar > 0) {  // into the photons of the earlier rounds
+                    m_deposit->recordRedistribution(cmd, storedSoFar);
+                    vk::computeBarrier(cmd);
+                }
             }
             m_compaction->record(cmd, chunk.paths * chunk.maxDeposits);
             if (densityControl) {  // the next round's current density sees this round's photons
                 vk::computeBarrier(cmd);
                 m_grid->record(cmd);
+                vk::computeToHostBarrier(cmd);
             }
         });
+        if (redistribute) m_state.download(&storedSoFar, sizeof(storedSoFar), gpu::kPhotonMapStateCount * sizeof(uint32_t));
         stats.chunks += 1;
     }
     stats.candidates = candidateCount(stats.traced, m_settings.requiredFlags, m_settings.rejectedFlags);

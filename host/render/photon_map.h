@@ -26,6 +26,8 @@ struct DepositSettings {
     float densityAccuracy = 0.0f;            // --density-accuracy C: required density = C * path importance
     float minDensity = 0.0f;                 // required density where the path importance is lower
     float densityFloor = 0.1f;               // least acceptance where density is required (weights <= 10)
+    bool redistribute = true;                // density control: rejected power to the neighbours (Suykens &
+                                             // Willems); false: Russian-roulette weighting (--density-roulette)
     uint32_t densityK = 16;                  // nearest stored photons per current-density estimate
     uint32_t rounds = 8;                     // density control: trace, deposit, rebuild the grid, repeat
 };

@@ -60,6 +60,7 @@ struct PhotonRenderSettings {
     bool depositCutoff = false;       // --deposit-cutoff: drop photons below epsilon (biased)
     float densityAccuracy = 2.0e4f;   // --density-accuracy: required density per unit path importance
     uint32_t densityRounds = 8;       // --density-rounds
+    bool densityRoulette = false;     // --density-roulette: weight kept photons instead of redistributing
 };
 
 // Who computes the direct light at the first path vertex (--direct).

@@ -108,8 +108,26 @@ struct PhotonDepositParams {
     float minDensity;        // required density where the path importance is lower
     float densityRadius;     // search radius of the current-density estimate
     float densityFloor;      // least acceptance where some density is required (bounds the weight 1/p)
+    uint redistribute;       // density control: 1 spreads a rejected photon's power over its nearest
+                             // stored neighbours (Suykens & Willems); 0: Russian-roulette weighting
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
-STATIC_ASSERT_SIZE(PhotonDepositParams, 80)
+STATIC_ASSERT_SIZE(PhotonDepositParams, 96)
+
+// Redistributed power is summed in fixed point per grid photon and channel (integer atomics:
+// the same sums whatever the order).
+const float kRedistributedFixedPoint = 4096.0f;  // steps per unit of relative power
+
+// Push constants of deposit_redistribute.comp.
+struct RedistributeParams {
+    uint gridPhotons;        // photons in the map's grid (stored by the earlier rounds)
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+STATIC_ASSERT_SIZE(RedistributeParams, 16)
 
 // Keller & Wald's deposition probability from the importance density sensed at the photon.
 INLINE float importanceAcceptance(float importanceDensity, float importanceScale) {
