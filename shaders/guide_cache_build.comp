@@ -26,8 +26,8 @@ layout(push_constant) uniform Push { GuideParams guide; };
 
 void main() {
     uint index = gl_GlobalInvocationID.x;
-    uint bucket = index / kGuideNormalBins;
-    uint bin = index - bucket * kGuideNormalBins;
+    uint bucket = index / kNormalBins;
+    uint bin = index - bucket * kNormalBins;
     if (bucket > guide.grid.tableMask) return;
     uint gm = guide.gridSize & 0xffu;
     uint gn = (guide.gridSize >> 8u) & 0xffu;
@@ -38,7 +38,7 @@ void main() {
 
     float cells[kMaxGuideCells];
     for (uint i = 0u; i < kMaxGuideCells; ++i) cells[i] = 0.0f;
-    vec3 axis = guideBinNormal(bin);
+    vec3 axis = normalBinAxis(bin);
     vec3 t;
     vec3 b;
     orthonormalBasis(axis, t, b);
@@ -49,7 +49,7 @@ void main() {
     for (uint i = begin; i < end; ++i) {
         GpuPhoton p = gridPhotons[i];
         if ((photonFlags(p) & kPhotonPrimary) != 0u || gridCell(p.position, guide.grid.invCellSize) != cell ||
-            guideNormalBin(decodeOctahedral(p.normal)) != bin)
+            normalBin(decodeOctahedral(p.normal)) != bin)
             continue;
         guideAdd(cells, gm, gn, toLocal(decodeOctahedral(p.direction), t, b, axis), luminance(photonRelativePower(p)));
         flux += photonRelativePower(p);

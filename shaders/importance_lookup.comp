@@ -8,7 +8,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
-#include "shared/guiding.glsl"
+#include "shared/normal_bins.glsl"
 #include "shared/importance.glsl"
 #include "shared/photon.glsl"
 
@@ -39,7 +39,7 @@ void main() {
     GpuPhoton p = slots[slot];
     vec2 result = vec2(0.0f);
     if (photonSelected(photonFlags(p), params.requiredFlags, params.rejectedFlags)) {
-        uint bin = guideNormalBin(decodeOctahedral(p.normal));
+        uint bin = normalBin(decodeOctahedral(p.normal));
         for (uint level = 0u; level < kImportanceLevels; ++level) {
             int entry = findCell(importanceCell(p.position, params.invCellSize, level), level, bin);
             if (entry < 0) continue;

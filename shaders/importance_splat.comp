@@ -4,7 +4,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
-#include "shared/guiding.glsl"
+#include "shared/normal_bins.glsl"
 #include "shared/importance.glsl"
 #include "shared/photon.glsl"
 
@@ -23,7 +23,7 @@ void main() {
     vec3 w = photonRelativePower(p);
     uint importance = uint(min(w.x, kMaxImportonImportance) * kImportanceFixedPoint + 0.5f);
     uint pathImportance = floatBitsToUint(max(w.y, 0.0f));
-    uint bin = guideNormalBin(decodeOctahedral(p.normal));
+    uint bin = normalBin(decodeOctahedral(p.normal));
     for (uint level = 0u; level < kImportanceLevels; ++level) {
         ivec3 c = importanceCell(p.position, params.invCellSize, level);
         uint key = importanceKey(c, level, bin);

@@ -93,12 +93,12 @@ BsdfSample sampleGuided(vec3 position, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b,
     uint bucket = gridHash(cell, guide.grid.tableMask);
     ivec4 cached = cacheCells[bucket];
     if (cached.w == 0 || ivec3(cached.x, cached.y, cached.z) != cell) return sampleBsdf(bsdf, wo, entering, true, u);
-    uint bin = guideNormalBin(n);
-    gnrm = guideBinNormal(bin);
+    uint bin = normalBin(n);
+    gnrm = normalBinAxis(bin);
     orthonormalBasis(gnrm, gt, gb);
-    uint base = (bucket * kGuideNormalBins + bin) * kMaxGuideCells;
+    uint base = (bucket * kNormalBins + bin) * kMaxGuideCells;
     for (uint i = 0u; i < kMaxGuideCells; ++i) cells[i] = cacheCdfs[base + i];
-    vec4 cachedIrradiance = cacheIrradiance[bucket * kGuideNormalBins + bin];
+    vec4 cachedIrradiance = cacheIrradiance[bucket * kNormalBins + bin];
     irradiance = vec4(cachedIrradiance.rgb, 1.0f);
     uint photonsPerCell = guide.gridSize >> 16u;
     if (photonsPerCell > 0u) {

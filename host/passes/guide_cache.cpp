@@ -17,10 +17,10 @@ GuideCache::GuideCache(vk::Context& context, const vk::Buffer& photons, uint32_t
     : m_grid(context, photons, slotCount, cacheGrid(cellSize, tableSize)), m_params(params),
       m_cells(context, "guide cache cells", VkDeviceSize(m_grid.tableSize()) * 4 * sizeof(int32_t), vk::kStorageUsage),
       m_cdfs(context, "guide cache grids",
-             VkDeviceSize(m_grid.tableSize()) * gpu::kGuideNormalBins * gpu::kMaxGuideCells * sizeof(float),
+             VkDeviceSize(m_grid.tableSize()) * gpu::kNormalBins * gpu::kMaxGuideCells * sizeof(float),
              vk::kStorageUsage),
       m_irradiance(context, "guide cache irradiance",
-                   VkDeviceSize(m_grid.tableSize()) * gpu::kGuideNormalBins * sizeof(glm::vec4), vk::kStorageUsage),
+                   VkDeviceSize(m_grid.tableSize()) * gpu::kNormalBins * sizeof(glm::vec4), vk::kStorageUsage),
       m_build(context, "guide_cache_build.comp", 5, sizeof(gpu::GuideParams)) {
     m_params.grid = m_grid.view(params.grid.photonPower);
     m_build.bind({&m_grid.cellStart(), &m_grid.photons(), &m_cells, &m_cdfs, &m_irradiance});
@@ -29,7 +29,7 @@ GuideCache::GuideCache(vk::Context& context, const vk::Buffer& photons, uint32_t
 void GuideCache::record(VkCommandBuffer cmd) const {
     m_grid.record(cmd);
     vk::computeBarrier(cmd);
-    m_build.record(cmd, vk::groupCount(uint64_t(m_grid.tableSize()) * gpu::kGuideNormalBins, 64), m_params);
+    m_build.record(cmd, vk::groupCount(uint64_t(m_grid.tableSize()) * gpu::kNormalBins, 64), m_params);
 }
 
 }  // namespace vkp

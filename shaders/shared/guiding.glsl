@@ -12,6 +12,7 @@
 #include "compat.glsl"
 #include "constants.glsl"
 #include "photon_grid.glsl"
+#include "normal_bins.glsl"
 #include "sampling.glsl"
 SHARED_BEGIN
 
@@ -71,22 +72,7 @@ INLINE vec3 guideSample(IN_ARRAY(float, cdf, kMaxGuideCells), uint m, uint n, ve
     return sampleCosineHemisphere(vec2(min(uv.x, kOneMinusEpsilon), min(uv.y, kOneMinusEpsilon)));
 }
 
-// The guiding cache keeps one grid per cache cell and normal bin: the six bins are the axis
-// directions, a surface normal belongs to the axis it is closest to.
-const uint kGuideNormalBins = 6u;
-
-INLINE uint guideNormalBin(vec3 n) {
-    vec3 a = abs(n);
-    if (a.x >= a.y && a.x >= a.z) return n.x >= 0.0f ? 0u : 1u;
-    if (a.y >= a.z) return n.y >= 0.0f ? 2u : 3u;
-    return n.z >= 0.0f ? 4u : 5u;
-}
-
-INLINE vec3 guideBinNormal(uint bin) {
-    float s = (bin & 1u) == 0u ? 1.0f : -1.0f;
-    uint axis = bin / 2u;
-    return vec3(axis == 0u ? s : 0.0f, axis == 1u ? s : 0.0f, axis == 2u ? s : 0.0f);
-}
+// The guiding cache keeps one grid per cache cell and normal bin (shared/normal_bins.glsl).
 
 // Per-cell adaptive resolution of the guiding cache (--guide-adapt P): a cache grid whose photons
 // are too few for its cells is coarsened, halving phi sectors while there are at least twice as
