@@ -1,7 +1,8 @@
-// Precomputed radiance estimates (Christensen 1999): one invocation per radiance photon takes
-// every stride-th photon of the global map (in grid order, which mixes the scene evenly) and
-// stores the irradiance of its k nearest photons of every kind, E = sum dPhi / (pi r^2), as the
-// record's power. Final gather rays read the nearest radiance photon (final_gather.comp).
+// Precomputed radiance estimates (Christensen 1999): one invocation per photon of the global map
+// (in grid order) makes every stride-th photon, and every photon of a sparse bucket, a radiance
+// photon holding the irradiance of its k nearest photons of every kind, E = sum dPhi / (pi r^2),
+// as the record's power, in the photon's own slot; the other slots stay empty. Final gather rays
+// read the nearest radiance photon (final_gather.comp).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -18,15 +19,23 @@ layout(std430, set = 0, binding = 2) writeonly buffer RadiancePhotons { GpuPhoto
 layout(push_constant) uniform Push { RadiancePhotonParams params; };
 
 void main() {
-    uint index = gl_GlobalInvocationID.x;
-    uint source = index * params.stride;
+    uint source = gl_GlobalInvocationID.x;
     if (source >= params.photonCount) return;
     GpuPhoton p = gridPhotons[source];
+    // Every stride-th photon, and every photon of a bucket holding fewer than stride: the grid
+    // order keeps a bucket's photons together, so every bucket with a photon gets a radiance
+    // photon, and a final-gather ray finds one wherever the map has photons within a cell.
+    uint bucket = gridHash(gridCell(p.position, params.grid.invCellSize), params.grid.tableMask);
+    uint inBucket = gridCellStart[bucket + 1u] - gridCellStart[bucket];
+    if (source % params.stride != 0u && inBucket >= params.stride) {
+        radiancePhotons[source] = makePhoton(vec3(0.0f), vec3(0.0f), vec3(0.0f, 0.0f, 1.0f), vec3(0.0f, 0.0f, 1.0f), 0u, 0u);
+        return;
+    }
     vec3 n = decodeOctahedral(p.normal);
     float radius2;
     uint found = gatherNearest(params.grid, p.position, n, params.k, params.maxRadius, 0u, 0u, radius2);
     vec3 sum = vec3(0.0f);
     for (uint j = 0u; j < found; ++j) sum += photonRelativePower(gridPhotons[heapIndex[j]]);
     vec3 irradiance = sum * (params.grid.photonPower / (kPi * radius2));
-    radiancePhotons[index] = makePhoton(p.position, irradiance, n, n, kPhotonValid, p.lightIndex);
+    radiancePhotons[source] = makePhoton(p.position, irradiance, n, n, kPhotonValid, p.lightIndex);
 }

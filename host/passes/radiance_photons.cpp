@@ -6,7 +6,7 @@ namespace vkp {
 
 RadiancePhotons::RadiancePhotons(vk::Context& context, const PhotonGrid& globalGrid, uint32_t photonCount,
                                  float photonPower, uint32_t stride, uint32_t k, float maxRadius)
-    : m_count(static_cast<uint32_t>((uint64_t(photonCount) + stride - 1) / std::max(1u, stride))),
+    : m_count(photonCount),  // a slot per photon: radiance photons where the shader picks them
       m_photons(context, "radiance photons", std::max<VkDeviceSize>(16, VkDeviceSize(m_count) * sizeof(gpu::GpuPhoton)),
                 vk::kStorageUsage),
       m_kernel(context, "radiance_photons.comp", 3, sizeof(gpu::RadiancePhotonParams)) {

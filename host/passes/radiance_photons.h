@@ -1,7 +1,8 @@
 // Radiance photons (Christensen 1999, "Faster photon map global illumination"): the pass
-// radiance_photons.comp reads the global map's grid and writes every stride-th photon with the
-// irradiance of its k nearest photons; a grid over them serves final gather rays with one
-// nearest-neighbour lookup instead of a k-nearest estimate per ray.
+// radiance_photons.comp reads the global map's grid and writes every stride-th photon, and every
+// photon of a sparse bucket, with the irradiance of its k nearest photons; a grid over them
+// serves final gather rays with one nearest-neighbour lookup instead of a k-nearest estimate per
+// ray.
 #pragma once
 
 #include <memory>
@@ -25,7 +26,7 @@ public:
     void record(VkCommandBuffer cmd) const;
 
     const PhotonGrid& grid() const { return *m_grid; }
-    uint32_t count() const { return m_count; }
+    uint32_t count() const { return m_count; }  // slots (one per global photon; empty ones are not radiance photons)
     uint64_t bytes() const { return m_photons.size() + m_grid->photons().size(); }
 
 private:
