@@ -59,8 +59,7 @@ ImportonMap::ImportonMap(vk::Context& context, const SceneArrays& arrays, const 
     : m_settings(settings) {
     if (settings.paths == 0 || settings.maxDeposits == 0)
         throw InputError("--importons must be at least 1");
-    if (settings.k == 0 || settings.k > gpu::kMaxGatherK)
-        throw InputError(fmt::format("importon lookups: k {} must be between 1 and {}", settings.k, gpu::kMaxGatherK));
+    if (settings.k == 0) throw InputError("importance grid: a cell needs at least one importon (k >= 1)");
     const auto start = Clock::now();
     const uint32_t slots = settings.paths * settings.maxDeposits;
     m_slots = vk::Buffer(context, "importons", VkDeviceSize(slots) * sizeof(gpu::GpuPhoton), vk::kStorageUsage);

@@ -177,11 +177,6 @@ uint64_t PhotonMap::bytes() const {
     return m_lastStored * sizeof(gpu::GpuPhoton) + m_grid->cellStart().size();
 }
 
-uint64_t PhotonMap::scratchBytes() const {
-    return m_map.size() + m_grid->photons().size() - m_lastStored * sizeof(gpu::GpuPhoton) + m_grid->cellStart().size() +
-           m_tracer.photons().size() + (m_deposit ? m_deposit->bytes() : 0);
-}
-
 std::vector<gpu::GpuPhoton> PhotonMap::downloadPhotons() const {
     uint32_t count = 0;
     m_state.download(&count, sizeof(count), gpu::kPhotonMapStateCount * sizeof(uint32_t));

@@ -79,10 +79,9 @@ public:
     // Watts carried by a photon of relative power 1 (total light power / paths of one build).
     float photonPower() const { return m_photonPower; }
     uint32_t capacity() const { return m_capacity; }
-    // Device memory of the map's photons and grid (what a renderer keeps; the traced chunk's
-    // slots are scratch: see scratchBytes()).
+    // Device memory of the map's stored photons and its grid's table (the buffers are allocated
+    // for every traced deposit; the traced chunk's slots are scratch).
     uint64_t bytes() const;
-    uint64_t scratchBytes() const;
     // The map's photons, in path order (after a build).
     std::vector<gpu::GpuPhoton> downloadPhotons() const;
 
