@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "median.h"
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/errors.h"

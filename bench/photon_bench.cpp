@@ -7,7 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "render/photon_tracer.h"
 #include "scene/gltf_loader.h"
 #include "vk/context.h"

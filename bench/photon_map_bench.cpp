@@ -14,7 +14,7 @@
 
 #include "median.h"
 #include "image/metrics.h"
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "reference_image.h"
 #include "render/photon_map.h"
 #include "render/renderer.h"

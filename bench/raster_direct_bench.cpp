@@ -16,7 +16,7 @@
 #include "median.h"
 #include "passes/raster_direct_pass.h"
 #include "passes/raster_lights.h"
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "vk/buffer.h"

@@ -1,6 +1,6 @@
 // GLSL-only scene access shared by the integrator shaders: buffer declarations, surface
 // interaction at a hit, texture lookups and next-event light sampling. Bindings are the ones
-// listed in host/passes/scene_buffers.h (SceneBinding).
+// listed in host/gpu_scene/scene_buffers.h (SceneBinding).
 #ifndef VKP_SCENE_ACCESS_GLSL
 #define VKP_SCENE_ACCESS_GLSL
 

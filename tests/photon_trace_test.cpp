@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_test_support.h"
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "render/photon_tracer.h"
 #include "scene/gltf_loader.h"
 #include "shared/photon.glsl"

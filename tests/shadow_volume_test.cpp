@@ -11,7 +11,7 @@
 
 #include "gpu_test_support.h"
 #include "passes/raster_lights.h"
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "passes/shadow_triangles.h"
 #include "passes/shadow_volume_pass.h"
 #include "render/renderer.h"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "shared/gpu_types.glsl"
 #include "shared/guiding.glsl"
 #include "vk/buffer.h"

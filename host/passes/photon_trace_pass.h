@@ -2,7 +2,7 @@
 // into fixed per-path slots and adds to the photon counters.
 #pragma once
 
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "shared/photon.glsl"
 #include "vk/buffer.h"
 #include "vk/compute_kernel.h"

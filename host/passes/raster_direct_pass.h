@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "passes/scene_pass.h"
 #include "passes/shadow_volume_pass.h"
 #include "vk/buffer.h"

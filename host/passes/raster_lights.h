@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "shared/shadow_volume.glsl"
 
 namespace vkp {

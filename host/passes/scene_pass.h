@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "vk/buffer.h"
 #include "vk/compute_kernel.h"
 

@@ -2,7 +2,7 @@
 // light at the first non-delta surface to the film, writes one GpuVisiblePoint per pixel.
 #pragma once
 
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "shared/visible_point.glsl"
 #include "vk/buffer.h"
 #include "vk/compute_kernel.h"

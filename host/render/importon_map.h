@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "shared/importance.glsl"
 #include "shared/photon.glsl"
 #include "vk/buffer.h"

@@ -11,7 +11,7 @@
 
 #include <atomic>
 
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "render/renderer.h"
 
 namespace vkp {

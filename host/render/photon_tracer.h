@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "passes/photon_trace_pass.h"
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "shared/photon.glsl"
 #include "vk/buffer.h"
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "image/image.h"
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 #include "scene/scene.h"
 
 namespace vkp {

@@ -1,4 +1,4 @@
-#include "passes/scene_buffers.h"
+#include "gpu_scene/scene_buffers.h"
 
 #include <chrono>
 #include <cmath>
