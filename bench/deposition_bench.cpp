@@ -22,6 +22,7 @@
 
 #include "image/exr.h"
 #include "image/metrics.h"
+#include "render/integrators/photon_integrator.h"
 #include "render/renderer.h"
 #include "shared/photon.glsl"
 #include "scene/gltf_loader.h"
@@ -39,17 +40,21 @@ struct Point {
     double seconds = 0.0;
 };
 
-RenderSettings settingsFor(uint32_t width, uint32_t height, uint32_t spp, DepositMode mode, uint32_t paths) {
-    RenderSettings s;
-    s.integrator = Integrator::Photon;
+FrameSettings frameFor(uint32_t width, uint32_t height, uint32_t spp) {
+    FrameSettings s;
     s.width = width;
     s.height = height;
     s.samplesPerPixel = spp;
     s.seed = 1;
-    s.photon.deposit = mode;
-    s.photon.globalPaths = paths;
-    s.photon.causticPaths = 0;  // the scenes have no specular surfaces
     return s;
+}
+
+PhotonIntegratorSettings photonsFor(DepositMode mode, uint32_t paths) {
+    PhotonIntegratorSettings p;
+    p.deposit.mode = mode;
+    p.globalPaths = paths;
+    p.causticPaths = 0;  // the scenes have no specular surfaces
+    return p;
 }
 
 // log-log interpolation of y at x over points sorted by x (clamped to the ends: -1 outside).
@@ -77,8 +82,8 @@ int main(int argc, char** argv) {
     uint32_t width = 160, height = 120, spp = 4, referencePaths = 1600000;
     std::vector<uint32_t> paths{25000, 50000, 100000, 200000, 400000};
     std::vector<uint32_t> depositPaths{100000, 200000, 400000, 800000, 1600000};
-    float densityAccuracy = PhotonRenderSettings{}.densityAccuracy;
-    float epsilon = PhotonRenderSettings{}.depositEpsilon;
+    float densityAccuracy = DepositOptions{}.densityAccuracy;
+    float epsilon = DepositOptions{}.epsilon;
     bool cutoff = false;
     std::vector<std::string> modeNames{"all", "importance", "density"};
     std::string referencePath;
@@ -108,7 +113,10 @@ int main(int argc, char** argv) {
         if (!referencePath.empty() && std::filesystem::exists(referencePath)) {
             reference = readExr(referencePath);
         } else {
-            reference = renderer.render(settingsFor(width, height, spp, DepositMode::All, referencePaths)).image;
+            reference = renderer
+                            .render<PhotonIntegrator>(frameFor(width, height, spp),
+                                                      photonsFor(DepositMode::All, referencePaths))
+                            .image;
             if (!referencePath.empty()) writeExr(referencePath, reference);
         }
 
@@ -124,18 +132,19 @@ int main(int argc, char** argv) {
         fmt::print("|---|---:|---:|---:|---:|---:|---:|---:|\n");
         for (const auto& [mode, name] : modes)
             for (const uint32_t n : mode == DepositMode::All ? paths : depositPaths) {
-                RenderSettings s = settingsFor(width, height, spp, mode, n);
-                s.photon.densityAccuracy = densityAccuracy;
-                s.photon.depositEpsilon = epsilon;
-                s.photon.depositCutoff = cutoff;
-                const RenderResult r = renderer.render(s);
-                const uint64_t stored = r.stats.globalPhotons + r.stats.causticPhotons;
-                Point p{n, stored, stored * sizeof(gpu::GpuPhoton),
-                        relativeMse(r.image, reference), r.stats.photonSeconds};
+                PhotonIntegratorSettings settings = photonsFor(mode, n);
+                settings.deposit.densityAccuracy = densityAccuracy;
+                settings.deposit.epsilon = epsilon;
+                settings.deposit.cutoff = cutoff;
+                const RenderResult r = renderer.render<PhotonIntegrator>(frameFor(width, height, spp), settings);
+                const uint64_t stored = r.stats.getOr<uint64_t>("photons.globalStored", 0) +
+                                        r.stats.getOr<uint64_t>("photons.causticStored", 0);
+                Point p{n, stored, stored * sizeof(gpu::GpuPhoton), relativeMse(r.image, reference),
+                        r.stats.get<double>("photons.seconds")};
                 curves[name].push_back(p);
                 fmt::print("| {} | {} | {} | {:.2f} | {:.2f} | {:.3g} | {:.2f} | {:.2f} |\n", name, n, p.stored,
-                           p.bytes / 1048576.0, r.stats.importonBytes / 1048576.0, p.relMse, p.seconds,
-                           r.stats.renderSeconds);
+                           p.bytes / 1048576.0, r.stats.getOr<double>("photons.importonBytes", 0.0) / 1048576.0,
+                           p.relMse, p.seconds, r.stats.get<double>("timings.renderSeconds"));
                 std::fflush(stdout);
             }
 

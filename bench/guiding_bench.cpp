@@ -17,6 +17,7 @@
 
 #include "image/metrics.h"
 #include "reference_image.h"
+#include "render/integrators/guided_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/stopwatch.h"
@@ -32,7 +33,7 @@ int main(int argc, char** argv) {
     std::vector<float> mixes{0.5f};
     std::vector<std::string> roulettes{"off", "on"};
     uint32_t adapt = 0;
-    uint32_t guidePhotons = GuideRenderSettings{}.photons;
+    uint32_t guidePhotons = GuideSettings{}.photons;
     app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
     app.add_option("--size", size, "image size")->capture_default_str();
     app.add_option("--reference-spp", referenceSpp, "path-traced reference samples per pixel")->capture_default_str();
@@ -51,52 +52,56 @@ int main(int argc, char** argv) {
         const Scene scene = loadGltf(scenePath);
         vk::Context context({false, device});
         Renderer renderer(context, scene);
-        RenderSettings base;
+        FrameSettings base;
         base.width = size;
         base.height = size;
-        base.guide.photons = guidePhotons;
+        GuideSettings baseGuide;
+        baseGuide.photons = guidePhotons;
         fmt::print("scene: {}, {}x{}, device: {}\n", scenePath, size, size, context.deviceName());
         const ImageRgb reference = bench::referenceImage(renderer, base, referenceSpp, referencePath);
         struct Method {
             const char* name;
-            RenderSettings settings;
+            FrameSettings settings;
+            bool guided = false;
+            GuideSettings guide;
         };
         std::vector<Method> methods;
-        RenderSettings cosine = base;
+        FrameSettings cosine = base;
         cosine.nextEventEstimation = false;
         methods.push_back({"cosine", cosine});
         methods.push_back({"path", base});
-        RenderSettings paper = base;
-        paper.integrator = Integrator::Guided;
-        paper.guide.cache = false;
-        paper.guide.mix = 1.0f;
-        methods.push_back({"paper", paper});
-        RenderSettings perVertex = paper;  // the cache's alternative at the same mix
-        perVertex.guide.mix = mixes.front();
-        methods.push_back({"per-vertex", perVertex});
+        GuideSettings paper = baseGuide;
+        paper.cache = false;
+        paper.mix = 1.0f;
+        methods.push_back({"paper", base, true, paper});
+        GuideSettings perVertex = paper;  // the cache's alternative at the same mix
+        perVertex.mix = mixes.front();
+        methods.push_back({"per-vertex", base, true, perVertex});
         std::vector<std::string> guidedNames;
         for (float mix : mixes)
             for (const std::string& rr : roulettes) guidedNames.push_back(fmt::format("guided mix {} rr {}", mix, rr));
         for (size_t i = 0; i < guidedNames.size(); ++i) {
-            RenderSettings guided = base;
-            guided.integrator = Integrator::Guided;
-            guided.guide.mix = mixes[i / roulettes.size()];
-            guided.guide.roulette = roulettes[i % roulettes.size()] == "on";
-            guided.guide.adaptPhotons = adapt;
-            methods.push_back({guidedNames[i].c_str(), guided});
+            GuideSettings guided = baseGuide;
+            guided.mix = mixes[i / roulettes.size()];
+            guided.roulette = roulettes[i % roulettes.size()] == "on";
+            guided.adaptPhotons = adapt;
+            methods.push_back({guidedNames[i].c_str(), base, true, guided});
         }
         fmt::print("\n| method | spp | seconds | relMSE | segments per path |\n|---|---|---|---|---|\n");
         for (const Method& m : methods) {
             if (!only.empty() && std::string(m.name).rfind(only, 0) != 0) continue;
             for (uint32_t spp = 1; spp <= maxSpp; spp *= 2) {
-                RenderSettings s = m.settings;
+                FrameSettings s = m.settings;
                 s.samplesPerPixel = spp;
                 s.seed = 1;
-                const RenderResult r = renderer.render(s);
-                fmt::print("| {} | {} | {:.2f} | {:.5f} | {:.3f} |\n", m.name, spp, r.stats.renderSeconds,
-                           relativeMse(r.image, reference), double(r.stats.pathSegments) / double(r.stats.cameraPaths));
+                const RenderResult r = m.guided ? renderer.render<GuidedIntegrator>(s, m.guide)
+                                                : renderer.render<PathIntegrator>(s);
+                const auto seconds = r.stats.get<double>("timings.renderSeconds");
+                fmt::print("| {} | {} | {:.2f} | {:.5f} | {:.3f} |\n", m.name, spp, seconds,
+                           relativeMse(r.image, reference),
+                           r.stats.get<double>("counters.pathSegments") / r.stats.get<double>("counters.cameraPaths"));
                 std::fflush(stdout);
-                if (r.stats.renderSeconds > maxSeconds) break;
+                if (seconds > maxSeconds) break;
             }
         }
         return 0;

@@ -11,6 +11,7 @@
 
 #include "median.h"
 #include "gpu_scene/scene_buffers.h"
+#include "render/integrators/path_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/errors.h"
@@ -84,12 +85,13 @@ int main(int argc, char** argv) {
 
         const uint64_t pixels = uint64_t(width) * height;
         Renderer renderer(context, scene);
-        RenderSettings settings;
+        FrameSettings settings;
         settings.width = width;
         settings.height = height;
         settings.samplesPerPixel = spp;
         std::vector<double> renderTimes;
-        for (uint32_t r = 0; r < std::max(1u, repeat / 2); ++r) renderTimes.push_back(renderer.render(settings).stats.renderSeconds);
+        for (uint32_t r = 0; r < std::max(1u, repeat / 2); ++r) 
+            renderTimes.push_back(renderer.render<PathIntegrator>(settings).stats.get<double>("timings.renderSeconds"));
         const double pathsPerSecond = pixels * spp / bench::median(renderTimes);
 
         fmt::print("scene: {} ({} triangles), rays at {}x{}, path tracer at {}x{}, device: {}\n", scenePath,

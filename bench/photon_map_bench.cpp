@@ -17,6 +17,8 @@
 #include "gpu_scene/scene_buffers.h"
 #include "reference_image.h"
 #include "render/photon_map.h"
+#include "render/integrators/photon_integrator.h"
+#include "render/integrators/progressive_photon_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/stopwatch.h"
@@ -88,7 +90,7 @@ void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_
 void benchConvergence(vk::Context& context, const Scene& scene, uint32_t size, uint32_t referenceSpp,
                       const std::filesystem::path& referencePath, double maxSeconds) {
     Renderer renderer(context, scene);
-    RenderSettings base;
+    FrameSettings base;
     base.width = size;
     base.height = size;
     base.seed = 1;
@@ -96,19 +98,21 @@ void benchConvergence(vk::Context& context, const Scene& scene, uint32_t size, u
     const ImageRgb reference = bench::referenceImage(renderer, base, referenceSpp, referencePath);
     fmt::print("\n### Error against time, {}x{} (relMSE against the reference)\n\n", size, size);
     fmt::print("| integrator | spp | seconds | relMSE |\n|---|---|---|---|\n");
-    struct Method { const char* name; Integrator integrator; bool progressive; };
-    for (const Method& m : {Method{"path", Integrator::Path, false}, Method{"photon", Integrator::Photon, false},
-                            Method{"photon --progressive", Integrator::Photon, true}}) {
+    enum class Kind { Path, Photon, Progressive };
+    struct Method { const char* name; Kind kind; };
+    for (const Method& m : {Method{"path", Kind::Path}, Method{"photon", Kind::Photon},
+                            Method{"photon --progressive", Kind::Progressive}}) {
         for (uint32_t spp = 1;; spp *= 2) {
-            RenderSettings s = base;
-            s.integrator = m.integrator;
+            FrameSettings s = base;
             s.samplesPerPixel = spp;
-            s.photon.progressive = m.progressive;
-            const RenderResult r = renderer.render(s);
-            fmt::print("| {} | {} | {:.2f} | {:.5f} |\n", m.name, spp, r.stats.renderSeconds,
-                       relativeMse(r.image, reference));
+            const PhotonIntegratorSettings photon;
+            const RenderResult r = m.kind == Kind::Path     ? renderer.render<PathIntegrator>(s)
+                                   : m.kind == Kind::Photon ? renderer.render<PhotonIntegrator>(s, photon)
+                                                            : renderer.render<ProgressivePhotonIntegrator>(s, photon);
+            const auto seconds = r.stats.get<double>("timings.renderSeconds");
+            fmt::print("| {} | {} | {:.2f} | {:.5f} |\n", m.name, spp, seconds, relativeMse(r.image, reference));
             std::fflush(stdout);
-            if (r.stats.renderSeconds * 2.0 > maxSeconds) break;
+            if (seconds * 2.0 > maxSeconds) break;
         }
     }
 }

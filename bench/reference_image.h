@@ -7,22 +7,22 @@
 #include <fmt/format.h>
 
 #include "image/exr.h"
+#include "render/integrators/path_integrator.h"
 #include "render/renderer.h"
 #include "util/stopwatch.h"
 
 namespace vkp::bench {
 
-inline ImageRgb referenceImage(Renderer& renderer, RenderSettings settings, uint32_t samplesPerPixel,
+inline ImageRgb referenceImage(Renderer& renderer, FrameSettings settings, uint32_t samplesPerPixel,
                                const std::filesystem::path& path) {
     if (!path.empty() && std::filesystem::exists(path)) {
         fmt::print("reference: {}\n", path.string());
         return readExr(path);
     }
-    settings.integrator = Integrator::Path;
     settings.samplesPerPixel = samplesPerPixel;
     settings.seed = 1000;  // independent of the measured runs' seed
     const auto start = Clock::now();
-    ImageRgb reference = renderer.render(settings).image;
+    ImageRgb reference = renderer.render<PathIntegrator>(settings).image;
     fmt::print("reference: path tracer, {} spp, {:.0f} s\n", samplesPerPixel, secondsSince(start));
     if (!path.empty()) writeExr(path, reference);
     return reference;

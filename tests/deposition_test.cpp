@@ -18,6 +18,7 @@
 #include "image/metrics.h"
 #include "render/importon_map.h"
 #include "render/photon_map.h"
+#include "render/integrators/photon_integrator.h"
 #include "render/renderer.h"
 #include "shared/gpu_types.glsl"
 #include "shared/photon.glsl"
@@ -40,15 +41,15 @@ int roomOf(glm::vec3 p) {
     return iz * 10 + ix;
 }
 
-struct GpuScene {
-    explicit GpuScene(const std::string& name)
+struct UploadedScene {
+    explicit UploadedScene(const std::string& name)
         : scene(test::shippedScene(name)), arrays(buildSceneArrays(scene)), buffers(test::gpu(), arrays) {}
     Scene scene;
     SceneArrays arrays;
     SceneBuffers buffers;
 };
 
-std::unique_ptr<ImportonMap> importonsFor(const GpuScene& s) {
+std::unique_ptr<ImportonMap> importonsFor(const UploadedScene& s) {
     ImportonSettings settings;
     settings.paths = 1u << 15;
     return std::make_unique<ImportonMap>(test::gpu(), s.arrays, s.buffers,
@@ -125,7 +126,7 @@ PhotonMapSettings mapSettings(uint32_t mode, const ImportonMap* importons) {
 }
 
 TEST_F(DepositionTest, StoredFluxEstimatesTheDepositedFluxAndPhotonsGoWhereTheCameraLooks) {
-    const GpuScene rooms("rooms-10x10");
+    const UploadedScene rooms("rooms-10x10");
     const auto importons = importonsFor(rooms);
     const int cameraRoom = roomOf(chooseCamera(rooms.scene, -1).position);
     const std::set<int> seen = roomsVisibleFromTheView(rooms.scene);
@@ -170,18 +171,22 @@ TEST_F(DepositionTest, StoredFluxEstimatesTheDepositedFluxAndPhotonsGoWhereTheCa
     }
 }
 
-RenderSettings boxRender(DepositMode mode, uint32_t seed) {
-    RenderSettings s;
-    s.integrator = Integrator::Photon;
+FrameSettings boxFrame(uint32_t seed) {
+    FrameSettings s;
     s.width = 32;
     s.height = 32;
     s.samplesPerPixel = 8;
     s.seed = seed;
-    s.photon.globalPaths = 60000;
-    s.photon.causticPaths = 0;  // nothing specular in the Cornell box
-    s.photon.deposit = mode;
-    s.photon.importonPaths = 1u << 14;
     return s;
+}
+
+PhotonIntegratorSettings boxPhotons(DepositMode mode) {
+    PhotonIntegratorSettings p;
+    p.globalPaths = 60000;
+    p.causticPaths = 0;  // nothing specular in the Cornell box
+    p.deposit.mode = mode;
+    p.deposit.importonPaths = 1u << 14;
+    return p;
 }
 
 // Where p >= epsilon, importance deposition is unbiased: the renders' means agree with keeping
@@ -190,14 +195,15 @@ TEST_F(DepositionTest, RendersAgreeWithKeepingEveryPhoton) {
     const Scene scene = test::shippedScene("cornell-box");
     Renderer renderer(test::gpu(), scene);
     for (const uint32_t seed : {1u, 2u}) {
-        const RenderResult all = renderer.render(boxRender(DepositMode::All, seed));
+        const RenderResult all = renderer.render<PhotonIntegrator>(boxFrame(seed), boxPhotons(DepositMode::All));
+        const auto allStored = all.stats.get<uint64_t>("photons.globalStored");
         for (const DepositMode mode : {DepositMode::Importance, DepositMode::Density}) {
-            const RenderResult kept = renderer.render(boxRender(mode, seed));
-            EXPECT_LT(kept.stats.globalPhotons, all.stats.globalPhotons);
-            EXPECT_EQ(kept.stats.globalCandidates, all.stats.globalPhotons);
-            EXPECT_GT(kept.stats.importanceScale, 0.0f);
+            const RenderResult kept = renderer.render<PhotonIntegrator>(boxFrame(seed), boxPhotons(mode));
+            EXPECT_LT(kept.stats.get<uint64_t>("photons.globalStored"), allStored);
+            EXPECT_EQ(kept.stats.get<uint64_t>("photons.globalDeposits"), allStored);
+            EXPECT_GT(kept.stats.get<double>("photons.importanceScale"), 0.0);
             const double a = meanLuminance(all.image);
-            EXPECT_NEAR(meanLuminance(kept.image), a, 0.02 * a) << kept.stats.deposit << ", seed " << seed;
+            EXPECT_NEAR(meanLuminance(kept.image), a, 0.02 * a) << depositModeName(mode) << ", seed " << seed;
         }
     }
 }
@@ -206,17 +212,18 @@ TEST_F(DepositionTest, SameSeedSameImage) {
     const Scene scene = test::shippedScene("cornell-glass");
     Renderer renderer(test::gpu(), scene);
     for (const DepositMode mode : {DepositMode::Importance, DepositMode::Density}) {
-        RenderSettings s = boxRender(mode, 7);
-        s.photon.causticPaths = 20000;
-        const RenderResult a = renderer.render(s);
+        PhotonIntegratorSettings p = boxPhotons(mode);
+        p.causticPaths = 20000;
+        const RenderResult a = renderer.render<PhotonIntegrator>(boxFrame(7), p);
         test::poisonDeviceMemory(256u << 20);
-        const RenderResult b = renderer.render(s);
+        const RenderResult b = renderer.render<PhotonIntegrator>(boxFrame(7), p);
         ASSERT_EQ(a.image.pixels.size(), b.image.pixels.size());
         EXPECT_EQ(std::memcmp(a.image.pixels.data(), b.image.pixels.data(), a.image.pixels.size() * sizeof(float)), 0)
-            << a.stats.deposit;
-        EXPECT_EQ(a.stats.globalPhotons, b.stats.globalPhotons);
-        EXPECT_EQ(a.stats.causticPhotons, b.stats.causticPhotons);
-        EXPECT_GT(a.stats.causticPhotons, 0u) << a.stats.deposit << ": the glass sphere's caustic is kept";
+            << depositModeName(mode);
+        EXPECT_EQ(a.stats.get<uint64_t>("photons.globalStored"), b.stats.get<uint64_t>("photons.globalStored"));
+        EXPECT_EQ(a.stats.get<uint64_t>("photons.causticStored"), b.stats.get<uint64_t>("photons.causticStored"));
+        EXPECT_GT(a.stats.get<uint64_t>("photons.causticStored"), 0u)
+            << depositModeName(mode) << ": the glass sphere's caustic is kept";
     }
 }
 

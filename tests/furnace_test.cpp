@@ -6,6 +6,7 @@
 
 #include "gpu_test_support.h"
 #include "image/image.h"
+#include "render/integrators/path_integrator.h"
 #include "render/renderer.h"
 #include "test_scenes.h"
 
@@ -16,15 +17,15 @@ class Furnace : public test::GpuTest {};
 
 double renderMean(const Scene& scene, bool nee, uint32_t spp, uint32_t seed) {
     Renderer renderer(test::gpu(), scene);
-    RenderSettings s;
+    FrameSettings s;
     s.width = 32;
     s.height = 32;
     s.samplesPerPixel = spp;
     s.seed = seed;
     s.maxDepth = 96;
     s.nextEventEstimation = nee;
-    const RenderResult r = renderer.render(s);
-    EXPECT_EQ(r.stats.nonFiniteSamples, 0u);
+    const RenderResult r = renderer.render<PathIntegrator>(s);
+    EXPECT_EQ(r.stats.get<uint64_t>("counters.nonFiniteSamples"), 0u);
     double sum = 0.0;
     for (float v : r.image.pixels) {
         EXPECT_TRUE(std::isfinite(v));

@@ -12,6 +12,8 @@
 
 #include "gpu_test_support.h"
 #include "image/metrics.h"
+#include "render/integrators/guided_integrator.h"
+#include "render/integrators/path_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "test_scenes.h"
@@ -21,15 +23,26 @@ namespace {
 
 class GuidedTest : public test::GpuTest {};
 
-RenderSettings settingsFor(Integrator integrator, uint32_t size, uint32_t spp, uint32_t seed) {
-    RenderSettings s;
-    s.integrator = integrator;
-    s.width = size;
-    s.height = size;
-    s.samplesPerPixel = spp;
-    s.seed = seed;
+// A render by the path tracer, or the guided one with `guide`.
+struct GuideRun {
+    FrameSettings frame;
+    bool guided = false;
+    GuideSettings guide;
+};
+
+GuideRun settingsFor(bool guided, uint32_t size, uint32_t spp, uint32_t seed) {
+    GuideRun s;
+    s.guided = guided;
+    s.frame.width = size;
+    s.frame.height = size;
+    s.frame.samplesPerPixel = spp;
+    s.frame.seed = seed;
     s.guide.photons = 30000;
     return s;
+}
+
+RenderResult renderWith(Renderer& renderer, const GuideRun& s) {
+    return s.guided ? renderer.render<GuidedIntegrator>(s.frame, s.guide) : renderer.render<PathIntegrator>(s.frame);
 }
 
 struct MeanAndError {
@@ -38,11 +51,11 @@ struct MeanAndError {
 };
 
 // Mean luminance over seeds and its standard error.
-MeanAndError meanOverSeeds(Renderer& renderer, RenderSettings s, int seeds) {
+MeanAndError meanOverSeeds(Renderer& renderer, GuideRun s, int seeds) {
     double sum = 0.0, sumSq = 0.0;
     for (int i = 0; i < seeds; ++i) {
-        s.seed = 100 + 17 * i;
-        const double m = meanLuminance(renderer.render(s).image);
+        s.frame.seed = 100 + 17 * i;
+        const double m = meanLuminance(renderWith(renderer, s).image);
         sum += m;
         sumSq += m * m;
     }
@@ -61,21 +74,21 @@ class GuidedUnbiased : public GuidedTest, public ::testing::WithParamInterface<c
 TEST_P(GuidedUnbiased, MeanMatchesThePathTracer) {
     const Scene scene = test::shippedScene(GetParam());
     Renderer renderer(test::gpu(), scene);
-    const MeanAndError path = meanOverSeeds(renderer, settingsFor(Integrator::Path, 24, 64, 0), 5);
-    const MeanAndError cached = meanOverSeeds(renderer, settingsFor(Integrator::Guided, 24, 64, 0), 5);
+    const MeanAndError path = meanOverSeeds(renderer, settingsFor(false, 24, 64, 0), 5);
+    const MeanAndError cached = meanOverSeeds(renderer, settingsFor(true, 24, 64, 0), 5);
     expectSameMean(cached, path, "guided, cache");
-    RenderSettings paper = settingsFor(Integrator::Guided, 24, 64, 0);
+    GuideRun paper = settingsFor(true, 24, 64, 0);
     paper.guide.mix = 1.0f;
     expectSameMean(meanOverSeeds(renderer, paper, 5), path, "guided, cache, mix 1");
-    RenderSettings roulette = settingsFor(Integrator::Guided, 24, 64, 0);
+    GuideRun roulette = settingsFor(true, 24, 64, 0);
     roulette.guide.roulette = true;
     expectSameMean(meanOverSeeds(renderer, roulette, 5), path, "guided, cache, guide-driven roulette");
-    RenderSettings adaptive = settingsFor(Integrator::Guided, 24, 64, 0);
+    GuideRun adaptive = settingsFor(true, 24, 64, 0);
     adaptive.guide.adaptPhotons = 4;
     expectSameMean(meanOverSeeds(renderer, adaptive, 5), path, "guided, cache, adaptive grids");
-    RenderSettings perVertex = settingsFor(Integrator::Guided, 16, 8, 0);
+    GuideRun perVertex = settingsFor(true, 16, 8, 0);
     perVertex.guide.cache = false;
-    const MeanAndError pathSmall = meanOverSeeds(renderer, settingsFor(Integrator::Path, 16, 64, 0), 5);
+    const MeanAndError pathSmall = meanOverSeeds(renderer, settingsFor(false, 16, 64, 0), 5);
     expectSameMean(meanOverSeeds(renderer, perVertex, 5), pathSmall, "guided, k nearest per vertex");
     perVertex.guide.roulette = true;
     expectSameMean(meanOverSeeds(renderer, perVertex, 5), pathSmall, "guided, k nearest per vertex, roulette");
@@ -87,13 +100,13 @@ INSTANTIATE_TEST_SUITE_P(Shipped, GuidedUnbiased, ::testing::Values("cornell-box
 TEST_F(GuidedTest, FiniteReproducibleAndLessNoisyWhereIndirectLightDominates) {
     const Scene scene = test::shippedScene("cornell-ceiling");
     Renderer renderer(test::gpu(), scene);
-    const ImageRgb reference = renderer.render(settingsFor(Integrator::Path, 32, 2048, 1)).image;
-    const RenderResult guided = renderer.render(settingsFor(Integrator::Guided, 32, 32, 2));
+    const ImageRgb reference = renderWith(renderer, settingsFor(false, 32, 2048, 1)).image;
+    const RenderResult guided = renderWith(renderer, settingsFor(true, 32, 32, 2));
     test::poisonDeviceMemory(256u << 20);  // memory a pass reads without writing would change the image
-    const RenderResult again = renderer.render(settingsFor(Integrator::Guided, 32, 32, 2));
-    const ImageRgb path = renderer.render(settingsFor(Integrator::Path, 32, 32, 2)).image;
+    const RenderResult again = renderWith(renderer, settingsFor(true, 32, 32, 2));
+    const ImageRgb path = renderWith(renderer, settingsFor(false, 32, 32, 2)).image;
     for (float v : guided.image.pixels) ASSERT_TRUE(std::isfinite(v));
-    EXPECT_EQ(guided.stats.nonFiniteSamples, 0u);
+    EXPECT_EQ(guided.stats.get<uint64_t>("counters.nonFiniteSamples"), 0u);
     EXPECT_EQ(std::memcmp(guided.image.pixels.data(), again.image.pixels.data(),
                           guided.image.pixels.size() * sizeof(float)), 0);
     const double errGuided = relativeMse(guided.image, reference);
@@ -107,11 +120,11 @@ TEST_F(GuidedTest, FiniteReproducibleAndLessNoisyWhereIndirectLightDominates) {
 TEST_F(GuidedTest, AnEmptyGuidingMapFallsBackToBsdfSampling) {
     const Scene scene = test::furnaceScene(0.0f, 1.0f);  // the renderer keeps a reference
     Renderer renderer(test::gpu(), scene);
-    const RenderSettings s = settingsFor(Integrator::Guided, 16, 4, 3);
-    const RenderResult a = renderer.render(s);
+    const GuideRun s = settingsFor(true, 16, 4, 3);
+    const RenderResult a = renderWith(renderer, s);
     test::poisonDeviceMemory(64u << 20);
-    const RenderResult b = renderer.render(s);
-    EXPECT_EQ(a.stats.globalPhotons, 0u);
+    const RenderResult b = renderWith(renderer, s);
+    EXPECT_EQ(a.stats.get<uint64_t>("photons.globalStored"), 0u);
     EXPECT_NEAR(meanLuminance(a.image), 1.0, 1e-3);
     EXPECT_EQ(std::memcmp(a.image.pixels.data(), b.image.pixels.data(), a.image.pixels.size() * sizeof(float)), 0);
 }

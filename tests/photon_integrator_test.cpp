@@ -12,6 +12,9 @@
 #include "gpu_test_support.h"
 #include "image/metrics.h"
 #include "render/photon_map.h"
+#include "render/integrators/path_integrator.h"
+#include "render/integrators/photon_integrator.h"
+#include "render/integrators/progressive_photon_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "test_scenes.h"
@@ -22,9 +25,8 @@ namespace {
 
 class PhotonIntegratorTest : public test::GpuTest {};
 
-RenderSettings smallRender(Integrator integrator, uint32_t size, uint32_t spp, uint32_t seed) {
-    RenderSettings s;
-    s.integrator = integrator;
+FrameSettings smallRender(uint32_t size, uint32_t spp, uint32_t seed) {
+    FrameSettings s;
     s.width = size;
     s.height = size;
     s.samplesPerPixel = spp;
@@ -83,17 +85,18 @@ TEST_F(PhotonIntegratorTest, ChunkedMapsEqualOneChunkAndCountEveryStoredPhoton) 
 TEST_F(PhotonIntegratorTest, AgreesWithThePathTracerOnTheCornellBox) {
     const Scene scene = test::shippedScene("cornell-box");
     Renderer renderer(test::gpu(), scene);
-    const ImageRgb reference = renderer.render(smallRender(Integrator::Path, 48, 512, 1)).image;
+    const ImageRgb reference = renderer.render<PathIntegrator>(smallRender(48, 512, 1)).image;
 
-    RenderSettings s = smallRender(Integrator::Photon, 48, 32, 2);
-    s.photon.globalPaths = 100000;
-    s.photon.causticPaths = 0;  // nothing specular in this scene
-    const ImageRgb finalGather = renderer.render(s).image;  // radiance photons
-    s.photon.radiancePhotonStride = 0;                      // k nearest at every gather hit
+    FrameSettings s = smallRender(48, 32, 2);
+    PhotonIntegratorSettings p;
+    p.globalPaths = 100000;
+    p.causticPaths = 0;  // nothing specular in this scene
+    const ImageRgb finalGather = renderer.render<PhotonIntegrator>(s, p).image;  // radiance photons
+    p.radiancePhotonStride = 0;                                                 // k nearest at every gather hit
     s.samplesPerPixel = 8;
-    const ImageRgb finalGatherKnn = renderer.render(s).image;
-    s.photon.gatherRays = 0;
-    const ImageRgb directRead = renderer.render(s).image;
+    const ImageRgb finalGatherKnn = renderer.render<PhotonIntegrator>(s, p).image;
+    p.gatherRays = 0;
+    const ImageRgb directRead = renderer.render<PhotonIntegrator>(s, p).image;
 
     const double meanRef = meanLuminance(reference);
     for (const auto& [name, image] : {std::pair{"final gather", &finalGather},
@@ -110,18 +113,19 @@ TEST_F(PhotonIntegratorTest, AgreesWithThePathTracerOnTheCornellBox) {
 TEST_F(PhotonIntegratorTest, ProgressiveConvergesTowardsThePathTracerAndIsReproducible) {
     const Scene scene = test::shippedScene("cornell-box");
     Renderer renderer(test::gpu(), scene);
-    const ImageRgb reference = renderer.render(smallRender(Integrator::Path, 32, 1024, 1)).image;
-    RenderSettings s = smallRender(Integrator::Photon, 32, 4, 5);
-    s.photon.progressive = true;
-    s.photon.globalPaths = 20000;
-    s.photon.radius = 0.1f;
-    const ImageRgb few = renderer.render(s).image;
+    const ImageRgb reference = renderer.render<PathIntegrator>(smallRender(32, 1024, 1)).image;
+    FrameSettings s = smallRender(32, 4, 5);
+    PhotonIntegratorSettings p;
+    p.progressive = true;
+    p.globalPaths = 20000;
+    p.radius = 0.1f;
+    const ImageRgb few = renderer.render<ProgressivePhotonIntegrator>(s, p).image;
     test::poisonDeviceMemory(256u << 20);
-    const ImageRgb again = renderer.render(s).image;
+    const ImageRgb again = renderer.render<ProgressivePhotonIntegrator>(s, p).image;
     EXPECT_EQ(std::memcmp(few.pixels.data(), again.pixels.data(), few.pixels.size() * sizeof(float)), 0)
         << "the same seed must give the same bits";
     s.samplesPerPixel = 64;
-    const ImageRgb many = renderer.render(s).image;
+    const ImageRgb many = renderer.render<ProgressivePhotonIntegrator>(s, p).image;
     const double errFew = relativeMse(blockMeans(few, 4), blockMeans(reference, 4));
     const double errMany = relativeMse(blockMeans(many, 4), blockMeans(reference, 4));
     std::printf("progressive relMSE: 4 passes %.5f, 64 passes %.5f\n", errFew, errMany);
@@ -160,26 +164,30 @@ double windowLuminance(const ImageRgb& image, glm::vec2 centre, int halfSize) {
 TEST_F(PhotonIntegratorTest, GlassSphereCausticIsInTheImageAndRendersAreReproducible) {
     const Scene scene = test::shippedScene("cornell-glass");
     Renderer renderer(test::gpu(), scene);
-    RenderSettings s = smallRender(Integrator::Photon, 64, 2, 9);
-    s.photon.globalPaths = 50000;
-    s.photon.causticPaths = 200000;
-    s.photon.gatherRays = 1;
-    const RenderResult a = renderer.render(s);
+    const FrameSettings frame = smallRender(64, 2, 9);
+    PhotonIntegratorSettings p;
+    p.globalPaths = 50000;
+    p.causticPaths = 200000;
+    p.gatherRays = 1;
+    // One integrator for every frame: prepare() rebuilds its maps for each.
+    PhotonIntegrator integrator(renderer.gpuScene(), p);
+    const RenderResult a = renderer.render(frame, integrator);
     const glm::vec2 focus = causticPixel(scene, 64);
     const double caustic = windowLuminance(a.image, focus, 1);
     // The directly lit floor left of the sphere, at the same depth.
     const double floor = windowLuminance(a.image, focus - glm::vec2(18.0f, 0.0f), 1);
     std::printf("caustic %.4f, floor %.4f at pixel (%.1f, %.1f), %llu caustic photons\n", caustic, floor, focus.x,
-                focus.y, (unsigned long long)a.stats.causticPhotons);
+                focus.y, (unsigned long long)a.stats.get<uint64_t>("photons.causticStored"));
     EXPECT_GT(caustic, 3.0 * floor);
-    EXPECT_GT(a.stats.causticPhotons, 0u);
+    EXPECT_GT(a.stats.get<uint64_t>("photons.causticStored"), 0u);
 
     test::poisonDeviceMemory(256u << 20);  // memory a pass reads without writing would change the image
-    const RenderResult b = renderer.render(s);
+    const RenderResult b = renderer.render(frame, integrator);
     ASSERT_EQ(a.image.pixels.size(), b.image.pixels.size());
     EXPECT_EQ(std::memcmp(a.image.pixels.data(), b.image.pixels.data(), a.image.pixels.size() * sizeof(float)), 0);
-    s.seed = 10;
-    const RenderResult c = renderer.render(s);
+    FrameSettings other = frame;
+    other.seed = 10;
+    const RenderResult c = renderer.render(other, integrator);
     EXPECT_NE(std::memcmp(a.image.pixels.data(), c.image.pixels.data(), a.image.pixels.size() * sizeof(float)), 0);
 }
 

@@ -9,6 +9,10 @@
 
 #include "gpu_test_support.h"
 #include "image/metrics.h"
+#include "render/integrators/guided_integrator.h"
+#include "render/integrators/path_integrator.h"
+#include "render/integrators/photon_integrator.h"
+#include "render/integrators/progressive_photon_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "test_scenes.h"
@@ -30,8 +34,8 @@ Scene pointLitScene() {
     return scene;
 }
 
-RenderSettings directOnly(DirectLight direct, uint32_t spp, uint32_t seed) {
-    RenderSettings s;
+FrameSettings directOnly(DirectLight direct, uint32_t spp, uint32_t seed) {
+    FrameSettings s;
     s.width = 64;
     s.height = 64;
     s.samplesPerPixel = spp;
@@ -47,9 +51,9 @@ class RasterDirect : public test::GpuTest {};
 // Direct light only: the raster image against a 64-spp traced one, compared with the noise of two
 // traced images. Returns the raster image.
 ImageRgb expectRasterMatchesTraced(Renderer& renderer, const char* what) {
-    const ImageRgb raster = renderer.render(directOnly(DirectLight::Raster, 1, 1)).image;
-    const ImageRgb traced1 = renderer.render(directOnly(DirectLight::Traced, 64, 1)).image;
-    const ImageRgb traced2 = renderer.render(directOnly(DirectLight::Traced, 64, 2)).image;
+    const ImageRgb raster = renderer.render<PathIntegrator>(directOnly(DirectLight::Raster, 1, 1)).image;
+    const ImageRgb traced1 = renderer.render<PathIntegrator>(directOnly(DirectLight::Traced, 64, 1)).image;
+    const ImageRgb traced2 = renderer.render<PathIntegrator>(directOnly(DirectLight::Traced, 64, 2)).image;
     const double rasterError = relativeMse(raster, traced1);
     const double noise = relativeMse(traced2, traced1);
     fmt::print("{}: relMSE(raster, traced) = {:.3g}, relMSE(traced, traced') = {:.3g}\n", what, rasterError, noise);
@@ -64,7 +68,7 @@ TEST_F(RasterDirect, PointLightsMatchTracedUpToSamplingNoise) {
     Renderer renderer(test::gpu(), scene);
     const ImageRgb raster = expectRasterMatchesTraced(renderer, "point lights");
     // And the raster image is noise-free: rendering it again gives the same bits.
-    const ImageRgb again = renderer.render(directOnly(DirectLight::Raster, 1, 7)).image;
+    const ImageRgb again = renderer.render<PathIntegrator>(directOnly(DirectLight::Raster, 1, 7)).image;
     EXPECT_EQ(again.pixels, raster.pixels);
 }
 
@@ -79,12 +83,12 @@ TEST_F(RasterDirect, SpotAndDirectionalLightsMatchTracedUpToSamplingNoise) {
 TEST_F(RasterDirect, AreaLightSamplesConvergeToTraced) {
     const Scene scene = loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-box.gltf");
     Renderer renderer(test::gpu(), scene);
-    const ImageRgb reference = renderer.render(directOnly(DirectLight::Traced, 256, 3)).image;
+    const ImageRgb reference = renderer.render<PathIntegrator>(directOnly(DirectLight::Traced, 256, 3)).image;
     double previous = 1e30;
     for (uint32_t samples : {1u, 8u, 64u}) {
-        RenderSettings s = directOnly(DirectLight::Raster, 1, 1);
+        FrameSettings s = directOnly(DirectLight::Raster, 1, 1);
         s.areaLightSamples = samples;
-        const double error = relativeMse(renderer.render(s).image, reference);
+        const double error = relativeMse(renderer.render<PathIntegrator>(s).image, reference);
         fmt::print("area light, {} samples per triangle: relMSE to traced = {:.4g}\n", samples, error);
         EXPECT_LT(error, previous) << samples << " samples per emissive triangle";
         previous = error;
@@ -100,7 +104,7 @@ TEST_F(RasterDirect, CornellBoxSamePictureAsTraced) {
     const Scene scene = loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-box.gltf");
     Renderer renderer(test::gpu(), scene);
     auto settings = [](DirectLight direct, uint32_t seed) {
-        RenderSettings s;
+        FrameSettings s;
         s.width = 64;
         s.height = 64;
         s.samplesPerPixel = 64;
@@ -110,12 +114,12 @@ TEST_F(RasterDirect, CornellBoxSamePictureAsTraced) {
         s.direct = direct;
         return s;
     };
-    const ImageRgb raster = renderer.render(settings(DirectLight::Raster, 1)).image;
-    const ImageRgb traced1 = renderer.render(settings(DirectLight::Traced, 2)).image;
-    const ImageRgb traced2 = renderer.render(settings(DirectLight::Traced, 3)).image;
+    const ImageRgb raster = renderer.render<PathIntegrator>(settings(DirectLight::Raster, 1)).image;
+    const ImageRgb traced1 = renderer.render<PathIntegrator>(settings(DirectLight::Traced, 2)).image;
+    const ImageRgb traced2 = renderer.render<PathIntegrator>(settings(DirectLight::Traced, 3)).image;
     const double rasterError = relativeMse(raster, traced1);
     const double noise = relativeMse(traced2, traced1);
-    const ImageRgb raster2 = renderer.render(settings(DirectLight::Raster, 4)).image;
+    const ImageRgb raster2 = renderer.render<PathIntegrator>(settings(DirectLight::Raster, 4)).image;
     const double rasterNoise = relativeMse(raster2, raster);
     fmt::print("cornell-box: relMSE(raster, traced) = {:.4g}, relMSE(traced, traced') = {:.4g}, relMSE(raster, raster') = {:.4g}\n",
                rasterError, noise, rasterNoise);
@@ -127,10 +131,11 @@ TEST_F(RasterDirect, CornellBoxSamePictureAsTraced) {
 // Every integrator that takes --direct raster (path, guided, photon two-pass and progressive):
 // the same mean with the raster direct light as with next-event estimation.
 TEST_F(RasterDirect, FullRenderMeansAgree) {
-    struct Config { const char* name; Integrator integrator; bool progressive; };
-    for (const Config& config : {Config{"path", Integrator::Path, false}, Config{"guided", Integrator::Guided, false},
-                                 Config{"photon", Integrator::Photon, false},
-                                 Config{"photon --progressive", Integrator::Photon, true}})
+    enum class Kind { Path, Guided, Photon };
+    struct Config { const char* name; Kind kind; bool progressive; };
+    for (const Config& config : {Config{"path", Kind::Path, false}, Config{"guided", Kind::Guided, false},
+                                 Config{"photon", Kind::Photon, false},
+                                 Config{"photon --progressive", Kind::Photon, true}})
     for (int sceneIndex = 0; sceneIndex < 2; ++sceneIndex) {
         const Scene scene = sceneIndex == 0 ? pointLitScene()
                                             : loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-box.gltf");
@@ -139,8 +144,7 @@ TEST_F(RasterDirect, FullRenderMeansAgree) {
         std::array<double, 2> sum{0, 0}, sumSq{0, 0};
         for (int mode = 0; mode < 2; ++mode)
             for (int seed = 0; seed < kSeeds; ++seed) {
-                RenderSettings s;
-                s.integrator = config.integrator;
+                FrameSettings s;
                 s.width = 32;
                 s.height = 32;
                 s.samplesPerPixel = config.progressive ? 8 : 32;
@@ -148,13 +152,19 @@ TEST_F(RasterDirect, FullRenderMeansAgree) {
                 s.maxDepth = 4;
                 s.pixelCentres = true;
                 s.areaLightSamples = 64;
-                s.guide.photons = 10000;
-                s.photon.globalPaths = config.progressive ? 10000 : 20000;
-                s.photon.causticPaths = 0;
-                s.photon.gatherRays = 1;
-                s.photon.progressive = config.progressive;
                 s.direct = mode == 0 ? DirectLight::Raster : DirectLight::Traced;
-                const double m = meanLuminance(renderer.render(s).image);
+                GuideSettings guide;
+                guide.photons = 10000;
+                PhotonIntegratorSettings photon;
+                photon.globalPaths = config.progressive ? 10000 : 20000;
+                photon.causticPaths = 0;
+                photon.gatherRays = 1;
+                const RenderResult r =
+                    config.kind == Kind::Path     ? renderer.render<PathIntegrator>(s)
+                    : config.kind == Kind::Guided ? renderer.render<GuidedIntegrator>(s, guide)
+                    : config.progressive          ? renderer.render<ProgressivePhotonIntegrator>(s, photon)
+                                                  : renderer.render<PhotonIntegrator>(s, photon);
+                const double m = meanLuminance(r.image);
                 sum[mode] += m;
                 sumSq[mode] += m * m;
             }
@@ -190,13 +200,13 @@ TEST(RasterDirectSync, NoHazardsUnderSynchronizationValidation) {
         test::addPointLight(scene, scene.bounds.min + glm::vec3(0.2f + 0.15f * i, 0.6f, 0.5f) * scene.bounds.extent(),
                             glm::vec3(0.5f));
     Renderer renderer(context, scene);
-    RenderSettings s;
+    FrameSettings s;
     s.width = 24;
     s.height = 24;
     s.samplesPerPixel = 2;
     s.direct = DirectLight::Raster;
     s.areaLightSamples = 3;
-    const RenderResult r = renderer.render(s);
+    const RenderResult r = renderer.render<PathIntegrator>(s);
     EXPECT_GT(meanLuminance(r.image), 0.0);
     const auto messages = context.validationMessages();
     EXPECT_EQ(context.validationMessageCount(), 0u) << (messages.empty() ? "" : messages.front());

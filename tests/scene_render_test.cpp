@@ -12,6 +12,7 @@
 #include "gpu_test_support.h"
 #include "image/image.h"
 #include "image/metrics.h"
+#include "render/integrators/path_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 
@@ -21,12 +22,12 @@ namespace {
 constexpr uint32_t kSize = 64;
 
 RenderResult renderScene(Renderer& renderer, uint32_t spp, uint32_t seed) {
-    RenderSettings s;
+    FrameSettings s;
     s.width = kSize;
     s.height = kSize;
     s.samplesPerPixel = spp;
     s.seed = seed;
-    return renderer.render(s);
+    return renderer.render<PathIntegrator>(s);
 }
 
 class SceneRender : public test::GpuTest, public ::testing::WithParamInterface<const char*> {};
@@ -53,7 +54,7 @@ TEST_P(SceneRender, FiniteReproducibleAndMatchesReferenceMean) {
     for (int seed = 0; seed < kSeeds; ++seed) {
         const RenderResult r = renderScene(renderer, 32, 100 + seed);
         EXPECT_TRUE(allFinite(r.image));
-        EXPECT_EQ(r.stats.nonFiniteSamples, 0u);
+        EXPECT_EQ(r.stats.get<uint64_t>("counters.nonFiniteSamples"), 0u);
         const auto m = meanRadiance(r.image);
         for (int k = 0; k < 3; ++k) { sum[k] += m[k]; sumSq[k] += m[k] * m[k]; }
     }
@@ -77,14 +78,14 @@ TEST_P(SceneRender, NextEventEstimationAgreesWithBsdfSampling) {
     std::array<double, 2> sum{0, 0}, sumSq{0, 0};
     for (int mode = 0; mode < 2; ++mode)
         for (int seed = 0; seed < kSeeds; ++seed) {
-            RenderSettings s;
+            FrameSettings s;
             s.width = 32;
             s.height = 32;
             s.samplesPerPixel = 64;
             s.seed = 200 + seed;
             s.maxDepth = 2;
             s.nextEventEstimation = mode == 0;
-            const RenderResult r = renderer.render(s);
+            const RenderResult r = renderer.render<PathIntegrator>(s);
             const double m = meanValue(r.image);
             sum[mode] += m;
             sumSq[mode] += m * m;

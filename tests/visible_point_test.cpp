@@ -8,6 +8,7 @@
 #include "gpu_test_support.h"
 #include "image/image.h"
 #include "passes/visible_point_pass.h"
+#include "render/integrators/path_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "shared/photon.glsl"
@@ -63,13 +64,13 @@ TEST_F(VisiblePoints, DirectLightMatchesTheOneBouncePathTracer) {
     Renderer renderer(test::gpu(), scene);
     for (int seed = 0; seed < kSeeds; ++seed) {
         const double a = runVisiblePoints(scene, 32, 64, 10 + seed).meanRadiance;
-        RenderSettings s;
+        FrameSettings s;
         s.width = 32;
         s.height = 32;
         s.samplesPerPixel = 64;
         s.seed = 20 + seed;
         s.maxDepth = 1;
-        const double b = meanValue(renderer.render(s).image);
+        const double b = meanValue(renderer.render<PathIntegrator>(s).image);
         sumA += a; sumSqA += a * a; sumB += b; sumSqB += b * b;
     }
     const double meanA = sumA / kSeeds, meanB = sumB / kSeeds;

@@ -11,12 +11,15 @@
 #include "image/atomic_file.h"
 #include "image/exr.h"
 #include "image/metrics.h"
-#include "render/photon_export.h"
-#include "render/guide_debug.h"
-#include "render/deposition.h"
-#include "render/photon_map.h"
 #include "image/png.h"
+#include "render/deposition.h"
+#include "render/guide_debug.h"
+#include "render/integrators/photon_settings.h"
+#include "render/photon_export.h"
+#include "render/photon_map.h"
+#include "render/renderer.h"
 #include "scene/gltf_loader.h"
+#include "util/check_range.h"
 #include "util/errors.h"
 #include "vk/context.h"
 
@@ -29,70 +32,23 @@ std::filesystem::path defaultOutput(const std::filesystem::path& scene) {
     return std::filesystem::path("out") / (scene.stem().string() + ".exr");
 }
 
-nlohmann::json statsToJson(const RenderCommandOptions& options, const RenderStats& stats, const ImageRgb& image,
-                           double loadSeconds, double totalSeconds) {
-    const RenderSettings& s = options.settings;
-    nlohmann::json j;
-    j["scene"] = options.scene.string();
-    j["integrator"] = stats.integrator;
-    j["settings"] = {{"width", s.width}, {"height", s.height}, {"spp", s.samplesPerPixel},
-                     {"seed", s.seed}, {"maxDepth", s.maxDepth}, {"timeLimit", s.timeLimitSeconds},
-                     {"nextEventEstimation", s.nextEventEstimation}, {"direct", stats.direct},
-                     {"areaLightSamples", s.areaLightSamples}};
-    if (s.direct == DirectLight::Raster)
-        j["raster"] = {{"lights", stats.rasterLights}, {"seconds", stats.rasterSeconds}};
-    if (s.integrator == Integrator::Photon) {
-        const PhotonRenderSettings& p = s.photon;
-        j["settings"]["photon"] = {{"photons", p.globalPaths}, {"causticPhotons", p.causticPaths},
-                                   {"gatherRays", p.gatherRays}, {"gatherK", p.gatherK},
-                                   {"radiancePhotons", p.radiancePhotonStride},
-                                   {"radius", stats.gatherRadius}, {"globalRadius", stats.globalRadius}, {"progressive", p.progressive},
-                                   {"alpha", p.alpha}, {"deposit", stats.deposit}, {"q", p.q},
-                                   {"importons", p.importonPaths}, {"depositEpsilon", p.depositEpsilon},
-                                   {"depositCutoff", p.depositCutoff}, {"densityAccuracy", p.densityAccuracy},
-                                   {"densityRounds", p.densityRounds}, {"densityRoulette", p.densityRoulette}};
-    }
-    if (s.integrator == Integrator::Guided) {
-        const GuideRenderSettings& g = s.guide;
-        j["settings"]["guide"] = {{"photons", g.photons}, {"k", g.k}, {"grid", fmt::format("{}x{}", g.gridU, g.gridV)},
-                                  {"mix", g.mix}, {"cache", g.cache}, {"roulette", g.roulette}, {"adapt", g.adaptPhotons},
-                                  {"searchRadius", stats.globalRadius}};
-    }
-    if (s.integrator != Integrator::Path) {
-        j["photons"] = {{"pathsTraced", stats.photonPathsTraced}, {"globalStored", stats.globalPhotons},
-                        {"causticStored", stats.causticPhotons}, {"dropped", stats.photonsDropped},
-                        {"mapBytes", stats.photonMapBytes}, {"seconds", stats.photonSeconds},
-                        {"deposit", stats.deposit}, {"globalDeposits", stats.globalCandidates},
-                        {"causticDeposits", stats.causticCandidates}, {"importonsStored", stats.importons}, {"importonBytes", stats.importonBytes},
-                        {"importanceScale", stats.importanceScale}};
-    }
-    j["device"] = stats.device;
-    j["scene_stats"] = {{"triangles", stats.triangles}, {"lights", stats.lights},
-                        {"gpuBytes", stats.gpuSceneBytes}};
-    j["timings"] = {{"loadSeconds", loadSeconds}, {"bvhSeconds", stats.bvhSeconds},
-                    {"uploadSeconds", stats.uploadSeconds}, {"renderSeconds", stats.renderSeconds},
-                    {"totalSeconds", totalSeconds}};
-    j["counters"] = {{"samplesPerPixel", stats.samplesPerPixel}, {"cameraPaths", stats.cameraPaths},
-                     {"nonFiniteSamples", stats.nonFiniteSamples}, {"pathSegments", stats.pathSegments},
-                     {"pathsPerSecond", stats.renderSeconds > 0 ? stats.cameraPaths / stats.renderSeconds : 0.0}};
-    j["meanRadiance"] = meanRadiance(image);
-    j["partial"] = stats.partial;
-    j["stopReason"] = stats.stopReason;
-    return j;
-}
-
-void printDepositStats(const RenderStats& stats) {
-    const auto share = [](uint64_t kept, uint64_t deposited) { return deposited ? 100.0 * kept / deposited : 0.0; };
-    fmt::print(stderr, "deposit {}: kept {} of {} global deposits ({:.1f} %), {} of {} caustic ({:.1f} %); "
-                       "{} importons ({:.1f} MB), f = {:.4g}\n",
-               stats.deposit, stats.globalPhotons, stats.globalCandidates, share(stats.globalPhotons, stats.globalCandidates),
-               stats.causticPhotons, stats.causticCandidates, share(stats.causticPhotons, stats.causticCandidates),
-               stats.importons, stats.importonBytes / 1048576.0, stats.importanceScale);
-}
-
 }  // namespace
 
-int runRender(const RenderCommandOptions& options) {
+void PhotonsCommandOptions::check() const {
+    checkRange("--photons", photons, 1u, 1u << 26);
+    checkRange("--max-deposits", maxDeposits, 1u, 64u);
+    checkRange("--width", width, 1u, 16384u);
+    checkRange("--height", height, 1u, 16384u);
+    deposit.check();
+}
+
+void GuideGridCommandOptions::check() const {
+    checkRange("--width", width, 1u, 16384u);
+    checkRange("--height", height, 1u, 16384u);
+    guide.check();
+}
+
+int runRender(const RenderCommandOptions& options, const IntegratorConfig& config) {
     const auto start = Clock::now();
     const std::filesystem::path exrPath = options.output.empty() ? defaultOutput(options.scene) : options.output;
     if (exrPath.extension() != ".exr")
@@ -106,7 +62,7 @@ int runRender(const RenderCommandOptions& options) {
         fmt::print(stderr, "warning: {}: dropped {} degenerate triangle(s)\n", options.scene.string(),
                    scene.droppedDegenerateTriangles);
     // Validate the camera choice before the expensive set-up.
-    chooseCamera(scene, options.settings.cameraIndex);
+    chooseCamera(scene, options.frame.cameraIndex);
 
     vk::Context context({options.validate, options.device});
     if (!options.quiet)
@@ -114,56 +70,53 @@ int runRender(const RenderCommandOptions& options) {
                    scene.triangles.size(), context.deviceName(), context.validationEnabled() ? " with validation" : "");
     installInterruptHandler();
     Renderer renderer(context, scene);
-    const RenderSettings& rs = options.settings;
-    if (!options.quiet && rs.integrator == Integrator::Photon)
-        fmt::print(stderr, "tracing {} photon paths{} ...\n",
-                   rs.photon.progressive ? uint64_t(rs.photon.globalPaths) * rs.samplesPerPixel
-                                         : uint64_t(rs.photon.globalPaths) + rs.photon.causticPaths,
-                   rs.photon.progressive ? fmt::format(" ({} per sample)", rs.photon.globalPaths) : "");
-    if (!options.quiet && rs.integrator == Integrator::Guided)
-        fmt::print(stderr, "tracing {} guiding photon paths ...\n", rs.guide.photons);
+    const std::unique_ptr<Integrator> integrator = config.create(renderer.gpuScene());
+    if (const std::string message = config.startMessage(options.frame); !options.quiet && !message.empty())
+        fmt::print(stderr, "{}\n", message);
     ProgressReporter progress("render", options.quiet);
     RenderResult result = renderer.render(
-        options.settings,
+        options.frame, *integrator,
         [&](const RenderProgress& p) { progress.update(p.samplesDone, p.samplesTotal, p.elapsedSeconds); },
         &interruptRequested());
     progress.finish();
-    const RenderStats& stats = result.stats;
+    Stats& stats = result.stats;
     const double totalSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    stats.set("scene", options.scene.string());
+    stats.set("timings.loadSeconds", loadSeconds);
+    stats.set("timings.totalSeconds", totalSeconds);
 
-    const RenderSettings& s = options.settings;
+    const FrameSettings& frame = options.frame;
+    const auto spp = stats.get<uint32_t>("counters.samplesPerPixel");
+    const auto renderSeconds = stats.get<double>("timings.renderSeconds");
+    const auto partial = stats.get<bool>("partial");
+    const auto stopReason = stats.get<std::string>("stopReason");
     std::vector<std::pair<std::string, std::string>> attributes{
         {"vkphoton/scene", options.scene.string()},
-        {"vkphoton/integrator", stats.integrator},
-        {"vkphoton/spp", std::to_string(stats.samplesPerPixel)},
-        {"vkphoton/sppRequested", std::to_string(s.samplesPerPixel)},
-        {"vkphoton/seed", std::to_string(s.seed)},
-        {"vkphoton/maxDepth", std::to_string(s.maxDepth)},
-        {"vkphoton/device", stats.device},
-        {"vkphoton/renderSeconds", fmt::format("{:.3f}", stats.renderSeconds)},
+        {"vkphoton/integrator", stats.get<std::string>("integrator")},
+        {"vkphoton/spp", std::to_string(spp)},
+        {"vkphoton/sppRequested", std::to_string(frame.samplesPerPixel)},
+        {"vkphoton/seed", std::to_string(frame.seed)},
+        {"vkphoton/maxDepth", std::to_string(frame.maxDepth)},
+        {"vkphoton/device", stats.get<std::string>("device")},
+        {"vkphoton/renderSeconds", fmt::format("{:.3f}", renderSeconds)},
         {"vkphoton/totalSeconds", fmt::format("{:.3f}", totalSeconds)},
-        {"vkphoton/partial", stats.partial ? "true" : "false"},
-        {"vkphoton/stopReason", stats.stopReason},
+        {"vkphoton/partial", partial ? "true" : "false"},
+        {"vkphoton/stopReason", stopReason},
     };
     writeExr(exrPath, result.image, attributes);
     writePng(pngPath, result.image);
-    if (!options.statsJson.empty())
-        writeTextAtomically(options.statsJson, statsToJson(options, stats, result.image, loadSeconds, totalSeconds).dump(2) + "\n");
-    if (stats.photonsDropped > 0)
-        fmt::print(stderr, "warning: {} photon(s) did not fit their map: fewer paths or --max-deposits would keep all\n",
-                   stats.photonsDropped);
-    if (stats.nonFiniteSamples > 0)
-        fmt::print(stderr, "warning: {} sample(s) were NaN or infinite and were dropped\n", stats.nonFiniteSamples);
-    if (!options.quiet && s.integrator == Integrator::Photon) {
-        fmt::print(stderr, "photon maps: {} global and {} caustic photons from {} paths in {:.2f} s ({:.1f} MB); radius {:.4g}\n",
-                   stats.globalPhotons, stats.causticPhotons, stats.photonPathsTraced, stats.photonSeconds,
-                   stats.photonMapBytes / 1048576.0, stats.gatherRadius);
-        if (stats.deposit != "all") printDepositStats(stats);
+    if (!options.statsJson.empty()) {
+        nlohmann::json json = stats.toJson();
+        json["meanRadiance"] = meanRadiance(result.image);
+        writeTextAtomically(options.statsJson, json.dump(2) + "\n");
     }
-    if (!options.quiet)
+    for (const std::string& warning : stats.warnings()) fmt::print(stderr, "warning: {}\n", warning);
+    if (!options.quiet) {
+        for (const std::string& note : stats.notes()) fmt::print(stderr, "{}\n", note);
         fmt::print(stderr, "wrote {} and {} ({} spp{}, {:.2f} s rendering, {:.2f} Mpaths/s)\n", exrPath.string(),
-                   pngPath.string(), stats.samplesPerPixel, stats.partial ? ", partial: " + stats.stopReason : "",
-                   stats.renderSeconds, stats.renderSeconds > 0 ? stats.cameraPaths / stats.renderSeconds / 1e6 : 0.0);
+                   pngPath.string(), spp, partial ? ", partial: " + stopReason : "", renderSeconds,
+                   stats.get<double>("counters.pathsPerSecond") / 1e6);
+    }
     if (context.validationEnabled()) context.throwOnValidationMessages();
     return interruptRequested().load() ? 130 : kExitOk;
 }
@@ -175,24 +128,23 @@ int runPhotons(const PhotonsCommandOptions& options) {
     if (output.extension() != ".ply")
         throw InputError(fmt::format("-o {}: the photon map is written as .ply", output.string()));
     const Scene scene = loadGltf(options.scene);
+    FrameSettings frameSettings;  // what the importons see: camera, image, seed
+    frameSettings.width = options.width;
+    frameSettings.height = options.height;
+    frameSettings.cameraIndex = options.cameraIndex;
+    frameSettings.seed = options.seed;
+    const Frame frame = makeFrame(scene, frameSettings);
     vk::Context context({options.validate, options.device});
-    const SceneArrays arrays = buildSceneArrays(scene);
-    const SceneBuffers buffers(context, arrays);
-    RenderSettings render;  // what the importons need: camera, image, seed, deposit flags
-    render.photon = options.deposit;
-    render.width = options.width;
-    render.height = options.height;
-    render.cameraIndex = options.cameraIndex;
-    render.seed = options.seed;
-    const std::unique_ptr<ImportonMap> importons = makeImportonMap(context, scene, arrays, buffers, render);
+    const GpuScene gpuScene(context, scene);
+    const std::unique_ptr<ImportonMap> importons = makeImportonMap(gpuScene, frame, options.deposit);
     PhotonMapSettings settings;  // every stored photon, in chunks: maps of millions fit
     settings.paths = options.photons;
     settings.maxDeposits = options.maxDeposits;
     settings.seed = options.seed;
-    settings.deposit = depositSettings(options.deposit, options.deposit.deposit, importons.get());
-    if (options.deposit.deposit == DepositMode::Density)
-        settings.cellSize = densityCellSize(options.deposit, options.deposit.gatherK, *importons);
-    PhotonMap map(context, scene, arrays, buffers, settings);
+    settings.deposit = depositSettings(options.deposit, options.deposit.mode, importons.get());
+    if (options.deposit.mode == DepositMode::Density)
+        settings.cellSize = densityCellSize(options.deposit, PhotonIntegratorSettings().gatherK, *importons);
+    PhotonMap map(context, scene, gpuScene.arrays(), gpuScene.buffers(), settings);
     const PhotonMapStats stats = map.build(0);
     const PhotonCounters& c = stats.traced;
     const double seconds = stats.traceSeconds;
@@ -208,7 +160,7 @@ int runPhotons(const PhotonsCommandOptions& options) {
                    c.absorbed, c.lost, c.truncated, output.string());
     if (!options.quiet && importons)
         fmt::print(stderr, "deposit {}: kept {} of {} photons ({:.1f} %, {:.1f} MB); {} importons, f = {:.4g}\n",
-                   depositModeName(options.deposit.deposit), stats.stored, stats.candidates,
+                   depositModeName(options.deposit.mode), stats.stored, stats.candidates,
                    stats.candidates ? 100.0 * stats.stored / stats.candidates : 0.0, map.bytes() / 1048576.0,
                    importons->stats().stored, importons->stats().importanceScale);
     if (context.validationEnabled()) context.throwOnValidationMessages();
@@ -224,13 +176,12 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
     const Scene scene = loadGltf(options.scene);
     const Camera camera = chooseCamera(scene, options.cameraIndex);
     vk::Context context({options.validate, options.device});
-    const SceneArrays arrays = buildSceneArrays(scene);
-    const SceneBuffers buffers(context, arrays);
-    GuideRenderSettings settings = options.guide;
+    const GpuScene gpuScene(context, scene);
+    GuideSettings settings = options.guide;
     settings.cache = false;  // the per-vertex grid: the one the paper builds
-    const PathGuide guide(context, scene, arrays, buffers, settings, options.seed);
-    const GuideGridAtPixel grid =
-        guideGridAtPixel(scene, arrays, guide, settings, camera, options.width, options.height, options.x, options.y);
+    const PathGuide guide(gpuScene, settings, options.seed);
+    const GuideGridAtPixel grid = guideGridAtPixel(scene, gpuScene.arrays(), guide, settings, camera, options.width,
+                                                   options.height, options.x, options.y);
     writePng(output, guideGridImage(grid));
     if (!options.quiet) {
         fmt::print("pixel ({}, {}) sees ({:.3f}, {:.3f}, {:.3f}), normal ({:.2f}, {:.2f}, {:.2f}); {} photons\n", options.x,

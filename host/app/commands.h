@@ -4,7 +4,10 @@
 #include <filesystem>
 #include <string>
 
-#include "render/renderer.h"
+#include "render/deposit_options.h"
+#include "render/frame.h"
+#include "render/integrator_registry.h"
+#include "render/path_guide.h"
 
 namespace vkp {
 
@@ -12,7 +15,7 @@ struct RenderCommandOptions {
     std::filesystem::path scene;
     std::filesystem::path output;       // .exr; empty: out/<scene name>.exr
     std::filesystem::path statsJson;    // empty: none
-    RenderSettings settings;
+    FrameSettings frame;
     std::string device;
     bool validate = false;
     bool quiet = false;
@@ -24,17 +27,19 @@ struct PhotonsCommandOptions {
     uint32_t photons = 200000;          // photon paths to emit
     uint32_t maxDeposits = 8;
     uint32_t seed = 0;
-    // --deposit and its flags (the rest is unused); every photon unless told otherwise.
-    PhotonRenderSettings deposit = [] {
-        PhotonRenderSettings p;
-        p.deposit = DepositMode::All;
-        return p;
+    // --deposit and its flags; every photon unless told otherwise.
+    DepositOptions deposit = [] {
+        DepositOptions d;
+        d.mode = DepositMode::All;
+        return d;
     }();
     uint32_t width = 512, height = 512; // the image the importons' camera looks at
     int cameraIndex = -1;
     std::string device;
     bool validate = false;
     bool quiet = false;
+
+    void check() const;
 };
 
 struct GuideGridCommandOptions {
@@ -44,13 +49,16 @@ struct GuideGridCommandOptions {
     uint32_t width = 512, height = 512;
     int cameraIndex = -1;
     uint32_t seed = 0;
-    GuideRenderSettings guide;
+    GuideSettings guide;
     std::string device;
     bool validate = false;
     bool quiet = false;
+
+    void check() const;
 };
 
-int runRender(const RenderCommandOptions& options);
+// Renders with the integrator `config` builds (its settings checked already).
+int runRender(const RenderCommandOptions& options, const IntegratorConfig& config);
 int runGuideGrid(const GuideGridCommandOptions& options);
 int runPhotons(const PhotonsCommandOptions& options);
 int runDevices();

@@ -17,47 +17,37 @@ uint32_t depositModeCode(DepositMode mode) {
 
 }  // namespace
 
-const char* depositModeName(DepositMode mode) {
-    switch (mode) {
-        case DepositMode::Importance: return "importance";
-        case DepositMode::Density: return "density";
-        default: return "all";
-    }
-}
-
-std::unique_ptr<ImportonMap> makeImportonMap(vk::Context& context, const Scene& scene, const SceneArrays& arrays,
-                                             const SceneBuffers& buffers, const RenderSettings& s) {
-    if (s.photon.deposit == DepositMode::All) return nullptr;
+std::unique_ptr<ImportonMap> makeImportonMap(const GpuScene& scene, const Frame& frame, const DepositOptions& options) {
+    if (options.mode == DepositMode::All) return nullptr;
     ImportonSettings settings;
-    settings.paths = s.photon.importonPaths;
-    settings.seed = s.seed;
-    return std::make_unique<ImportonMap>(context, arrays, buffers,
-                                         makeGpuCamera(chooseCamera(scene, s.cameraIndex), s.width, s.height), s.width,
-                                         s.height, settings);
+    settings.paths = options.importonPaths;
+    settings.seed = frame.seed;
+    return std::make_unique<ImportonMap>(scene.context(), scene.arrays(), scene.buffers(), frame.gpuCamera, frame.width,
+                                         frame.height, settings);
 }
 
-void addImportonStats(RenderStats& stats, const ImportonMap* importons) {
+void reportImportons(Stats& stats, const ImportonMap* importons) {
     if (!importons) return;
-    stats.importons = importons->stats().stored;
-    stats.importanceScale = importons->stats().importanceScale;
-    stats.photonSeconds += importons->stats().seconds;
-    stats.importonBytes += importons->bytes();
+    stats.set("photons.importonsStored", importons->stats().stored);
+    stats.set("photons.importanceScale", importons->stats().importanceScale);
+    stats.add("photons.seconds", importons->stats().seconds);
+    stats.add("photons.importonBytes", importons->bytes());
 }
 
-DepositSettings depositSettings(const PhotonRenderSettings& p, DepositMode mode, const ImportonMap* importons) {
+DepositSettings depositSettings(const DepositOptions& options, DepositMode mode, const ImportonMap* importons) {
     DepositSettings d;
     d.mode = depositModeCode(mode);
     d.importons = importons;
-    d.epsilon = p.depositEpsilon;
-    d.cutoff = p.depositCutoff;
-    d.densityAccuracy = p.densityAccuracy;
-    d.rounds = p.densityRounds;
-    d.redistribute = !p.densityRoulette;
+    d.epsilon = options.epsilon;
+    d.cutoff = options.cutoff;
+    d.densityAccuracy = options.densityAccuracy;
+    d.rounds = options.densityRounds;
+    d.redistribute = !options.densityRoulette;
     return d;
 }
 
-float densityCellSize(const PhotonRenderSettings& p, uint32_t k, const ImportonMap& importons) {
-    const double required = double(p.densityAccuracy) * importons.stats().medianPathImportance;
+float densityCellSize(const DepositOptions& options, uint32_t k, const ImportonMap& importons) {
+    const double required = double(options.densityAccuracy) * importons.stats().medianPathImportance;
     if (!(required > 0.0)) throw InputError("--deposit density: no importon sees the scene through a bounce");
     return static_cast<float>(std::sqrt(k / (gpu::kPi * required)));
 }

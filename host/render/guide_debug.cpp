@@ -13,7 +13,7 @@
 namespace vkp {
 
 GuideGridAtPixel guideGridAtPixel(const Scene& scene, const SceneArrays& arrays, const PathGuide& guide,
-                                  const GuideRenderSettings& settings, const Camera& camera, uint32_t width,
+                                  const GuideSettings& settings, const Camera& camera, uint32_t width,
                                   uint32_t height, uint32_t x, uint32_t y) {
     if (x >= width || y >= height)
         throw InputError(fmt::format("--pixel {} {}: outside the {}x{} image", x, y, width, height));

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "image/image.h"
 #include "render/path_guide.h"
 
 namespace vkp {
@@ -24,7 +25,7 @@ struct GuideGridAtPixel {
 // Throws InputError when the pixel is outside the image, sees no surface, or sees a mirror-like
 // surface (no guiding there).
 GuideGridAtPixel guideGridAtPixel(const Scene& scene, const SceneArrays& arrays, const PathGuide& guide,
-                                  const GuideRenderSettings& settings, const Camera& camera, uint32_t width,
+                                  const GuideSettings& settings, const Camera& camera, uint32_t width,
                                   uint32_t height, uint32_t x, uint32_t y);
 
 // The grid as an image, `cellPixels` per cell, density scaled so the densest cell is 1.

@@ -2,8 +2,13 @@
 
 #include <algorithm>
 
+#include <cstdio>
+
+#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "util/check_range.h"
+#include "util/cli_choice.h"
 #include "util/errors.h"
 #include "util/stopwatch.h"
 #include "vk/compute_kernel.h"
@@ -20,20 +25,67 @@ constexpr float kCacheCellFactor = 3.0f;
 
 }  // namespace
 
-void checkGuideSettings(const GuideRenderSettings& g) {
-    if (g.photons == 0) throw InputError("--guide-photons must be at least 1");
-    if (g.k == 0 || g.k > gpu::kMaxGatherK)
-        throw InputError(fmt::format("--guide-k {}: must be between 1 and {}", g.k, gpu::kMaxGatherK));
-    if (g.gridU == 0 || g.gridV == 0 || g.gridU * g.gridV > gpu::kMaxGuideCells || g.gridV > 255)
-        throw InputError(fmt::format("--guide-grid {}x{}: needs 1 <= m * n <= {}", g.gridU, g.gridV,
-                                     gpu::kMaxGuideCells));
-    if (g.adaptPhotons > 0xffff) throw InputError(fmt::format("--guide-adapt {}: at most 65535", g.adaptPhotons));
-    if (!(g.mix >= 0.0f && g.mix <= 1.0f)) throw InputError(fmt::format("--guide-mix {}: must lie in [0, 1]", g.mix));
+void GuideSettings::check() const {
+    checkRange("--guide-photons", photons, 1u, 1u << 26);
+    checkRange("--guide-k", k, 1u, gpu::kMaxGatherK);
+    // Each factor on its own first: their product must not wrap around.
+    if (gridU == 0 || gridV == 0 || gridU > gpu::kMaxGuideCells || gridV > gpu::kMaxGuideCells ||
+        gridU * gridV > gpu::kMaxGuideCells)
+        throw InputError(fmt::format("--guide-grid {}x{}: needs 1 <= m * n <= {}", gridU, gridV, gpu::kMaxGuideCells));
+    checkRange("--guide-adapt", adaptPhotons, 0u, 0xffffu);
+    checkRange("--guide-mix", mix, 0.0f, 1.0f);
 }
 
-PathGuide::PathGuide(vk::Context& context, const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers,
-                     const GuideRenderSettings& g, uint32_t seed) {
-    checkGuideSettings(g);
+void GuideSettings::addOptions(CLI::App& group, bool sampling) {
+    group.add_option("--guide-photons", photons, "Photon paths for the guiding map")->capture_default_str();
+    group.add_option("--guide-k", k, "Nearest photons per guiding grid")->capture_default_str();
+    group.add_option_function<std::string>(
+             "--guide-grid",
+             [this](const std::string& value) {
+                 unsigned m = 0, n = 0;
+                 char x = 0, extra = 0;
+                 if (std::sscanf(value.c_str(), "%u%c%u%c", &m, &x, &n, &extra) != 3 || x != 'x')
+                     throw CLI::ValidationError("--guide-grid", "expected MxN, e.g. 4x16");
+                 gridU = m;
+                 gridV = n;
+             },
+             "Guiding grid MxN over the unit square (theta bands x phi sectors, M*N <= 64)")
+        ->default_str(fmt::format("{}x{}", gridU, gridV));
+    if (!sampling) return;
+    const std::vector<std::pair<std::string, bool>> onOff{{"on", true}, {"off", false}};
+    group.add_option("--guide-cache", cache,
+                     "on: grids built once per cache cell and normal bin; off: a k-nearest gather at every vertex "
+                     "(the paper)")
+        ->transform(oneOf(onOff))
+        ->option_text(choiceText(onOff, cache));
+    group.add_option("--guide-adapt", adaptPhotons,
+                     "Coarsen a guiding-cache grid whose photons are too few, down to this many photons per direction "
+                     "cell (0: every grid at --guide-grid)")
+        ->capture_default_str();
+    group.add_option("--guide-rr", roulette,
+                     "on: Russian roulette by the guide's estimate of the light a path still brings against the "
+                     "pixel's (adjoint-driven); off: by the path's throughput")
+        ->transform(oneOf(onOff))
+        ->option_text(choiceText(onOff, roulette));
+    group.add_option("--guide-mix", mix, "Probability of sampling the guiding grid rather than the BSDF (1: the paper's "
+                                         "method)")
+        ->capture_default_str();
+}
+
+void GuideSettings::report(Stats& stats) const {
+    stats.set("settings.guide.photons", photons);
+    stats.set("settings.guide.k", k);
+    stats.set("settings.guide.grid", fmt::format("{}x{}", gridU, gridV));
+    stats.set("settings.guide.mix", mix);
+    stats.set("settings.guide.cache", cache);
+    stats.set("settings.guide.roulette", roulette);
+    stats.set("settings.guide.adapt", adaptPhotons);
+}
+
+PathGuide::PathGuide(const GpuScene& scene, const GuideSettings& g, uint32_t seed) {
+    g.check();
+    vk::Context& context = scene.context();
+    const SceneArrays& arrays = scene.arrays();
     const auto start = Clock::now();
     PhotonMapSettings mapSettings;
     mapSettings.paths = g.photons;
@@ -41,7 +93,7 @@ PathGuide::PathGuide(vk::Context& context, const Scene& scene, const SceneArrays
     mapSettings.rejectedFlags = gpu::kPhotonPrimary;
     const double area = sceneSurfaceArea(arrays);
     mapSettings.cellSizeFor = [&](uint64_t stored) { return evenSpreadRadius(g.k, stored, area); };
-    m_map = std::make_unique<PhotonMap>(context, scene, arrays, buffers, mapSettings);
+    m_map = std::make_unique<PhotonMap>(context, scene.scene(), arrays, scene.buffers(), mapSettings);
     m_mapStats = m_map->build(0);
     m_searchRadius = kGuideRadiusFactor * m_mapStats.cellSize;
     m_params.grid = m_map->grid().view(m_map->photonPower());
@@ -74,13 +126,13 @@ std::vector<const vk::Buffer*> PathGuide::buffers() const {
     return {&m_map->grid().cellStart(), &m_map->grid().photons()};
 }
 
-void PathGuide::addStats(RenderStats& stats) const {
-    stats.photonPathsTraced += m_mapStats.traced.emitted;
-    stats.globalPhotons = m_mapStats.stored;
-    stats.photonsDropped += m_mapStats.dropped;
-    stats.photonSeconds += m_seconds;
-    stats.photonMapBytes += m_map->bytes() + (m_cache ? m_cache->bytes() : 0);
-    stats.globalRadius = m_searchRadius;
+void PathGuide::report(Stats& stats) const {
+    stats.add("photons.pathsTraced", m_mapStats.traced.emitted);
+    stats.set("photons.globalStored", m_mapStats.stored);
+    stats.add("photons.dropped", m_mapStats.dropped);
+    stats.add("photons.seconds", m_seconds);
+    stats.add("photons.mapBytes", m_map->bytes() + (m_cache ? m_cache->bytes() : 0));
+    stats.set("settings.guide.searchRadius", m_searchRadius);
 }
 
 }  // namespace vkp

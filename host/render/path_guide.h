@@ -8,19 +8,39 @@
 #include <string>
 #include <vector>
 
+#include "gpu_scene/gpu_scene.h"
 #include "passes/guide_cache.h"
 #include "render/photon_map.h"
-#include "render/renderer.h"
+#include "render/stats.h"
+
+namespace CLI { class App; }
 
 namespace vkp {
 
-// Throws InputError for settings the guided path tracer cannot use.
-void checkGuideSettings(const GuideRenderSettings& settings);
+// Settings of the guide (--integrator guided, `vkphoton guide-grid`).
+struct GuideSettings {
+    uint32_t photons = 100000;        // --guide-photons: paths traced for the guiding map
+    uint32_t k = 50;                  // --guide-k nearest photons per grid
+    uint32_t gridU = 4;               // --guide-grid MxN: m bands of theta ...
+    uint32_t gridV = 16;              // ... by n sectors of phi (m * n <= 64)
+    float mix = 0.5f;                 // --guide-mix: probability of sampling the grid (1: the paper's method)
+    bool cache = true;                // --guide-cache: grids per cache cell and normal bin, built once
+    uint32_t adaptPhotons = 0;        // --guide-adapt: coarsen cache grids to this many photons per cell (0: off)
+    bool roulette = false;            // --guide-rr: Russian roulette by the guide's irradiance estimate
+
+    // Throws InputError naming the flag of a value the guided path tracer cannot use.
+    void check() const;
+    // Registers --guide-photons, --guide-k and --guide-grid, and with `sampling` also --guide-mix,
+    // --guide-cache, --guide-adapt and --guide-rr, in `group`, writing into this object.
+    void addOptions(CLI::App& group, bool sampling = true);
+    // "settings.guide.*".
+    void report(Stats& stats) const;
+};
 
 class PathGuide {
 public:
-    PathGuide(vk::Context& context, const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers,
-              const GuideRenderSettings& settings, uint32_t seed);
+    // Traces the guiding map (and builds the cache) for runs of `seed`.
+    PathGuide(const GpuScene& scene, const GuideSettings& settings, uint32_t seed);
 
     const std::string& shader() const { return m_shader; }
     std::vector<const vk::Buffer*> buffers() const;
@@ -28,8 +48,8 @@ public:
     const PhotonMap& map() const { return *m_map; }
     // Largest search radius of a k-nearest gather in the map.
     float searchRadius() const { return m_searchRadius; }
-    // Photon counts, bytes and seconds into the render's statistics.
-    void addStats(RenderStats& stats) const;
+    // "photons.*": photon counts, bytes and seconds; "settings.guide.searchRadius".
+    void report(Stats& stats) const;
 
 private:
     std::unique_ptr<PhotonMap> m_map;

@@ -1,28 +1,30 @@
-// --direct raster for an integrator: the raster pass (passes/raster_direct_pass.h) run once per
-// frame, its per-pixel direct light, and the kPathFlagRaster* flags that tell the camera-path
-// shaders which lights it covers at the first vertex. With --direct traced it only supplies a
-// placeholder buffer for the shaders' binding and no flags.
+// --direct raster for whichever integrator renders: the raster pass (passes/raster_direct_pass.h)
+// run once per frame, its per-pixel direct light, and the kPathFlagRaster* flags that tell the
+// camera-path shaders which lights it covers at the first vertex. With --direct traced it only
+// supplies a placeholder buffer for the shaders' binding and no flags.
 #pragma once
 
 #include <cstdint>
 #include <memory>
 
+#include "gpu_scene/gpu_scene.h"
 #include "passes/raster_direct_pass.h"
-#include "render/renderer.h"
+#include "render/frame.h"
+#include "render/stats.h"
 
 namespace vkp {
 
 class RasterDirectLight {
 public:
     // Runs the raster pass (shadow volumes, masks, lighting) when settings.direct is Raster.
-    RasterDirectLight(vk::Context& context, const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers,
-                      const RenderSettings& settings);
+    RasterDirectLight(const GpuScene& scene, const FrameSettings& settings, const gpu::GpuCamera& camera);
 
     // The per-pixel direct light (vec4, RGB) of the covered lights, or a placeholder.
     const vk::Buffer& direct() const { return m_pass ? m_pass->direct() : m_placeholder; }
     uint32_t pathFlags() const { return m_flags; }
-    // Writes direct, rasterLights and rasterSeconds.
-    void addStats(RenderStats& stats) const;
+    // "settings.direct", and with --direct raster "raster.lights" and "raster.seconds".
+    void report(Stats& stats) const;
+    double seconds() const { return m_seconds; }
 
 private:
     std::unique_ptr<RasterDirectPass> m_pass;

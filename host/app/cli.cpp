@@ -1,0 +1,161 @@
+#include "app/cli.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/commands.h"
+#include "util/cli_choice.h"
+#include "util/errors.h"
+
+namespace vkp {
+namespace {
+
+// --integrator: one of the registered kinds, named in the error otherwise.
+CLI::Validator registeredIntegrator() {
+    return CLI::Validator(
+        [](std::string& input) -> std::string {
+            if (findIntegrator(input)) return {};
+            std::string names;
+            for (const IntegratorKind& kind : integratorKinds()) names += (names.empty() ? "" : ", ") + kind.name;
+            return "'" + input + "' is not one of " + names;
+        },
+        "");
+}
+
+void addFrameOptions(CLI::App& cmd, FrameSettings& frame, bool& bsdfOnly) {
+    cmd.add_option("--spp", frame.samplesPerPixel, "Samples per pixel")->capture_default_str();
+    cmd.add_option("--width", frame.width, "Image width in pixels")->capture_default_str();
+    cmd.add_option("--height", frame.height, "Image height in pixels")->capture_default_str();
+    cmd.add_option("--seed", frame.seed, "Random seed: the same seed gives the same image on the same device")
+        ->capture_default_str();
+    cmd.add_option("--max-depth", frame.maxDepth, "Maximum path length (bounces)")->capture_default_str();
+    cmd.add_option("--time-limit", frame.timeLimitSeconds,
+                   "Stop after this many seconds (0: no limit); the image is marked partial");
+    cmd.add_option("--camera", frame.cameraIndex,
+                   "Index of the scene camera to render from [default: first, or a framing of the scene]");
+    cmd.add_flag("--no-nee", bsdfOnly, "Disable next-event estimation (BSDF sampling only; a reference)");
+    const std::vector<std::pair<std::string, DirectLight>> direct{{"traced", DirectLight::Traced},
+                                                                  {"raster", DirectLight::Raster}};
+    cmd.add_option("--direct", frame.direct,
+                   "Direct light at the first vertex: traced (next-event estimation, the reference) or raster "
+                   "(stencil shadow volumes)")
+        ->transform(oneOf(direct))
+        ->option_text(choiceText(direct, frame.direct));
+    cmd.add_option("--area-light-samples", frame.areaLightSamples,
+                   "--direct raster: point samples per emissive triangle (0: emissive triangles stay traced)")
+        ->capture_default_str();
+}
+
+void addDeviceOptions(CLI::App& cmd, std::string& device, bool& validate) {
+    cmd.add_option("--device", device, "Vulkan device: index or name substring (see `vkphoton devices`)");
+    cmd.add_flag("--validate", validate, "Enable the Khronos validation layer; any message is an error");
+}
+
+}  // namespace
+
+int runCommandLine(int argc, const char* const* argv) {
+    CLI::App app{"vkphoton: a Vulkan compute photon mapper and path tracer"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "vkphoton 0.1.0");
+
+    RenderCommandOptions render;
+    bool bsdfOnly = false;
+    std::string integratorName = integratorKinds().front().name;
+    CLI::App* renderCmd =
+        app.add_subcommand("render", "Render a glTF scene to OpenEXR (linear) and PNG (tonemapped sRGB)");
+    renderCmd->add_option("scene", render.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+    renderCmd->add_option("-o,--output", render.output,
+                          "Output EXR path; a PNG is written beside it [default: out/SCENE.exr]");
+    addFrameOptions(*renderCmd, render.frame, bsdfOnly);
+    addDeviceOptions(*renderCmd, render.device, render.validate);
+    renderCmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
+    renderCmd->add_flag("--quiet", render.quiet, "No progress output");
+    std::string integratorHelp = "The integrator:";
+    std::string integratorChoices;
+    for (const IntegratorKind& kind : integratorKinds()) {
+        integratorHelp += fmt::format(" {} ({});", kind.name, kind.summary);
+        integratorChoices += (integratorChoices.empty() ? "" : "|") + kind.name;
+    }
+    renderCmd->add_option("--integrator", integratorName, integratorHelp)
+        ->check(registeredIntegrator())
+        ->option_text(fmt::format("{} [{}]", integratorChoices, integratorName));
+    // Every integrator registers its own option group; only the chosen one's values are used.
+    std::map<std::string, std::unique_ptr<IntegratorConfig>> configs;
+    for (const IntegratorKind& kind : integratorKinds()) {
+        configs[kind.name] = kind.makeConfig();
+        configs[kind.name]->addOptions(*renderCmd);
+    }
+
+    PhotonsCommandOptions photons;
+    CLI::App* photonsCmd = app.add_subcommand("photons", "Trace photons and write the photon maps as a PLY point cloud");
+    photonsCmd->add_option("scene", photons.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+    photonsCmd->add_option("-o,--output", photons.output, "Output .ply [default: out/SCENE-photons.ply]");
+    photonsCmd->add_option("--photons", photons.photons, "Photon paths to emit")->capture_default_str();
+    photonsCmd->add_option("--max-deposits", photons.maxDeposits, "Stored photons per path at most")->capture_default_str();
+    photonsCmd->add_option("--seed", photons.seed, "Random seed")->capture_default_str();
+    photons.deposit.addOptions(*photonsCmd);
+    photonsCmd->add_option("--width", photons.width, "Width of the image the importons' camera looks at")
+        ->capture_default_str();
+    photonsCmd->add_option("--height", photons.height, "Height of that image")->capture_default_str();
+    photonsCmd->add_option("--camera", photons.cameraIndex, "Scene camera index for the importons");
+    addDeviceOptions(*photonsCmd, photons.device, photons.validate);
+    photonsCmd->add_flag("--quiet", photons.quiet, "No summary output");
+
+    GuideGridCommandOptions guideGrid;
+    CLI::App* guideCmd =
+        app.add_subcommand("guide-grid", "Write the guided path tracer's direction grid at one pixel as a PNG");
+    guideCmd->add_option("scene", guideGrid.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+    std::vector<uint32_t> pixel;
+    guideCmd->add_option("--pixel", pixel, "Pixel X Y (from the top left)")->expected(2)->required();
+    guideCmd->add_option("-o,--output", guideGrid.output, "Output .png [default: out/SCENE-guide-X-Y.png]");
+    guideCmd->add_option("--width", guideGrid.width, "Image width the pixel belongs to")->capture_default_str();
+    guideCmd->add_option("--height", guideGrid.height, "Image height the pixel belongs to")->capture_default_str();
+    guideCmd->add_option("--camera", guideGrid.cameraIndex, "Scene camera index");
+    guideCmd->add_option("--seed", guideGrid.seed, "Random seed")->capture_default_str();
+    guideGrid.guide.addOptions(*guideCmd, false);
+    addDeviceOptions(*guideCmd, guideGrid.device, guideGrid.validate);
+    guideCmd->add_flag("--quiet", guideGrid.quiet, "No output but the file");
+
+    app.add_subcommand("devices", "List the Vulkan devices");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? kExitOk : kExitBadInput;
+    }
+
+    try {
+        if (renderCmd->parsed()) {
+            render.frame.nextEventEstimation = !bsdfOnly;
+            render.frame.check();
+            const IntegratorConfig& config = *configs.at(integratorName);
+            config.check();
+            return runRender(render, config);
+        }
+        if (photonsCmd->parsed()) {
+            photons.check();
+            return runPhotons(photons);
+        }
+        if (guideCmd->parsed()) {
+            guideGrid.x = pixel.at(0);
+            guideGrid.y = pixel.at(1);
+            guideGrid.check();
+            return runGuideGrid(guideGrid);
+        }
+        return runDevices();
+    } catch (const InputError& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return kExitBadInput;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return kExitRuntimeFailure;
+    }
+}
+
+}  // namespace vkp

@@ -1,0 +1,32 @@
+// The scene as integrators see it: the loaded scene, its arrays in GPU layout (BVH built) and
+// their upload to one device, made once and shared by every render of the scene.
+#pragma once
+
+#include "gpu_scene/scene_buffers.h"
+#include "scene/scene.h"
+
+namespace vkp {
+namespace vk { class Context; }
+
+class GpuScene {
+public:
+    // Builds the BVH and uploads the scene; `scene` must outlive this object.
+    GpuScene(vk::Context& context, const Scene& scene);
+    GpuScene(const GpuScene&) = delete;
+    GpuScene& operator=(const GpuScene&) = delete;
+
+    vk::Context& context() const { return m_context; }
+    const Scene& scene() const { return m_scene; }
+    const SceneArrays& arrays() const { return m_arrays; }
+    const SceneBuffers& buffers() const { return m_buffers; }
+    double uploadSeconds() const { return m_uploadSeconds; }
+
+private:
+    vk::Context& m_context;
+    const Scene& m_scene;
+    SceneArrays m_arrays;
+    double m_uploadSeconds = 0.0;  // set while m_buffers is built: declared before it
+    SceneBuffers m_buffers;
+};
+
+}  // namespace vkp

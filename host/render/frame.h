@@ -1,0 +1,66 @@
+// What one render looks at and how it samples, set by the user (FrameSettings) and resolved once
+// per render into a Frame that every integrator reads: the camera, the image size, the seed, the
+// camera paths' depth and who computes the first vertex's direct light (--direct).
+#pragma once
+
+#include <cstdint>
+
+#include "scene/scene.h"
+#include "shared/gpu_types.glsl"
+
+namespace vkp {
+namespace vk { class Buffer; }
+
+// Who computes the direct light at the first path vertex (--direct).
+enum class DirectLight {
+    Traced,  // next-event estimation in the camera-path shaders (the reference)
+    Raster,  // stencil shadow volumes + lighting pass (render/raster_direct.h)
+};
+
+struct FrameSettings {
+    uint32_t width = 512;
+    uint32_t height = 512;
+    uint32_t samplesPerPixel = 64;
+    uint32_t seed = 0;
+    uint32_t maxDepth = 16;           // path vertices after the camera (path tracers)
+    double timeLimitSeconds = 0.0;    // 0: no limit
+    int cameraIndex = -1;             // -1: the scene's first camera, or a default framing
+    bool nextEventEstimation = true;  // false: BSDF sampling only (a reference for tests)
+    DirectLight direct = DirectLight::Traced;
+    uint32_t areaLightSamples = 16;   // --area-light-samples: point samples per emissive triangle
+                                      // for --direct raster (0: emissive triangles stay traced)
+    bool pixelCentres = false;        // camera rays through pixel centres, no jitter (tests)
+
+    // Throws InputError naming the flag of a value out of range.
+    void check() const;
+};
+
+// Resolves --camera: the scene's camera `index`, the first one, or a default framing. Throws
+// InputError for an index the scene does not have.
+Camera chooseCamera(const Scene& scene, int index);
+
+// A frame as the integrators see it.
+struct Frame {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    uint32_t seed = 0;
+    uint32_t maxDepth = 0;
+    bool nextEventEstimation = true;
+    Camera camera;
+    gpu::GpuCamera gpuCamera{};
+    // --direct raster: per-pixel direct light of the covered lights (vec4 RGB) and the
+    // kPathFlagRaster* flags saying which; with --direct traced a placeholder and no flags.
+    const vk::Buffer* rasterDirect = nullptr;
+    uint32_t rasterFlags = 0;
+    bool pixelCentres = false;
+
+    uint64_t pixels() const { return uint64_t(width) * height; }
+    // The kPathFlag* bits every camera-path shader takes: raster coverage and pixel centres.
+    uint32_t cameraPathFlags() const { return rasterFlags | (pixelCentres ? gpu::kPathFlagPixelCentres : 0u); }
+};
+
+// The frame of `settings` with its camera resolved and no raster direct light (the driver adds
+// it): what `vkphoton photons` and tools share with renders.
+Frame makeFrame(const Scene& scene, const FrameSettings& settings);
+
+}  // namespace vkp

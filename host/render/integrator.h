@@ -1,0 +1,50 @@
+// The seam every integrator implements (docs/architecture.md, "Adding an integrator"). The
+// driver (render/renderer.h) owns the frame, the film, the sample loop, progress, the time limit
+// and Ctrl-C; an integrator builds what its samples need and records them.
+//
+//   prepare(frame, film)          once per frame: photon maps, guides; binds the film
+//   beginSamples(first, count)    host work before a batch (SPPM: the pass's photon map)
+//   recordSamples(cmd, first, n)  records samples [first, first + n) into the film: no submit
+//   finish(image, samples)        adds what the film's sums do not hold (SPPM's photon estimate)
+//   report(stats)                 named statistics, its resolved settings, warnings
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+#include "image/image.h"
+#include "render/film.h"
+#include "render/frame.h"
+#include "render/stats.h"
+
+namespace vkp {
+
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+
+    // The name the statistics and the EXR header give ("photon (progressive)").
+    virtual std::string name() const = 0;
+    // Builds what this frame's samples need; may submit work and wait for it.
+    virtual void prepare(const Frame& frame, const Film& film) = 0;
+    // Most samples per pixel one submission may hold (the driver grows batches up to it).
+    virtual uint32_t maxSamplesPerBatch() const = 0;
+    // Host work before the batch [first, first + count) is recorded; may submit and wait.
+    virtual void beginSamples(uint32_t first, uint32_t count) {
+        (void)first;
+        (void)count;
+    }
+    // Records samples [first, first + count) of every pixel into the film. Record only.
+    virtual void recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) = 0;
+    // After the last batch: adds to the film's resolved means what they do not hold.
+    virtual void finish(ImageRgb& image, uint32_t samplesDone) {
+        (void)image;
+        (void)samplesDone;
+    }
+    // Statistics under the keys of docs/usage (e.g. "photons.globalStored", "settings.photon.radius").
+    virtual void report(Stats& stats) const = 0;
+};
+
+}  // namespace vkp

@@ -1,0 +1,56 @@
+#include "render/integrators/guided_integrator.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+namespace vkp {
+namespace {
+
+// A guided vertex adds a k-nearest gather and the grid's construction to lavapipe's loop budget
+// of a dispatch (docs/photon-mapping.md): fewer samples per dispatch than the path tracer.
+constexpr uint32_t kMaxGuidedSamplesPerDispatch = 2;
+
+}  // namespace
+
+GuidedIntegrator::GuidedIntegrator(const GpuScene& scene, const GuideSettings& settings)
+    : m_scene(scene), m_settings(settings) {
+    m_settings.check();
+}
+
+void GuidedIntegrator::prepare(const Frame& frame, const Film& film) {
+    m_guide = std::make_unique<PathGuide>(m_scene, m_settings, frame.seed);
+    m_recorder = std::make_unique<PathSampleRecorder>(
+        m_scene, frame, film, kMaxGuidedSamplesPerDispatch, m_settings.roulette ? gpu::kPathFlagGuideRoulette : 0u,
+        m_guide->shader(), m_guide->buffers());
+}
+
+void GuidedIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) {
+    m_recorder->record(cmd, first, count, &m_guide->params());
+}
+
+void GuidedIntegrator::report(Stats& stats) const {
+    m_settings.report(stats);
+    if (m_guide) m_guide->report(stats);
+}
+
+IntegratorKind guidedIntegratorKind() {
+    class Config : public IntegratorConfig {
+    public:
+        void addOptions(CLI::App& command) override {
+            m_settings.addOptions(*command.add_option_group("guided path tracer"));
+        }
+        void check() const override { m_settings.check(); }
+        std::string startMessage(const FrameSettings&) const override {
+            return fmt::format("tracing {} guiding photon paths ...", m_settings.photons);
+        }
+        std::unique_ptr<Integrator> create(const GpuScene& scene) const override {
+            return std::make_unique<GuidedIntegrator>(scene, m_settings);
+        }
+
+    private:
+        GuideSettings m_settings;
+    };
+    return {"guided", "photon-guided path tracing, Jensen 1995", [] { return std::make_unique<Config>(); }};
+}
+
+}  // namespace vkp

@@ -1,0 +1,258 @@
+#include "render/integrators/photon_integrator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "render/deposition.h"
+#include "render/integrators/progressive_photon_integrator.h"
+#include "util/errors.h"
+#include "util/stopwatch.h"
+#include "vk/context.h"
+
+namespace vkp {
+namespace {
+
+// The global map's k-nearest estimates search up to this many times the radius that holds k
+// photons at the map's mean density (cells are that radius wide: two rings of cells are visited).
+constexpr float kGlobalRadiusFactor = 2.0f;
+constexpr uint32_t kMaxSpecularDepth = 16;
+
+}  // namespace
+
+gpu::VisiblePointParams visiblePointParams(const Frame& frame, uint32_t lightCount) {
+    gpu::VisiblePointParams params{};
+    params.camera = frame.gpuCamera;
+    params.width = frame.width;
+    params.height = frame.height;
+    params.seed = frame.seed;
+    params.maxSpecularDepth = kMaxSpecularDepth;
+    params.lightCount = lightCount;
+    params.flags = frame.cameraPathFlags();
+    return params;
+}
+
+void requireLightPower(const GpuScene& scene) {
+    if (!(scene.arrays().totalLightPower > 0.0))
+        throw InputError("the scene's lights emit no power: no photons to trace");
+}
+
+void reportMapBuild(Stats& stats, const PhotonMapStats& map) {
+    stats.add("photons.pathsTraced", map.traced.emitted);
+    stats.add("photons.dropped", map.dropped);
+    stats.add("photons.seconds", map.traceSeconds + map.gridSeconds);
+}
+
+PhotonIntegrator::PhotonIntegrator(const GpuScene& scene, const PhotonIntegratorSettings& settings)
+    : m_scene(scene), m_settings(settings) {
+    m_settings.check();
+    requireLightPower(scene);
+    m_radius = m_settings.radiusFor(scene.scene());
+}
+
+// Pass 1: the importons (unless every photon is kept) and the photon maps. The global map's
+// search radius follows its density: the radius of a disk holding k photons if they spread
+// evenly over the scene's surfaces (with importance deposition, the density where p = 1).
+void PhotonIntegrator::buildMaps(const Frame& frame) {
+    const PhotonIntegratorSettings& p = m_settings;
+    const DepositOptions& deposit = p.deposit;
+    vk::Context& context = m_scene.context();
+    m_importons = makeImportonMap(m_scene, frame, deposit);
+    reportImportons(m_stats, m_importons.get());
+    // Keller & Wald's (N, q): N paths for the caustic map, the first q N of them for the global one.
+    const bool splitByQ = p.q > 0.0f;
+    const uint32_t globalPaths =
+        splitByQ ? std::max(1u, uint32_t(std::ceil(double(p.q) * p.globalPaths))) : p.globalPaths;
+    const uint32_t causticPaths = splitByQ ? p.globalPaths : p.causticPaths;
+    PhotonMapSettings globalSettings;
+    globalSettings.paths = globalPaths;
+    globalSettings.maxDeposits = p.maxDeposits;
+    globalSettings.seed = frame.seed;
+    globalSettings.deposit = depositSettings(deposit, deposit.mode, m_importons.get());
+    const double area = sceneSurfaceArea(m_scene.arrays());
+    const uint32_t k = p.gatherK;
+    globalSettings.cellSizeFor = [k, area](uint64_t photons) { return evenSpreadRadius(k, photons, area); };
+    if (deposit.mode == DepositMode::Density) {
+        // Rounds decide against cells of the required density; the stored density is at most
+        // the one of all deposits (the even-spread radius of the candidates).
+        globalSettings.cellSize = densityCellSize(deposit, k, *m_importons);
+        globalSettings.cellSizeFor = [k, area, densityCell = globalSettings.cellSize](uint64_t photons) {
+            return std::max(densityCell, evenSpreadRadius(k, photons, area));
+        };
+    }
+    m_globalMap = std::make_unique<PhotonMap>(context, m_scene.scene(), m_scene.arrays(), m_scene.buffers(),
+                                              globalSettings);
+    const PhotonMapStats globalStats = m_globalMap->build(0);
+    m_globalCellSize = globalStats.cellSize;
+    reportMapBuild(m_stats, globalStats);
+    m_stats.set("photons.globalStored", globalStats.stored);
+    m_stats.set("photons.globalDeposits", globalStats.candidates);
+    m_stats.add("photons.mapBytes", m_globalMap->bytes());
+
+    m_causticMap.reset();
+    if (causticPaths > 0) {
+        PhotonMapSettings causticSettings;
+        causticSettings.paths = causticPaths;
+        causticSettings.maxDeposits = 1;  // a caustic photon is its path's first deposit
+        causticSettings.seed = frame.seed;
+        causticSettings.requiredFlags = gpu::kPhotonCaustic;
+        causticSettings.cellSize = 2.0f * m_radius;
+        // Caustics are seen directly, where density control's path importance does not reach:
+        // they are deposited by importance in that mode too.
+        causticSettings.deposit = depositSettings(
+            deposit, deposit.mode == DepositMode::Density ? DepositMode::Importance : deposit.mode, m_importons.get());
+        m_causticMap = std::make_unique<PhotonMap>(context, m_scene.scene(), m_scene.arrays(), m_scene.buffers(),
+                                                   causticSettings);
+        // Split by q, the global map's paths are the caustic map's first; else fresh Halton indices.
+        const PhotonMapStats causticStats = m_causticMap->build(splitByQ ? 0 : p.globalPaths);
+        reportMapBuild(m_stats, causticStats);
+        m_stats.set("photons.causticStored", causticStats.stored);
+        m_stats.set("photons.causticDeposits", causticStats.candidates);
+        m_stats.add("photons.mapBytes", m_causticMap->bytes());
+    }
+
+    // Final gathers read precomputed radiance photons unless told to estimate at every hit.
+    m_radiancePhotons.reset();
+    const float globalRadius = kGlobalRadiusFactor * m_globalCellSize;
+    if (p.gatherRays > 0 && p.radiancePhotonStride > 0 && globalStats.stored > 0) {
+        const auto start = Clock::now();
+        m_radiancePhotons = std::make_unique<RadiancePhotons>(
+            context, m_globalMap->grid(), static_cast<uint32_t>(globalStats.stored), m_globalMap->photonPower(),
+            p.radiancePhotonStride, p.gatherK, globalRadius);
+        context.submitAndWait([&](VkCommandBuffer cmd) { m_radiancePhotons->record(cmd); });
+        m_stats.add("photons.seconds", secondsSince(start));
+        m_stats.add("photons.mapBytes", m_radiancePhotons->bytes());
+    }
+}
+
+void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
+    const PhotonIntegratorSettings& p = m_settings;
+    vk::Context& context = m_scene.context();
+    m_stats = Stats();
+    buildMaps(frame);
+    const float globalRadius = kGlobalRadiusFactor * m_globalCellSize;
+    const PhotonGrid& gatherGrid = m_radiancePhotons ? m_radiancePhotons->grid() : m_globalMap->grid();
+
+    // Pass 2's passes: visible points, caustics and final gathers per camera sample.
+    m_pixels = frame.pixels();
+    m_points = std::make_unique<vk::Buffer>(context, "visible points", m_pixels * sizeof(gpu::GpuVisiblePoint),
+                                            vk::kStorageUsage);
+    m_visiblePass = std::make_unique<VisiblePointPass>(context, m_scene.buffers(), film.sums(), *m_points,
+                                                       *frame.rasterDirect);
+    m_gatherPass = std::make_unique<ScenePass>(
+        context, "final_gather.comp", m_scene.buffers(),
+        std::vector<const vk::Buffer*>{&film.sums(), m_points.get(), &gatherGrid.cellStart(), &gatherGrid.photons()},
+        sizeof(gpu::FinalGatherParams));
+    m_causticPass.reset();
+    if (m_causticMap)
+        m_causticPass = std::make_unique<ScenePass>(
+            context, "caustic_estimate.comp", m_scene.buffers(),
+            std::vector<const vk::Buffer*>{&film.sums(), m_points.get(), &m_causticMap->grid().cellStart(),
+                                           &m_causticMap->grid().photons()},
+            sizeof(gpu::CausticEstimateParams));
+
+    m_visibleParams = visiblePointParams(frame, m_scene.buffers().lightCount());
+    m_causticParams = {};
+    if (m_causticMap) m_causticParams.grid = m_causticMap->grid().view(m_causticMap->photonPower());
+    m_causticParams.width = frame.width;
+    m_causticParams.height = frame.height;
+    m_causticParams.radius = m_radius;
+    m_causticParams.coneK = p.coneK;
+    m_gatherParams = {};
+    // Radiance photons carry watts per square metre: their power unit is 1.
+    m_gatherParams.grid = m_radiancePhotons ? gatherGrid.view(1.0f) : gatherGrid.view(m_globalMap->photonPower());
+    m_gatherParams.radianceLookup = m_radiancePhotons ? 1u : 0u;
+    m_gatherParams.lookupRadius = m_globalCellSize;  // one ring of cells: several radiance photons
+    m_gatherParams.width = frame.width;
+    m_gatherParams.height = frame.height;
+    m_gatherParams.seed = frame.seed;
+    m_gatherParams.gatherRays = p.gatherRays;
+    m_gatherParams.k = p.gatherK;
+    m_gatherParams.maxRadius = globalRadius;
+    m_gatherParams.maxSpecularDepth = kMaxSpecularDepth;
+
+    m_stats.set("settings.photon.radius", m_radius);
+    m_stats.set("settings.photon.globalRadius", globalRadius);
+}
+
+void PhotonIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) {
+    for (uint32_t sample = first; sample < first + count; ++sample) {
+        m_visibleParams.sampleIndex = sample;
+        m_visiblePass->record(cmd, m_visibleParams);
+        vk::computeBarrier(cmd);
+        if (m_causticPass) {
+            m_causticPass->record(cmd, m_pixels, m_causticParams);
+            vk::computeBarrier(cmd);
+        }
+        // One dispatch per gather ray keeps each invocation's loops within lavapipe's limit.
+        m_gatherParams.sampleIndex = sample;
+        for (uint32_t ray = 0; ray < std::max(1u, m_settings.gatherRays); ++ray) {
+            m_gatherParams.rayIndex = ray;
+            m_gatherPass->record(cmd, m_pixels, m_gatherParams);
+            vk::computeBarrier(cmd);
+        }
+    }
+}
+
+void PhotonIntegrator::report(Stats& stats) const {
+    m_settings.report(stats);
+    stats.merge(m_stats);
+    reportPhotonSummary(stats);
+}
+
+void reportPhotonSummary(Stats& stats) {
+    stats.note(fmt::format("photon maps: {} global and {} caustic photons from {} paths in {:.2f} s ({:.1f} MB); "
+                           "radius {:.4g}",
+                           stats.getOr<uint64_t>("photons.globalStored", 0),
+                           stats.getOr<uint64_t>("photons.causticStored", 0),
+                           stats.getOr<uint64_t>("photons.pathsTraced", 0), stats.getOr<double>("photons.seconds", 0.0),
+                           stats.getOr<double>("photons.mapBytes", 0.0) / 1048576.0,
+                           stats.getOr<double>("settings.photon.radius", 0.0)));
+    if (stats.getOr<std::string>("photons.deposit", "all") != "all") {
+        const auto share = [](uint64_t kept, uint64_t deposited) { return deposited ? 100.0 * kept / deposited : 0.0; };
+        const auto global = stats.getOr<uint64_t>("photons.globalStored", 0);
+        const auto globalDeposits = stats.getOr<uint64_t>("photons.globalDeposits", 0);
+        const auto caustic = stats.getOr<uint64_t>("photons.causticStored", 0);
+        const auto causticDeposits = stats.getOr<uint64_t>("photons.causticDeposits", 0);
+        stats.note(fmt::format("deposit {}: kept {} of {} global deposits ({:.1f} %), {} of {} caustic ({:.1f} %); "
+                               "{} importons ({:.1f} MB), f = {:.4g}",
+                               stats.get<std::string>("photons.deposit"), global, globalDeposits,
+                               share(global, globalDeposits), caustic, causticDeposits, share(caustic, causticDeposits),
+                               stats.getOr<uint64_t>("photons.importonsStored", 0),
+                               stats.getOr<double>("photons.importonBytes", 0.0) / 1048576.0,
+                               stats.getOr<double>("photons.importanceScale", 0.0)));
+    }
+    if (const auto dropped = stats.getOr<uint64_t>("photons.dropped", 0); dropped > 0)
+        stats.warn(fmt::format("{} photon(s) did not fit their map: fewer paths or --max-deposits would keep all",
+                               dropped));
+}
+
+IntegratorKind photonIntegratorKind() {
+    class Config : public IntegratorConfig {
+    public:
+        void addOptions(CLI::App& command) override {
+            m_settings.addOptions(*command.add_option_group("photon integrator"));
+        }
+        void check() const override { m_settings.check(); }
+        std::string startMessage(const FrameSettings& frame) const override {
+            const PhotonIntegratorSettings& p = m_settings;
+            if (p.progressive)
+                return fmt::format("tracing {} photon paths ({} per sample) ...",
+                                   uint64_t(p.globalPaths) * frame.samplesPerPixel, p.globalPaths);
+            return fmt::format("tracing {} photon paths ...", uint64_t(p.globalPaths) + p.causticPaths);
+        }
+        std::unique_ptr<Integrator> create(const GpuScene& scene) const override {
+            if (m_settings.progressive) return std::make_unique<ProgressivePhotonIntegrator>(scene, m_settings);
+            return std::make_unique<PhotonIntegrator>(scene, m_settings);
+        }
+
+    private:
+        PhotonIntegratorSettings m_settings;
+    };
+    return {"photon", "photon mapping: two passes, or SPPM with --progressive",
+            [] { return std::make_unique<Config>(); }};
+}
+
+}  // namespace vkp
