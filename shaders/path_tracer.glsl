@@ -155,17 +155,14 @@ bool extendPath(inout PathState st) {
         if (le.r + le.g + le.b > 0.0f) {
             float weight = 1.0f;
             if (useNee && !st.lastDelta) weight = emissionMisWeight(v, st.ray.dir, st.lastPdf);
-            if (st.depth == 1u && !st.lastDelta && (params.flags & kPathFlagRasterAreaLights) != 0u) weight = 0.0f;
+            if (rasterCoversEmission(params.flags, st.depth, st.lastDelta)) weight = 0.0f;
             st.radiance += st.throughput * le * weight;
         }
     }
     if (st.depth == params.maxDepth) return false;
 
     if (useNee) {
-        uint skip = 0u;
-        if (st.depth == 0u && (params.flags & kPathFlagRasterDeltaLights) != 0u)
-            skip |= (1u << kLightPoint) | (1u << kLightSpot) | (1u << kLightDirectional);
-        if (st.depth == 0u && (params.flags & kPathFlagRasterAreaLights) != 0u) skip |= 1u << kLightTriangle;
+        uint skip = rasterCoveredLightTypes(params.flags, st.depth);
         st.radiance += st.throughput * directLight(v, params.lightCount, true, skip, st.rng);
     } else {
         nextSample(st.rng);  // keep the sample dimensions of both modes aligned
@@ -218,7 +215,7 @@ void main() {
     uint py = pixel / params.width;
     uint streamSeed = hashCombine(params.seed, pixel);
     vec4 acc = film[pixel];
-    bool addRaster = (params.flags & (kPathFlagRasterDeltaLights | kPathFlagRasterAreaLights)) != 0u;
+    bool addRaster = rasterDirectLightOn(params.flags);
     uint done = 0u;
     uint segments = 0u;
     PathState st = startPath(params.firstSample, streamSeed, px, py);

@@ -62,16 +62,12 @@ void main() {
         // weighted against that vertex's next-event estimate.
         if (emitsTowards(v.material, v.hit.frontFace)) {
             float weight = lastDelta ? 1.0f : emissionMisWeight(v, ray.dir, lastPdf);
-            // The raster term holds all of a covered area light's light at the first vertex.
-            if (depth == 1u && !lastDelta && (params.flags & kPathFlagRasterAreaLights) != 0u) weight = 0.0f;
+            if (rasterCoversEmission(params.flags, depth, lastDelta)) weight = 0.0f;
             radiance += throughput * emittedRadiance(v.material, v.hit.uv) * weight;
         }
 
         // --direct raster: the first vertex's covered lights come from the raster pass.
-        uint skip = 0u;
-        if (depth == 0u && (params.flags & kPathFlagRasterDeltaLights) != 0u)
-            skip |= (1u << kLightPoint) | (1u << kLightSpot) | (1u << kLightDirectional);
-        if (depth == 0u && (params.flags & kPathFlagRasterAreaLights) != 0u) skip |= 1u << kLightTriangle;
+        uint skip = rasterCoveredLightTypes(params.flags, depth);
         if (storesPhotons(v.bsdf)) {
             radiance += throughput * directLight(v, params.lightCount, false, skip, rng);
             vp.position = v.hit.position;
@@ -96,7 +92,7 @@ void main() {
         lastPdf = bs.pdf;
         spawnRay(v, bs, ray);
     }
-    if ((params.flags & (kPathFlagRasterDeltaLights | kPathFlagRasterAreaLights)) != 0u) radiance += rasterDirect[pixel].rgb;
+    if (rasterDirectLightOn(params.flags)) radiance += rasterDirect[pixel].rgb;
     if (any(isnan(radiance)) || any(isinf(radiance))) radiance = vec3(0.0f);
     film[pixel] += vec4(radiance, 1.0f);
     visiblePoints[pixel] = vp;
