@@ -1,7 +1,7 @@
 // Importon tracing (Keller & Wald 2000, §2.2, after Peter & Pietrek): camera paths, indexed by
 // Halton point like photon paths, followed through delta bounces and stored at every surface that
 // stores photons, a few bounces deep, carrying visual importance. Path i fills the slots
-// i * maxDeposits + k, so the result does not depend on scheduling. The record layout is
+// i * maxDeposits + k, so the result does not depend on scheduling. The record, GpuImporton, is
 // described in shared/importance.glsl.
 #version 460
 #extension GL_GOOGLE_include_directive : require
@@ -14,7 +14,7 @@
 
 layout(local_size_x = 64) in;
 
-layout(std430, set = 0, binding = 8) writeonly buffer Importons { GpuPhoton importons[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer Importons { GpuImporton importons[]; };
 
 layout(push_constant) uniform Push { ImportonTraceParams params; };
 
@@ -47,12 +47,12 @@ void main() {
             float pathImportance = 0.0f;
             if (haveY) {
                 vec3 d = v.hit.position - yPosition;
-                // Clamped to the half float's range (corners make 1 / |x - y|^2 unbounded).
+                // Clamped to the range makeImporton rounds to half precision in (corners make
+                // 1 / |x - y|^2 unbounded).
                 pathImportance = min(yAlbedo * yScatter * v.wo.z / max(dot(d, d), 1.0e-8f), kMaxHalfFloat);
             }
-            uint flags = kPhotonValid | (stored == 0u && !haveY ? kPhotonPrimary : 0u);
-            importons[slot + stored] = makePhoton(v.hit.position, vec3(luminance(throughput), pathImportance, 0.0f),
-                                                  -ray.dir, v.n, flags, 0u);
+            uint flags = kImportonValid | (stored == 0u && !haveY ? kImportonPrimary : 0u);
+            importons[slot + stored] = makeImporton(v.hit.position, luminance(throughput), pathImportance, v.n, flags);
             stored += 1u;
             haveY = true;
             yPosition = v.hit.position;
