@@ -13,7 +13,7 @@
 //
 // so what the surface at a hit is lives here once: when alpha masking, normal mapping or a new
 // BSDF arrive, traceVertex (skip masked hits, perturb the shading normal) and sampleVertexBsdf /
-// the BsdfParams it reads change, and every kernel follows. Include after scene_access.glsl.
+// the BsdfParams it reads change, and every kernel follows.
 #ifndef VKP_PATH_VERTEX_GLSL
 #define VKP_PATH_VERTEX_GLSL
 
