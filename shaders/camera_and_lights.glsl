@@ -4,41 +4,37 @@
 #ifndef VKP_CAMERA_AND_LIGHTS_GLSL
 #define VKP_CAMERA_AND_LIGHTS_GLSL
 
-// Next-event estimation at a non-delta surface point: one light chosen by power, one sample on
+#include "path_vertex.glsl"
+
+// Next-event estimation at a non-delta path vertex: one light chosen by power, one sample on
 // it, a shadow ray. With `mis` the contribution of area lights is weighted by the power heuristic
 // against BSDF sampling (the caller then MIS-weights emission found by BSDF rays); without it the
 // estimate stands alone. Lights whose type bit (1 << type) is set in skipTypes contribute nothing:
 // another pass (the raster direct light) adds their full expectation, so dropping them keeps the
 // sum unbiased without changing the light selection. Always draws 3 sample dimensions.
-vec3 directLightSkipping(SurfaceHit hit, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n, uint lightCount, bool mis,
-                         uint skipTypes, inout Sampler rng) {
+vec3 directLight(PathVertex v, uint lightCount, bool mis, uint skipTypes, inout Sampler rng) {
     float uPick = nextSample(rng);
     vec2 uLight = nextSample2(rng);
     if (lightCount == 0u) return vec3(0.0f);
     uint index = pickLight(uPick, lightCount);
     if ((skipTypes & (1u << lights[index].type)) != 0u) return vec3(0.0f);
-    LightSample ls = sampleLight(index, hit.position, uLight);
+    LightSample ls = sampleLight(index, v.hit.position, uLight);
     if (ls.pdf <= 0.0f) return vec3(0.0f);
-    vec3 wi = toLocal(ls.wi, t, b, n);
-    vec3 sideNormal = hit.frontFace ? hit.geometricNormal : -hit.geometricNormal;
+    vec3 wi = toLocal(ls.wi, v.t, v.b, v.n);
+    vec3 sideNormal = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
     if (wi.z <= 0.0f || dot(ls.wi, sideNormal) <= 0.0f) return vec3(0.0f);  // light behind the surface
-    vec3 f = evalBsdf(bsdf, wo, wi);
+    vec3 f = evalVertexBsdf(v, wi);
     if (f.r + f.g + f.b <= 0.0f) return vec3(0.0f);
-    if (!lightVisible(hit.position, hit.geometricNormal, ls)) return vec3(0.0f);
-    float weight = ls.delta || !mis ? 1.0f : powerHeuristic(ls.pdf, pdfBsdf(bsdf, wo, wi));
+    if (!lightVisible(v.hit.position, v.hit.geometricNormal, ls)) return vec3(0.0f);
+    float weight = ls.delta || !mis ? 1.0f : powerHeuristic(ls.pdf, pdfVertexBsdf(v, wi));
     return f * wi.z * ls.radiance * (weight / ls.pdf);
 }
 
-vec3 directLight(SurfaceHit hit, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n, uint lightCount, bool mis,
-                 inout Sampler rng) {
-    return directLightSkipping(hit, bsdf, wo, t, b, n, lightCount, mis, 0u, rng);
-}
-
-// MIS weight (power heuristic) of emission that a BSDF-sampled ray with solid-angle pdf
-// `bsdfPdf` found at `hit`, distance tHit along dir, against next-event estimation of that point.
-float emissionMisWeight(SurfaceHit hit, vec3 dir, float tHit, float bsdfPdf) {
-    float cosLight = abs(dot(dir, hit.geometricNormal));
-    float lightPdf = hit.emitterPdfArea * tHit * tHit / max(cosLight, 1.0e-8f);
+// MIS weight (power heuristic) of emission that a BSDF-sampled ray along dir with solid-angle pdf
+// `bsdfPdf` found at vertex v, against next-event estimation of that point.
+float emissionMisWeight(PathVertex v, vec3 dir, float bsdfPdf) {
+    float cosLight = abs(dot(dir, v.hit.geometricNormal));
+    float lightPdf = v.hit.emitterPdfArea * v.distance * v.distance / max(cosLight, 1.0e-8f);
     return powerHeuristic(bsdfPdf, lightPdf);
 }
 

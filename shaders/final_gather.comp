@@ -13,6 +13,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "scene_access.glsl"
+#include "path_vertex.glsl"
 #include "shared/halton.glsl"
 #include "visible_point_access.glsl"
 #include "shared/photon_render.glsl"
@@ -36,44 +37,29 @@ vec3 gatherRay(GpuVisiblePoint vp, VisibleSurface s, inout Sampler rng) {
     // The visible point's delta lobes are not followed (as in visible_points.comp).
     if (bs.lobe == kLobeNone || (bs.lobe & kLobeDelta) != 0u) return vec3(0.0f);
     vec3 weight = bs.weight;
+    // Non-delta lobes reflect: the ray starts outside any medium.
     vec3 dir = normalize(toWorld(bs.wi, s.t, s.b, s.n));
-    vec3 origin = offsetRayOrigin(vp.position, decodeOctahedral(vp.geometricNormal), dir);
-    vec3 mediumSigma = vec3(0.0f);  // non-delta lobes reflect: the ray starts outside any medium
+    Ray ray = rayFrom(offsetRayOrigin(vp.position, decodeOctahedral(vp.geometricNormal), dir), dir);
     for (uint depth = 0u; depth <= params.maxSpecularDepth; ++depth) {
-        float tHit;
-        uint tri;
-        float b1;
-        float b2;
-        if (!traceClosest(origin, dir, kInfinity, tHit, tri, b1, b2)) return vec3(0.0f);
-        weight *= exp(-mediumSigma * tHit);
-        SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
-        GpuMaterial material = materials[hit.material];
-        BsdfParams bsdf = bsdfParamsAt(material, hit.uv);
-        vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
-        vec3 t;
-        vec3 b;
-        orthonormalBasis(n, t, b);
-        vec3 wo = toLocal(-dir, t, b, n);
-        if (wo.z <= 0.0f) wo.z = 1.0e-4f;
-        if (storesPhotons(bsdf)) {
+        PathVertex v;
+        if (!traceVertex(ray, v)) return vec3(0.0f);
+        weight *= v.transmittance;
+        if (storesPhotons(v.bsdf)) {
             if (params.radianceLookup == 0u)
-                return weight * radianceNearest(params.grid, hit.position, params.k, params.maxRadius, 0u, 0u, bsdf,
-                                                wo, t, b, n);
+                return weight * radianceNearest(params.grid, v.hit.position, params.k, params.maxRadius, 0u, 0u, v.bsdf,
+                                                v.wo, v.t, v.b, v.n);
             float radius2;
-            if (gatherNearest(params.grid, hit.position, n, 1u, params.lookupRadius, 0u, 0u, radius2) == 0u)
+            if (gatherNearest(params.grid, v.hit.position, v.n, 1u, params.lookupRadius, 0u, 0u, radius2) == 0u)
                 return vec3(0.0f);
             vec3 irradiance = photonRelativePower(gridPhotons[heapIndex[0]]) * params.grid.photonPower;
-            return weight * diffuseReflectance(bsdf, wo) * irradiance;
+            return weight * diffuseReflectance(v.bsdf, v.wo) * irradiance;
         }
         if (depth == params.maxSpecularDepth) break;
         vec3 ud = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
-        BsdfSample next = sampleBsdf(bsdf, wo, hit.frontFace, true, ud);
+        BsdfSample next = sampleVertexBsdf(v, true, ud);
         if (next.lobe == kLobeNone) break;
         weight *= next.weight;
-        dir = normalize(toWorld(next.wi, t, b, n));
-        origin = offsetRayOrigin(hit.position, hit.geometricNormal, dir);
-        if ((next.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)
-            mediumSigma = hit.frontFace ? material.attenuationCoeff : vec3(0.0f);
+        spawnRay(v, next, ray);
     }
     return vec3(0.0f);
 }

@@ -20,37 +20,14 @@ layout(std430, set = 0, binding = 2) writeonly buffer Importance { vec2 importan
 
 layout(push_constant) uniform Push { ImportanceGridParams params; };
 
-// The table's entry of a cell, or -1.
-int findCell(ivec3 c, uint level, uint bin) {
-    uint key = importanceKey(c, level, bin);
-    uint index = importanceSlotHash(c, level, bin) & params.tableMask;
-    for (uint probe = 0u; probe < kImportanceMaxProbes; ++probe) {
-        uint stored = table[index].key;
-        if (stored == key) return int(index);
-        if (stored == kImportanceEmptyKey) return -1;
-        index = (index + 1u) & params.tableMask;
-    }
-    return -1;
-}
+#include "importance_lookup.glsl"
 
 void main() {
     uint slot = gl_GlobalInvocationID.x;
     if (slot >= params.slotCount) return;
     GpuPhoton p = slots[slot];
     vec2 result = vec2(0.0f);
-    if (photonSelected(photonFlags(p), params.requiredFlags, params.rejectedFlags)) {
-        uint bin = normalBin(decodeOctahedral(p.normal));
-        for (uint level = 0u; level < kImportanceLevels; ++level) {
-            int entry = findCell(importanceCell(p.position, params.invCellSize, level), level, bin);
-            if (entry < 0) continue;
-            ImportanceCell cell = table[entry];
-            float cellSize = float(1u << level) / params.invCellSize;
-            // The path importance is a largest value, not a density: coarse cells would spread it
-            // far from its importons (into rooms behind walls), so it is read near them only.
-            result = vec2(float(cell.importance) / (kImportanceFixedPoint * cellSize * cellSize),
-                          level < kPathImportanceLevels ? uintBitsToFloat(cell.maxPathImportance) : 0.0f);
-            if (cell.count >= params.k) break;
-        }
-    }
+    if (photonSelected(photonFlags(p), params.requiredFlags, params.rejectedFlags))
+        result = importanceAround(p.position, decodeOctahedral(p.normal));
     importance[slot] = result;
 }

@@ -10,7 +10,7 @@
 
 layout(local_size_x = 64) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer Importons { GpuPhoton importons[]; };
+layout(std430, set = 0, binding = 0) readonly buffer Importons { GpuImporton importons[]; };
 layout(std430, set = 0, binding = 1) buffer Table { ImportanceCell table[]; };
 
 layout(push_constant) uniform Push { ImportanceGridParams params; };
@@ -18,11 +18,10 @@ layout(push_constant) uniform Push { ImportanceGridParams params; };
 void main() {
     uint slot = gl_GlobalInvocationID.x;
     if (slot >= params.slotCount) return;
-    GpuPhoton p = importons[slot];
-    if ((photonFlags(p) & kPhotonValid) == 0u) return;
-    vec3 w = photonRelativePower(p);
-    uint importance = uint(min(w.x, kMaxImportonImportance) * kImportanceFixedPoint + 0.5f);
-    uint pathImportance = floatBitsToUint(max(w.y, 0.0f));
+    GpuImporton p = importons[slot];
+    if ((p.flags & kImportonValid) == 0u) return;
+    uint importance = uint(min(p.importance, kMaxImportonImportance) * kImportanceFixedPoint + 0.5f);
+    uint pathImportance = floatBitsToUint(max(p.pathImportance, 0.0f));
     uint bin = normalBin(decodeOctahedral(p.normal));
     for (uint level = 0u; level < kImportanceLevels; ++level) {
         ivec3 c = importanceCell(p.position, params.invCellSize, level);

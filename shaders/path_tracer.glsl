@@ -40,11 +40,9 @@ layout(push_constant) uniform Push { PathTraceParams params; };
 
 // The state of one camera path between bounces.
 struct PathState {
-    vec3 origin;
-    vec3 dir;
+    Ray ray;           // towards the next vertex
     vec3 throughput;
     vec3 radiance;
-    vec3 mediumSigma;  // absorption of the solid the ray is inside (Beer-Lambert)
     float lastPdf;     // solid-angle pdf of the last BSDF sample (for MIS at emitters)
     bool lastDelta;    // camera rays and delta lobes: emission is added unweighted
     float reference;   // guide-driven Russian roulette: the pixel's estimated value (< 0: not yet)
@@ -57,11 +55,10 @@ PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
     st.rng = makeSampler(sampleIndex, streamSeed);
     vec2 jitter = nextSample2(st.rng);
     if ((params.flags & kPathFlagPixelCentres) != 0u) jitter = vec2(0.5f);
-    st.origin = params.camera.position;
-    st.dir = cameraRayDirection(params.camera, params.width, params.height, vec2(float(px) + jitter.x, float(py) + jitter.y));
+    st.ray = rayFrom(params.camera.position, cameraRayDirection(params.camera, params.width, params.height,
+                                                                vec2(float(px) + jitter.x, float(py) + jitter.y)));
     st.throughput = vec3(1.0f);
     st.radiance = vec3(0.0f);
-    st.mediumSigma = vec3(0.0f);
     st.lastPdf = 0.0f;
     st.lastDelta = true;
     st.reference = -1.0f;
@@ -76,24 +73,23 @@ PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
 // and weights by the mixture density, so neither a mis-estimated grid nor a narrow lobe can make
 // the variance blow up. mix = 1 is the paper's method. `irradiance`: the guiding photons' indirect
 // irradiance at the vertex (rgb; w 1 where there is an estimate, else 0).
-BsdfSample sampleGuided(vec3 position, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n, bool entering, vec3 u,
-                        float uSelect, out vec4 irradiance) {
+BsdfSample sampleGuided(PathVertex v, vec3 u, float uSelect, out vec4 irradiance) {
     irradiance = vec4(0.0f);
-    if (guide.mix <= 0.0f || specularIsDelta(bsdf) || bsdf.transmission > 0.0f || !storesPhotons(bsdf))
-        return sampleBsdf(bsdf, wo, entering, true, u);
+    if (guide.mix <= 0.0f || specularIsDelta(v.bsdf) || v.bsdf.transmission > 0.0f || !storesPhotons(v.bsdf))
+        return sampleVertexBsdf(v, true, u);
     uint gm = guide.gridSize & 0xffu;
     uint gn = (guide.gridSize >> 8u) & 0xffu;
     float cells[kMaxGuideCells];
     // The grid's frame: the shading frame, or the cache bin's axis frame.
-    vec3 gt = t;
-    vec3 gb = b;
-    vec3 gnrm = n;
+    vec3 gt = v.t;
+    vec3 gb = v.b;
+    vec3 gnrm = v.n;
 #ifdef GUIDE_CACHE
-    ivec3 cell = gridCell(position, guide.grid.invCellSize);
+    ivec3 cell = gridCell(v.hit.position, guide.grid.invCellSize);
     uint bucket = gridHash(cell, guide.grid.tableMask);
     ivec4 cached = cacheCells[bucket];
-    if (cached.w == 0 || ivec3(cached.x, cached.y, cached.z) != cell) return sampleBsdf(bsdf, wo, entering, true, u);
-    uint bin = normalBin(n);
+    if (cached.w == 0 || ivec3(cached.x, cached.y, cached.z) != cell) return sampleVertexBsdf(v, true, u);
+    uint bin = normalBin(v.n);
     gnrm = normalBinAxis(bin);
     orthonormalBasis(gnrm, gt, gb);
     uint base = (bucket * kNormalBins + bin) * kMaxGuideCells;
@@ -109,12 +105,12 @@ BsdfSample sampleGuided(vec3 position, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b,
 #else
     for (uint i = 0u; i < kMaxGuideCells; ++i) cells[i] = 0.0f;
     float radius2;
-    uint found = gatherNearest(guide.grid, position, n, guide.k, guide.maxRadius, 0u, kPhotonPrimary, radius2);
+    uint found = gatherNearest(guide.grid, v.hit.position, v.n, guide.k, guide.maxRadius, 0u, kPhotonPrimary, radius2);
     vec3 flux = vec3(0.0f);
     for (uint j = 0u; j < found; ++j) {
         GpuPhoton p = gridPhotons[heapIndex[j]];
-        vec3 wi = toLocal(decodeOctahedral(p.direction), t, b, n);
-        guideAdd(cells, gm, gn, wi, luminance(evalBsdf(bsdf, wo, wi) * photonRelativePower(p)));
+        vec3 wi = toLocal(decodeOctahedral(p.direction), v.t, v.b, v.n);
+        guideAdd(cells, gm, gn, wi, luminance(evalVertexBsdf(v, wi) * photonRelativePower(p)));
         flux += photonRelativePower(p);
     }
     guideFinalize(cells, gm, gn);
@@ -122,19 +118,19 @@ BsdfSample sampleGuided(vec3 position, BsdfParams bsdf, vec3 wo, vec3 t, vec3 b,
 #endif
     BsdfSample s;
     if (uSelect < guide.mix) {
-        s.wi = toLocal(toWorld(guideSample(cells, gm, gn, u), gt, gb, gnrm), t, b, n);
+        s.wi = toLocal(toWorld(guideSample(cells, gm, gn, u), gt, gb, gnrm), v.t, v.b, v.n);
         s.lobe = kLobeDiffuse;
     } else {
-        s = sampleBsdf(bsdf, wo, entering, true, u);
+        s = sampleVertexBsdf(v, true, u);
         if (s.lobe == kLobeNone) return s;
     }
-    vec3 wiGrid = toLocal(toWorld(s.wi, t, b, n), gt, gb, gnrm);
-    s.pdf = guide.mix * guidePdf(cells, gm, gn, wiGrid) + (1.0f - guide.mix) * pdfBsdf(bsdf, wo, s.wi);
+    vec3 wiGrid = toLocal(toWorld(s.wi, v.t, v.b, v.n), gt, gb, gnrm);
+    s.pdf = guide.mix * guidePdf(cells, gm, gn, wiGrid) + (1.0f - guide.mix) * pdfVertexBsdf(v, s.wi);
     if (s.wi.z <= 0.0f || s.pdf <= 0.0f) {
         s.lobe = kLobeNone;
         return s;
     }
-    s.weight = evalBsdf(bsdf, wo, s.wi) * (s.wi.z / s.pdf);
+    s.weight = evalVertexBsdf(v, s.wi) * (s.wi.z / s.pdf);
     return s;
 }
 
@@ -150,41 +146,24 @@ vec3 rouletteReflectance(BsdfParams bsdf, vec3 wo) {
 // and Russian roulette. Returns false when the path has ended.
 bool extendPath(inout PathState st) {
     bool useNee = (params.flags & kPathFlagNoDirectLightSampling) == 0u;
-    float tHit;
-    uint tri;
-    float b1;
-    float b2;
-    if (!traceClosest(st.origin, st.dir, kInfinity, tHit, tri, b1, b2)) return false;
-    st.throughput *= exp(-st.mediumSigma * tHit);
-    SurfaceHit hit = surfaceAt(tri, b1, b2, st.dir);
-    GpuMaterial material = materials[hit.material];
+    PathVertex v;
+    if (!traceVertex(st.ray, v)) return false;
+    st.throughput *= v.transmittance;
 
-    if (emitsTowards(material, hit.frontFace)) {
-        vec3 le = emittedRadiance(material, hit.uv);
+    if (emitsTowards(v.material, v.hit.frontFace)) {
+        vec3 le = emittedRadiance(v.material, v.hit.uv);
         if (le.r + le.g + le.b > 0.0f) {
             float weight = 1.0f;
-            if (useNee && !st.lastDelta) weight = emissionMisWeight(hit, st.dir, tHit, st.lastPdf);
-            if (st.depth == 1u && !st.lastDelta && (params.flags & kPathFlagRasterAreaLights) != 0u) weight = 0.0f;
+            if (useNee && !st.lastDelta) weight = emissionMisWeight(v, st.ray.dir, st.lastPdf);
+            if (rasterCoversEmission(params.flags, st.depth, st.lastDelta)) weight = 0.0f;
             st.radiance += st.throughput * le * weight;
         }
     }
     if (st.depth == params.maxDepth) return false;
 
-    BsdfParams bsdf = bsdfParamsAt(material, hit.uv);
-    // Shading frame on the side the ray came from.
-    vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
-    vec3 t;
-    vec3 b;
-    orthonormalBasis(n, t, b);
-    vec3 wo = toLocal(-st.dir, t, b, n);
-    if (wo.z <= 0.0f) wo.z = 1.0e-4f;  // shading normal facing away: treat as grazing
-
     if (useNee) {
-        uint skip = 0u;
-        if (st.depth == 0u && (params.flags & kPathFlagRasterDeltaLights) != 0u)
-            skip |= (1u << kLightPoint) | (1u << kLightSpot) | (1u << kLightDirectional);
-        if (st.depth == 0u && (params.flags & kPathFlagRasterAreaLights) != 0u) skip |= 1u << kLightTriangle;
-        st.radiance += st.throughput * directLightSkipping(hit, bsdf, wo, t, b, n, params.lightCount, true, skip, st.rng);
+        uint skip = rasterCoveredLightTypes(params.flags, st.depth);
+        st.radiance += st.throughput * directLight(v, params.lightCount, true, skip, st.rng);
     } else {
         nextSample(st.rng);  // keep the sample dimensions of both modes aligned
         nextSample(st.rng);
@@ -194,9 +173,9 @@ bool extendPath(inout PathState st) {
     vec3 u = vec3(nextSample(st.rng), nextSample(st.rng), nextSample(st.rng));
 #ifdef GUIDED
     vec4 irradiance;
-    BsdfSample bs = sampleGuided(hit.position, bsdf, wo, t, b, n, hit.frontFace, u, nextSample(st.rng), irradiance);
+    BsdfSample bs = sampleGuided(v, u, nextSample(st.rng), irradiance);
 #else
-    BsdfSample bs = sampleBsdf(bsdf, wo, hit.frontFace, true, u);
+    BsdfSample bs = sampleVertexBsdf(v, true, u);
 #endif
     float uRoulette = nextSample(st.rng);
     if (bs.lobe == kLobeNone) return false;
@@ -204,19 +183,14 @@ bool extendPath(inout PathState st) {
     st.throughput *= bs.weight;
     st.lastDelta = (bs.lobe & kLobeDelta) != 0u;
     st.lastPdf = bs.pdf;
-    st.dir = normalize(toWorld(bs.wi, t, b, n));
-    st.origin = offsetRayOrigin(hit.position, hit.geometricNormal, st.dir);
-
-    // Entering or leaving a solid with KHR_materials_volume absorption.
-    if ((bs.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)
-        st.mediumSigma = hit.frontFace ? material.attenuationCoeff : vec3(0.0f);
+    spawnRay(v, bs, st.ray);
 
     // Russian roulette: by the guide's estimate where there is one and --guide-rr is on (guiding.glsl),
     // else after a few bounces, survival by the throughput's largest component.
     float survive = 1.0f;
 #ifdef GUIDED
     if ((params.flags & kPathFlagGuideRoulette) != 0u && irradiance.w > 0.0f) {
-        float expected = luminance(arriving * rouletteReflectance(bsdf, wo) * irradiance.rgb);
+        float expected = luminance(arriving * rouletteReflectance(v.bsdf, v.wo) * irradiance.rgb);
         if (st.reference < 0.0f) st.reference = luminance(st.radiance) + expected;
         survive = guideSurvival(expected, st.reference);
     } else
@@ -241,7 +215,7 @@ void main() {
     uint py = pixel / params.width;
     uint streamSeed = hashCombine(params.seed, pixel);
     vec4 acc = film[pixel];
-    bool addRaster = (params.flags & (kPathFlagRasterDeltaLights | kPathFlagRasterAreaLights)) != 0u;
+    bool addRaster = rasterDirectLightOn(params.flags);
     uint done = 0u;
     uint segments = 0u;
     PathState st = startPath(params.firstSample, streamSeed, px, py);

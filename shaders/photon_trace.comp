@@ -12,6 +12,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "scene_access.glsl"
+#include "path_vertex.glsl"
 #include "shared/halton.glsl"
 #include "shared/photon.glsl"
 
@@ -112,26 +113,17 @@ void main() {
     uint slot = local * params.maxDeposits;
     uint stored = 0u;
     bool onlySpecularSoFar = true;  // every bounce since the light was a delta lobe
-    vec3 origin = e.origin;
-    vec3 dir = e.dir;
-    vec3 mediumSigma = vec3(0.0f);
+    Ray ray = rayFrom(e.origin, e.dir);
     uint outcome = kPhotonCounterTruncated;  // unless a break below says otherwise
     for (uint depth = 0u; depth < 64u; ++depth) {
-        float tHit;
-        uint tri;
-        float b1;
-        float b2;
-        if (!traceClosest(origin, dir, kInfinity, tHit, tri, b1, b2)) {
+        PathVertex v;
+        if (!traceVertex(ray, v)) {
             outcome = kPhotonCounterLost;
             break;
         }
-        power *= exp(-mediumSigma * tHit);
-        SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
-        GpuMaterial material = materials[hit.material];
-        BsdfParams bsdf = bsdfParamsAt(material, hit.uv);
-        vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
+        power *= v.transmittance;
 
-        if (storesPhotons(bsdf)) {
+        if (storesPhotons(v.bsdf)) {
             if (stored == params.maxDeposits) {
                 outcome = kPhotonCounterTruncated;
                 break;
@@ -145,19 +137,14 @@ void main() {
                 flags |= kPhotonCaustic;
                 counter = kPhotonCounterStoredCaustic;
             }
-            photons[slot + stored] = makePhoton(hit.position, power, -dir, n, flags, lightIndex);
+            photons[slot + stored] = makePhoton(v.hit.position, power, -ray.dir, v.n, flags, lightIndex);
             stored += 1u;
             atomicAdd(counters[counter], 1u);
         }
 
-        vec3 t;
-        vec3 b;
-        orthonormalBasis(n, t, b);
-        vec3 wo = toLocal(-dir, t, b, n);
-        if (wo.z <= 0.0f) wo.z = 1.0e-4f;
         vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
         float uRoulette = nextSample(rng);
-        BsdfSample bs = sampleBsdf(bsdf, wo, hit.frontFace, false, u);
+        BsdfSample bs = sampleVertexBsdf(v, false, u);
         if (bs.lobe == kLobeNone) {
             outcome = kPhotonCounterAbsorbed;
             break;
@@ -170,11 +157,8 @@ void main() {
             break;
         }
         power *= bs.weight / survive;
-        onlySpecularSoFar = onlySpecularSoFar && ((bs.lobe & kLobeDelta) != 0u || !storesPhotons(bsdf));
-        dir = normalize(toWorld(bs.wi, t, b, n));
-        origin = offsetRayOrigin(hit.position, hit.geometricNormal, dir);
-        if ((bs.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)
-            mediumSigma = hit.frontFace ? material.attenuationCoeff : vec3(0.0f);
+        onlySpecularSoFar = onlySpecularSoFar && ((bs.lobe & kLobeDelta) != 0u || !storesPhotons(v.bsdf));
+        spawnRay(v, bs, ray);
     }
     atomicAdd(counters[outcome], 1u);
 }

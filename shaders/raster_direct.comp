@@ -25,31 +25,19 @@ void main() {
     uint px = pixel % params.width;
     uint py = pixel / params.width;
     vec3 dir = cameraRayDirection(params.camera, params.width, params.height, vec2(float(px) + 0.5f, float(py) + 0.5f));
-    float tHit;
-    uint tri;
-    float b1;
-    float b2;
-    if (!traceClosest(params.camera.position, dir, kInfinity, tHit, tri, b1, b2)) return;
-    SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
-    GpuMaterial material = materials[hit.material];
-    BsdfParams bsdf = bsdfParamsAt(material, hit.uv);
-    // The same shading frame as pathtrace.comp's first vertex.
-    vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
-    vec3 t;
-    vec3 b;
-    orthonormalBasis(n, t, b);
-    vec3 wo = toLocal(-dir, t, b, n);
-    if (wo.z <= 0.0f) wo.z = 1.0e-4f;
-    vec3 sideNormal = hit.frontFace ? hit.geometricNormal : -hit.geometricNormal;
+    // The same vertex as the path tracer's first one (traceVertex: shading frame and all).
+    PathVertex v;
+    if (!traceVertex(rayFrom(params.camera.position, dir), v)) return;
+    vec3 sideNormal = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
 
     uint mask = masks[params.maskOffset + pixel];
     vec3 sum = vec3(0.0f);
     for (uint k = 0u; k < params.lightCount; ++k) {
         if (((mask >> (8u * k)) & 0xffu) == 0u) continue;  // in this light's shadow volume
-        LightSample ls = rasterLightSample(rasterLights[params.firstLight + k], hit.position);
-        vec3 wi = toLocal(ls.wi, t, b, n);
+        LightSample ls = rasterLightSample(rasterLights[params.firstLight + k], v.hit.position);
+        vec3 wi = toLocal(ls.wi, v.t, v.b, v.n);
         if (wi.z <= 0.0f || dot(ls.wi, sideNormal) <= 0.0f) continue;  // light behind the surface
-        sum += evalBsdf(bsdf, wo, wi) * wi.z * ls.radiance;
+        sum += evalVertexBsdf(v, wi) * wi.z * ls.radiance;
     }
     direct[pixel] += vec4(sum, 0.0f);
 }

@@ -4,6 +4,7 @@
 #ifndef VKP_VISIBLE_POINT_ACCESS_GLSL
 #define VKP_VISIBLE_POINT_ACCESS_GLSL
 
+#include "path_vertex.glsl"
 #include "shared/photon.glsl"
 #include "shared/visible_point.glsl"
 
@@ -19,9 +20,7 @@ VisibleSurface visibleSurface(GpuVisiblePoint vp) {
     VisibleSurface s;
     s.bsdf = bsdfParamsAt(materials[vp.material], vp.uv);
     s.n = decodeOctahedral(vp.shadingNormal);
-    orthonormalBasis(s.n, s.t, s.b);
-    s.wo = toLocal(decodeOctahedral(vp.wo), s.t, s.b, s.n);
-    if (s.wo.z <= 0.0f) s.wo.z = 1.0e-4f;
+    shadingFrame(s.n, decodeOctahedral(vp.wo), s.t, s.b, s.wo);  // as traceVertex set it up
     return s;
 }
 

@@ -11,6 +11,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "scene_access.glsl"
+#include "path_vertex.glsl"
 #include "shared/halton.glsl"
 #include "shared/photon.glsl"
 #include "shared/visible_point.glsl"
@@ -33,12 +34,11 @@ void main() {
     Sampler rng = makeSampler(params.sampleIndex, hashCombine(hashCombine(params.seed, kVisiblePointStream), pixel));
     vec2 jitter = nextSample2(rng);
     if ((params.flags & kPathFlagPixelCentres) != 0u) jitter = vec2(0.5f);
-    vec3 origin = params.camera.position;
-    vec3 dir = cameraRayDirection(params.camera, params.width, params.height,
-                                  vec2(float(pixel % params.width) + jitter.x, float(pixel / params.width) + jitter.y));
+    Ray ray = rayFrom(params.camera.position,
+                      cameraRayDirection(params.camera, params.width, params.height,
+                                         vec2(float(pixel % params.width) + jitter.x, float(pixel / params.width) + jitter.y)));
     vec3 throughput = vec3(1.0f);
     vec3 radiance = vec3(0.0f);
-    vec3 mediumSigma = vec3(0.0f);
     bool lastDelta = true;  // the camera ray, then: was the last bounce a delta lobe
     float lastPdf = 0.0f;   // solid-angle pdf of the last bounce (polished metal)
     GpuVisiblePoint vp;  // all fields written, so invalid points are zero bytes but for pixel
@@ -55,64 +55,44 @@ void main() {
     vp.pad1 = 0u;
 
     for (uint depth = 0u; depth <= params.maxSpecularDepth; ++depth) {
-        float tHit;
-        uint tri;
-        float b1;
-        float b2;
-        if (!traceClosest(origin, dir, kInfinity, tHit, tri, b1, b2)) break;
-        throughput *= exp(-mediumSigma * tHit);
-        SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
-        GpuMaterial material = materials[hit.material];
+        PathVertex v;
+        if (!traceVertex(ray, v)) break;
+        throughput *= v.transmittance;
         // Emission behind delta bounces counts in full; behind a polished-metal bounce it is
         // weighted against that vertex's next-event estimate.
-        if (emitsTowards(material, hit.frontFace)) {
-            float weight = lastDelta ? 1.0f : emissionMisWeight(hit, dir, tHit, lastPdf);
-            // The raster term holds all of a covered area light's light at the first vertex.
-            if (depth == 1u && !lastDelta && (params.flags & kPathFlagRasterAreaLights) != 0u) weight = 0.0f;
-            radiance += throughput * emittedRadiance(material, hit.uv) * weight;
+        if (emitsTowards(v.material, v.hit.frontFace)) {
+            float weight = lastDelta ? 1.0f : emissionMisWeight(v, ray.dir, lastPdf);
+            if (rasterCoversEmission(params.flags, depth, lastDelta)) weight = 0.0f;
+            radiance += throughput * emittedRadiance(v.material, v.hit.uv) * weight;
         }
 
-        BsdfParams bsdf = bsdfParamsAt(material, hit.uv);
-        vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
-        vec3 t;
-        vec3 b;
-        orthonormalBasis(n, t, b);
-        vec3 wo = toLocal(-dir, t, b, n);
-        if (wo.z <= 0.0f) wo.z = 1.0e-4f;
-
         // --direct raster: the first vertex's covered lights come from the raster pass.
-        uint skip = 0u;
-        if (depth == 0u && (params.flags & kPathFlagRasterDeltaLights) != 0u)
-            skip |= (1u << kLightPoint) | (1u << kLightSpot) | (1u << kLightDirectional);
-        if (depth == 0u && (params.flags & kPathFlagRasterAreaLights) != 0u) skip |= 1u << kLightTriangle;
-        if (storesPhotons(bsdf)) {
-            radiance += throughput * directLightSkipping(hit, bsdf, wo, t, b, n, params.lightCount, false, skip, rng);
-            vp.position = hit.position;
-            vp.material = hit.material;
+        uint skip = rasterCoveredLightTypes(params.flags, depth);
+        if (storesPhotons(v.bsdf)) {
+            radiance += throughput * directLight(v, params.lightCount, false, skip, rng);
+            vp.position = v.hit.position;
+            vp.material = v.hit.material;
             vp.throughput = throughput;
-            vp.shadingNormal = encodeOctahedral(n);
-            vp.uv = hit.uv;
-            vp.wo = encodeOctahedral(-dir);
-            vp.geometricNormal = encodeOctahedral(hit.frontFace ? hit.geometricNormal : -hit.geometricNormal);
-            vp.flags = kVisiblePointValid | (hit.frontFace ? kVisiblePointFrontFace : 0u);
+            vp.shadingNormal = encodeOctahedral(v.n);
+            vp.uv = v.hit.uv;
+            vp.wo = encodeOctahedral(-ray.dir);
+            vp.geometricNormal = encodeOctahedral(v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal);
+            vp.flags = kVisiblePointValid | (v.hit.frontFace ? kVisiblePointFrontFace : 0u);
             break;
         }
         if (depth == params.maxSpecularDepth) break;
         // A polished metal: direct light by next-event estimation (MIS), then on by its lobe.
-        if (!specularIsDelta(bsdf))
-            radiance += throughput * directLightSkipping(hit, bsdf, wo, t, b, n, params.lightCount, true, skip, rng);
+        if (!specularIsDelta(v.bsdf))
+            radiance += throughput * directLight(v, params.lightCount, true, skip, rng);
         vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
-        BsdfSample bs = sampleBsdf(bsdf, wo, hit.frontFace, true, u);
+        BsdfSample bs = sampleVertexBsdf(v, true, u);
         if (bs.lobe == kLobeNone) break;
         throughput *= bs.weight;
         lastDelta = (bs.lobe & kLobeDelta) != 0u;
         lastPdf = bs.pdf;
-        dir = normalize(toWorld(bs.wi, t, b, n));
-        origin = offsetRayOrigin(hit.position, hit.geometricNormal, dir);
-        if ((bs.lobe & kLobeTransmission) != 0u && (material.flags & kMaterialThinWalled) == 0u)
-            mediumSigma = hit.frontFace ? material.attenuationCoeff : vec3(0.0f);
+        spawnRay(v, bs, ray);
     }
-    if ((params.flags & (kPathFlagRasterDeltaLights | kPathFlagRasterAreaLights)) != 0u) radiance += rasterDirect[pixel].rgb;
+    if (rasterDirectLightOn(params.flags)) radiance += rasterDirect[pixel].rgb;
     if (any(isnan(radiance)) || any(isinf(radiance))) radiance = vec3(0.0f);
     film[pixel] += vec4(radiance, 1.0f);
     visiblePoints[pixel] = vp;

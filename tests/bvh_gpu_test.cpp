@@ -1,6 +1,6 @@
 // GPU BVH traversal (shaders/shared/bvh_traverse.glsl, run by tests/shaders/bvh_trace_test.comp)
-// against brute force over all triangles, on a shipped scene, and shadow rays that must not be
-// occluded by the surfaces they start and end on.
+// against brute force over all triangles and against the same traversal on the host, on a shipped
+// scene, and shadow rays that must not be occluded by the surfaces they start and end on.
 #include <random>
 
 #include <gtest/gtest.h>
@@ -93,6 +93,13 @@ TEST_F(BvhGpu, ClosestHitEqualsBruteForceOnCornellGlass) {
         if (hits[i].triangle != expected.triangle) {
             EXPECT_EQ(hits[i].t, expected.t) << "ray " << i;
         }
+        // The host runs the same traversal (closestHit is bvh_traverse.glsl compiled as C++):
+        // the same triangle and barycentrics, not only the same distance.
+        const RayHit host = closestHit(bvh, tris, glm::vec3(rays[i].origin), glm::vec3(rays[i].direction),
+                                       rays[i].origin.w);
+        EXPECT_EQ(hits[i].triangle, host.triangle) << "ray " << i;
+        EXPECT_EQ(hits[i].b1, host.b1) << "ray " << i;
+        EXPECT_EQ(hits[i].b2, host.b2) << "ray " << i;
     }
     EXPECT_GT(hitCount, rays.size() / 4);
     EXPECT_LT(hitCount, rays.size());

@@ -2,8 +2,9 @@
 // closest and any hit through the tree equal brute force over every triangle with the same
 // intersection function; the triangle test is watertight on closed meshes; the tree is a valid
 // partition with nested boxes; SAH beats a median split; degenerate inputs build valid trees.
-// The GPU traversal (bvh_traverse.glsl) is exercised by tests/shaders/bvh_trace_test.comp, whose
-// results should equal closestHit/anyHit here (on lavapipe they are bit-identical).
+// closestHit/anyHit run the shaders' own traversal (shaders/shared/bvh_traverse.glsl compiled as
+// C++), so these brute-force comparisons check it; tests/bvh_gpu_test.cpp checks that the GPU
+// build gives the same hits (on lavapipe bit-identical).
 #include <cmath>
 #include <cstring>
 #include <iomanip>

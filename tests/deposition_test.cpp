@@ -125,6 +125,52 @@ PhotonMapSettings mapSettings(uint32_t mode, const ImportonMap* importons) {
     return settings;
 }
 
+// The importon records (GpuImporton, shared/importance.glsl): path i's importons fill its slots
+// from the first; the first is the primary one, seen from the camera, with importance W = 1
+// (nothing absorbed yet) and no path importance; later ones carry W <= 1 and the path importance
+// through the importon before them.
+TEST_F(DepositionTest, ImportonRecordsDescribeTheirPaths) {
+    const GpuScene box("cornell-box");
+    ImportonSettings settings;
+    settings.paths = 4096;
+    const ImportonMap map(test::gpu(), box.arrays, box.buffers,
+                          makeGpuCamera(chooseCamera(box.scene, -1), kImageWidth, kImageHeight), kImageWidth,
+                          kImageHeight, settings);
+    const std::vector<gpu::GpuImporton> importons = map.downloadImportons();
+    ASSERT_EQ(importons.size(), size_t(settings.paths) * settings.maxDeposits);
+    uint64_t valid = 0, secondary = 0, withPathImportance = 0;
+    for (size_t slot = 0; slot < importons.size(); ++slot) {
+        const gpu::GpuImporton& p = importons[slot];
+        const size_t k = slot % settings.maxDeposits;
+        if ((p.flags & gpu::kImportonValid) == 0) {
+            EXPECT_EQ(p.flags, 0u) << slot;
+            continue;
+        }
+        ++valid;
+        if (k > 0) {
+            EXPECT_NE(importons[slot - 1].flags & gpu::kImportonValid, 0u) << "gap before slot " << slot;
+        }
+        EXPECT_EQ((p.flags & gpu::kImportonPrimary) != 0, k == 0) << slot;
+        EXPECT_EQ(p.flags & ~(gpu::kImportonValid | gpu::kImportonPrimary), 0u) << slot;
+        EXPECT_EQ(p.pad0, 0u) << slot;
+        EXPECT_GT(p.importance, 0.0f) << slot;
+        EXPECT_LE(p.importance, 1.001f) << slot;
+        EXPECT_NEAR(glm::length(gpu::decodeOctahedral(p.normal)), 1.0f, 1e-4f) << slot;
+        if (k == 0) {
+            EXPECT_NEAR(p.importance, 1.0f, 1e-3f) << slot;
+            EXPECT_EQ(p.pathImportance, 0.0f) << slot;
+        } else {
+            ++secondary;
+            EXPECT_GE(p.pathImportance, 0.0f) << slot;
+            withPathImportance += p.pathImportance > 0.0f;
+        }
+    }
+    EXPECT_EQ(valid, map.stats().stored);
+    EXPECT_GT(valid, settings.paths / 2);
+    EXPECT_GT(secondary, settings.paths / 4);
+    EXPECT_GT(withPathImportance, secondary * 9 / 10);
+}
+
 TEST_F(DepositionTest, StoredFluxEstimatesTheDepositedFluxAndPhotonsGoWhereTheCameraLooks) {
     const UploadedScene rooms("rooms-10x10");
     const auto importons = importonsFor(rooms);

@@ -214,3 +214,32 @@ TEST(RasterDirectSync, NoHazardsUnderSynchronizationValidation) {
 
 }  // namespace
 }  // namespace vkp
+
+namespace vkp {
+namespace {
+
+// The skip rule the path tracer and the visible points share (shared/gpu_types.glsl): only the
+// first vertex skips covered lights, and only emission reached from it by a non-delta bounce is
+// dropped.
+TEST(RasterSkipRule, OnlyTheFirstVertexSkipsCoveredLights) {
+    using namespace gpu;
+    const uint32_t delta = (1u << kLightPoint) | (1u << kLightSpot) | (1u << kLightDirectional);
+    const uint32_t area = 1u << kLightTriangle;
+    EXPECT_FALSE(rasterDirectLightOn(0u));
+    EXPECT_FALSE(rasterDirectLightOn(kPathFlagPixelCentres));
+    EXPECT_TRUE(rasterDirectLightOn(kPathFlagRasterDeltaLights));
+    EXPECT_TRUE(rasterDirectLightOn(kPathFlagRasterAreaLights));
+    EXPECT_EQ(rasterCoveredLightTypes(0u, 0u), 0u);
+    EXPECT_EQ(rasterCoveredLightTypes(kPathFlagRasterDeltaLights, 0u), delta);
+    EXPECT_EQ(rasterCoveredLightTypes(kPathFlagRasterAreaLights, 0u), area);
+    EXPECT_EQ(rasterCoveredLightTypes(kPathFlagRasterDeltaLights | kPathFlagRasterAreaLights, 0u), delta | area);
+    EXPECT_EQ(rasterCoveredLightTypes(kPathFlagRasterDeltaLights | kPathFlagRasterAreaLights, 1u), 0u);
+    EXPECT_TRUE(rasterCoversEmission(kPathFlagRasterAreaLights, 1u, false));
+    EXPECT_FALSE(rasterCoversEmission(kPathFlagRasterAreaLights, 1u, true));   // behind a mirror
+    EXPECT_FALSE(rasterCoversEmission(kPathFlagRasterAreaLights, 0u, true));   // seen by the camera
+    EXPECT_FALSE(rasterCoversEmission(kPathFlagRasterAreaLights, 2u, false));
+    EXPECT_FALSE(rasterCoversEmission(kPathFlagRasterDeltaLights, 1u, false));
+}
+
+}  // namespace
+}  // namespace vkp

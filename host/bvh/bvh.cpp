@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "shared/bvh_traverse.glsl"
 #include "shared/intersect.glsl"
 
 namespace vkp {
@@ -305,7 +306,7 @@ private:
 };
 
 bool isEmptyTree(const Bvh& bvh) {
-    return bvh.nodes.empty() || (bvh.nodes[0].count == 0 && bvh.nodes[0].leftOrFirst == 0);
+    return bvh.nodes.empty() || gpu::bvhIsEmptyRoot(bvh.nodes[0]);
 }
 
 }  // namespace
@@ -335,76 +336,24 @@ std::vector<gpu::GpuTriangle> gpuTriangles(std::span<const Triangle> triangles, 
     return out;
 }
 
-namespace {
-
-// Mirrors traverseBvh in shaders/shared/bvh_traverse.glsl (same intersection code, same order).
-RayHit traverse(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org, glm::vec3 dir,
-                float tMax, bool anyHit) {
-    RayHit hit;
-    hit.t = tMax;
-    if (isEmptyTree(bvh)) return hit;
-    const glm::vec3 invDir = gpu::safeInverseDirection(dir);
-    const gpu::GpuBvhNode* node = &bvh.nodes[0];
-    if (gpu::intersectAabb(org, invDir, node->boundsMin, node->boundsMax, tMax) >= gpu::kInfinity) return hit;
-    std::array<uint32_t, gpu::kBvhMaxDepth> stackNode;
-    std::array<float, gpu::kBvhMaxDepth> stackEntry;
-    uint32_t sp = 0;
-    while (true) {
-        if (node->count > 0) {
-            const uint32_t end = node->leftOrFirst + node->count;
-            for (uint32_t i = node->leftOrFirst; i < end; ++i) {
-                const gpu::GpuTriangle& tri = triangles[i];
-                float t, b1, b2;
-                if (gpu::intersectTriangle(org, dir, glm::vec3(tri.v0), glm::vec3(tri.v1), glm::vec3(tri.v2),
-                                           hit.t, t, b1, b2)) {
-                    hit = {true, t, i, b1, b2};
-                    if (anyHit) return hit;
-                }
-            }
-        } else {
-            const uint32_t left = node->leftOrFirst;
-            const gpu::GpuBvhNode* leftNode = &bvh.nodes[left];
-            const gpu::GpuBvhNode* rightNode = &bvh.nodes[left + 1];
-            const float entryLeft = gpu::intersectAabb(org, invDir, leftNode->boundsMin, leftNode->boundsMax, hit.t);
-            const float entryRight = gpu::intersectAabb(org, invDir, rightNode->boundsMin, rightNode->boundsMax, hit.t);
-            const bool hitLeft = entryLeft < gpu::kInfinity;
-            const bool hitRight = entryRight < gpu::kInfinity;
-            if (hitLeft && hitRight) {
-                const bool rightFirst = entryRight < entryLeft;
-                stackNode[sp] = rightFirst ? left : left + 1;
-                stackEntry[sp] = rightFirst ? entryLeft : entryRight;
-                ++sp;
-                node = rightFirst ? rightNode : leftNode;
-                continue;
-            }
-            if (hitLeft || hitRight) {
-                node = hitLeft ? leftNode : rightNode;
-                continue;
-            }
-        }
-        bool popped = false;
-        while (sp > 0 && !popped) {
-            --sp;
-            if (stackEntry[sp] <= hit.t * gpu::kAabbExitScale) {
-                node = &bvh.nodes[stackNode[sp]];
-                popped = true;
-            }
-        }
-        if (!popped) break;
-    }
-    return hit;
-}
-
-}  // namespace
-
+// The traversal is the shaders' own (shaders/shared/bvh_traverse.glsl compiled as C++).
 RayHit closestHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org, glm::vec3 dir,
                   float tMax) {
-    return traverse(bvh, triangles, org, dir, tMax, false);
+    RayHit hit;
+    hit.t = tMax;
+    if (bvh.nodes.empty()) return hit;  // a default-constructed Bvh; built trees have a root
+    const gpu::BvhArrays arrays{bvh.nodes, triangles};
+    uint32_t triangle = gpu::kBvhNoTriangle;
+    hit.hit = gpu::traceClosest(arrays, org, dir, tMax, hit.t, triangle, hit.b1, hit.b2);
+    if (hit.hit) hit.triangle = triangle;
+    return hit;
 }
 
 bool anyHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org, glm::vec3 dir,
             float tMax) {
-    return traverse(bvh, triangles, org, dir, tMax, true).hit;
+    if (bvh.nodes.empty()) return false;
+    const gpu::BvhArrays arrays{bvh.nodes, triangles};
+    return gpu::traceAny(arrays, org, dir, tMax);
 }
 
 double sahCost(const Bvh& bvh, float traversalCost) {

@@ -3,7 +3,7 @@
 // GpuBvhNodes: root at index 0, the two children of an inner node adjacent (leftOrFirst,
 // leftOrFirst + 1), leaves (count > 0) holding triangles [leftOrFirst, leftOrFirst + count) of the
 // reordered triangle array. The GPU walks it in shaders/shared/bvh_traverse.glsl; closestHit and
-// anyHit below walk it the same way on the CPU with the same shared intersection code.
+// anyHit below run that same code on the CPU (compiled as C++).
 #pragma once
 
 #include <cstdint>
@@ -61,10 +61,10 @@ struct RayHit {
     float b2 = 0.0f;
 };
 
-// Closest hit with 0 < t < tMax, the CPU twin of traceClosest (same order, same tests).
+// Closest hit with 0 < t < tMax: traceClosest of shaders/shared/bvh_traverse.glsl on the CPU.
 RayHit closestHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org,
                   glm::vec3 dir, float tMax);
-// Any hit with 0 < t < tMax, the CPU twin of traceAny.
+// Any hit with 0 < t < tMax: traceAny of shaders/shared/bvh_traverse.glsl on the CPU.
 bool anyHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org,
             glm::vec3 dir, float tMax);
 

@@ -62,7 +62,7 @@ ImportonMap::ImportonMap(vk::Context& context, const SceneArrays& arrays, const 
     if (settings.k == 0) throw InputError("importance grid: a cell needs at least one importon (k >= 1)");
     const auto start = Clock::now();
     const uint32_t slots = settings.paths * settings.maxDeposits;
-    m_slots = vk::Buffer(context, "importons", VkDeviceSize(slots) * sizeof(gpu::GpuPhoton), vk::kStorageUsage);
+    m_slots = vk::Buffer(context, "importons", VkDeviceSize(slots) * sizeof(gpu::GpuImporton), vk::kStorageUsage);
     const ScenePass trace(context, "importon_trace.comp", buffers, {&m_slots}, sizeof(gpu::ImportonTraceParams));
     gpu::ImportonTraceParams params{};
     params.camera = camera;
@@ -79,14 +79,13 @@ ImportonMap::ImportonMap(vk::Context& context, const SceneArrays& arrays, const 
         vk::computeToHostBarrier(cmd);
     });
 
-    const std::vector<gpu::GpuPhoton> importons = downloadImportons();
+    const std::vector<gpu::GpuImporton> importons = downloadImportons();
     std::vector<glm::vec3> positions;
     std::vector<float> pathImportance;
-    for (const gpu::GpuPhoton& p : importons) {
-        if ((gpu::photonFlags(p) & gpu::kPhotonValid) == 0) continue;
+    for (const gpu::GpuImporton& p : importons) {
+        if ((p.flags & gpu::kImportonValid) == 0) continue;
         positions.push_back(p.position);
-        const float w = gpu::photonRelativePower(p).y;
-        if (w > 0.0f) pathImportance.push_back(w);
+        if (p.pathImportance > 0.0f) pathImportance.push_back(p.pathImportance);
     }
     m_stats.stored = positions.size();
     // The median: 1 / |x - y|^2 makes the mean follow a few importons near corners.
@@ -140,10 +139,10 @@ gpu::ImportanceGridParams ImportonMap::lookupParams(uint32_t requiredFlags, uint
 // Keller & Wald: f is the reciprocal of the least importance that test rays from the camera
 // sense, so p = 1 wherever the camera looks directly. The test rays are the first importon
 // paths' directly seen importons.
-float ImportonMap::estimateImportanceScale(vk::Context& context, const std::vector<gpu::GpuPhoton>& importons) const {
+float ImportonMap::estimateImportanceScale(vk::Context& context, const std::vector<gpu::GpuImporton>& importons) const {
     const uint32_t testSlots = std::min(m_settings.testRays, m_settings.paths) * m_settings.maxDeposits;
     vk::Buffer sensed(context, "importon test rays", VkDeviceSize(testSlots) * sizeof(glm::vec2), vk::kStorageUsage);
-    vk::ComputeKernel lookup(context, "importance_lookup.comp", 3, sizeof(gpu::ImportanceGridParams));
+    vk::ComputeKernel lookup(context, "importon_importance.comp", 3, sizeof(gpu::ImportanceGridParams));
     lookup.bind({&m_table, &m_slots, &sensed});
     gpu::ImportanceGridParams params = lookupParams();
     params.slotCount = testSlots;
@@ -154,7 +153,7 @@ float ImportonMap::estimateImportanceScale(vk::Context& context, const std::vect
     const auto values = sensed.download<glm::vec2>();
     float least = std::numeric_limits<float>::infinity();
     for (uint32_t slot = 0; slot < testSlots; ++slot)
-        if ((gpu::photonFlags(importons[slot]) & gpu::kPhotonPrimary) != 0 && values[slot].x > 0.0f)
+        if ((importons[slot].flags & gpu::kImportonPrimary) != 0 && values[slot].x > 0.0f)
             least = std::min(least, values[slot].x);
     if (!std::isfinite(least))
         throw InputError("importance-driven deposition: the camera sees no surface that stores photons");

@@ -48,12 +48,12 @@ public:
     gpu::ImportanceGridParams lookupParams(uint32_t requiredFlags = 0, uint32_t rejectedFlags = 0) const;
     const ImportonStats& stats() const { return m_stats; }
     uint64_t bytes() const { return m_slots.size() + m_table.size(); }
-    // The importons, slot by slot (empty slots have no kPhotonValid flag).
-    std::vector<gpu::GpuPhoton> downloadImportons() const { return m_slots.download<gpu::GpuPhoton>(); }
+    // The importons, slot by slot (empty slots have no kImportonValid flag).
+    std::vector<gpu::GpuImporton> downloadImportons() const { return m_slots.download<gpu::GpuImporton>(); }
 
 private:
     void buildTable(vk::Context& context);
-    float estimateImportanceScale(vk::Context& context, const std::vector<gpu::GpuPhoton>& importons) const;
+    float estimateImportanceScale(vk::Context& context, const std::vector<gpu::GpuImporton>& importons) const;
 
     ImportonSettings m_settings;
     ImportonStats m_stats;

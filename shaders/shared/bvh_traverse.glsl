@@ -1,8 +1,13 @@
-// GPU BVH traversal (GLSL only; the host twin is closestHit/anyHit in host/bvh/bvh.cpp, which
-// walks the tree in the same order with the same intersect.glsl tests). The including shader
-// declares, before including this file (traceClosest and traceAny wrap traverseBvh):
-//   readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };   // host/bvh: root at 0, children adjacent
-//   readonly buffer Triangles { GpuTriangle triangles[]; }; // in BVH order (Bvh::triangleOrder)
+// BVH traversal, one source for the GPU (traceClosest and traceAny in every kernel) and the host
+// (closestHit and anyHit in host/bvh/bvh.cpp, which tests/bvh_test.cpp checks against brute force
+// over every triangle), so the tests check the shaders' own traversal.
+//
+// The arrays are reached through BVH_NODE(i) and BVH_TRIANGLE(i):
+//  - GLSL: the including shader declares, before including this file,
+//      readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };   // host/bvh: root at 0, children adjacent
+//      readonly buffer Triangles { GpuTriangle triangles[]; }; // in BVH order (Bvh::triangleOrder)
+//  - C++: every function takes a BvhArrays (spans of the same two arrays) as its first argument
+//    (BVH_ARRAYS_PARAM; nothing in GLSL).
 //
 // Ordered depth-first traversal with a per-invocation stack: at an inner node both child boxes
 // are tested, the nearer is visited next and the farther pushed with its entry distance, which is
@@ -10,17 +15,38 @@
 // entries; the host build never makes a tree deeper than kBvhMaxDepth.
 #ifndef VKP_BVH_TRAVERSE_GLSL
 #define VKP_BVH_TRAVERSE_GLSL
-#ifndef __cplusplus
+#include "compat.glsl"
 #include "gpu_types.glsl"
 #include "intersect.glsl"
 #include "bvh_constants.glsl"
+#ifdef __cplusplus
+#include <span>
+#endif
+SHARED_BEGIN
+
+#ifdef __cplusplus
+// The tree (Bvh::nodes) and its triangles in BVH order (gpuTriangles()).
+struct BvhArrays {
+    std::span<const GpuBvhNode> nodes;
+    std::span<const GpuTriangle> triangles;
+};
+#define BVH_ARRAYS_PARAM const BvhArrays& bvhArrays,
+#define BVH_ARRAYS_ARG bvhArrays,
+#define BVH_NODE(i) bvhArrays.nodes[i]
+#define BVH_TRIANGLE(i) bvhArrays.triangles[i]
+#else
+#define BVH_ARRAYS_PARAM
+#define BVH_ARRAYS_ARG
+#define BVH_NODE(i) bvhNodes[i]
+#define BVH_TRIANGLE(i) triangles[i]
+#endif
 
 // Triangle index reported by traceClosest when nothing is hit.
 const uint kBvhNoTriangle = 0xffffffffu;
 
 // A tree over no triangles is a single node with count 0 and leftOrFirst 0: an inner node can
 // never point at index 0 (the root), and no box encodes "empty" for the symmetric slab test.
-bool bvhIsEmptyRoot(GpuBvhNode root) {
+INLINE bool bvhIsEmptyRoot(GpuBvhNode root) {
     return root.count == 0u && root.leftOrFirst == 0u;
 }
 
@@ -28,14 +54,14 @@ bool bvhIsEmptyRoot(GpuBvhNode root) {
 // nearest hit: t, the index into triangles[] and the barycentrics (b1, b2) of v1 and v2; among
 // hits at exactly equal t the first one visited wins. Any-hit mode returns at the first hit
 // found (shadow and visibility rays). On a miss: false, t = tMax, tri = kBvhNoTriangle.
-bool traverseBvh(vec3 org, vec3 dir, float tMax, bool anyHit, out float t, out uint tri, out float b1,
-                 out float b2) {
+INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool anyHit, OUT(float) t, OUT(uint) tri,
+                        OUT(float) b1, OUT(float) b2) {
     t = tMax;
     tri = kBvhNoTriangle;
     b1 = 0.0f;
     b2 = 0.0f;
     vec3 invDir = safeInverseDirection(dir);
-    GpuBvhNode node = bvhNodes[0];
+    GpuBvhNode node = BVH_NODE(0u);
     if (bvhIsEmptyRoot(node) ||
         intersectAabb(org, invDir, node.boundsMin, node.boundsMax, tMax) >= kInfinity) {
         return false;
@@ -47,11 +73,11 @@ bool traverseBvh(vec3 org, vec3 dir, float tMax, bool anyHit, out float t, out u
         if (node.count > 0u) {
             uint end = node.leftOrFirst + node.count;
             for (uint i = node.leftOrFirst; i < end; ++i) {
-                GpuTriangle triangle = triangles[i];
+                GpuTriangle triangle = BVH_TRIANGLE(i);
                 float tCandidate;
                 float b1Candidate;
                 float b2Candidate;
-                if (intersectTriangle(org, dir, triangle.v0.xyz, triangle.v1.xyz, triangle.v2.xyz, t,
+                if (intersectTriangle(org, dir, vec3(triangle.v0), vec3(triangle.v1), vec3(triangle.v2), t,
                                       tCandidate, b1Candidate, b2Candidate)) {
                     t = tCandidate;
                     tri = i;
@@ -62,8 +88,8 @@ bool traverseBvh(vec3 org, vec3 dir, float tMax, bool anyHit, out float t, out u
             }
         } else {
             uint left = node.leftOrFirst;
-            GpuBvhNode leftNode = bvhNodes[left];
-            GpuBvhNode rightNode = bvhNodes[left + 1u];
+            GpuBvhNode leftNode = BVH_NODE(left);
+            GpuBvhNode rightNode = BVH_NODE(left + 1u);
             float entryLeft = intersectAabb(org, invDir, leftNode.boundsMin, leftNode.boundsMax, t);
             float entryRight = intersectAabb(org, invDir, rightNode.boundsMin, rightNode.boundsMax, t);
             bool hitLeft = entryLeft < kInfinity;
@@ -89,7 +115,7 @@ bool traverseBvh(vec3 org, vec3 dir, float tMax, bool anyHit, out float t, out u
         while (sp > 0u && !popped) {
             --sp;
             if (stackEntry[sp] <= t * kAabbExitScale) {
-                node = bvhNodes[stackNode[sp]];
+                node = BVH_NODE(stackNode[sp]);
                 popped = true;
             }
         }
@@ -98,18 +124,23 @@ bool traverseBvh(vec3 org, vec3 dir, float tMax, bool anyHit, out float t, out u
     return tri != kBvhNoTriangle;
 }
 
-bool traceClosest(vec3 org, vec3 dir, float tMax, out float t, out uint tri, out float b1, out float b2) {
-    return traverseBvh(org, dir, tMax, false, t, tri, b1, b2);
+INLINE bool traceClosest(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, OUT(float) t, OUT(uint) tri, OUT(float) b1,
+                         OUT(float) b2) {
+    return traverseBvh(BVH_ARRAYS_ARG org, dir, tMax, false, t, tri, b1, b2);
 }
 
-bool traceAny(vec3 org, vec3 dir, float tMax) {
+INLINE bool traceAny(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax) {
     float t;
     uint tri;
     float b1;
     float b2;
-    return traverseBvh(org, dir, tMax, true, t, tri, b1, b2);
+    return traverseBvh(BVH_ARRAYS_ARG org, dir, tMax, true, t, tri, b1, b2);
 }
 
-#endif
+#undef BVH_ARRAYS_PARAM
+#undef BVH_ARRAYS_ARG
+#undef BVH_NODE
+#undef BVH_TRIANGLE
 
+SHARED_END
 #endif

@@ -3,7 +3,7 @@
 //
 // Rules for shared code: float literals with `f`, only single-component swizzles, assign struct
 // fields instead of constructing structs, no recursion, no bool in buffers, mark every function
-// INLINE and pass out-parameters as INOUT(T).
+// INLINE and pass out-parameters as INOUT(T) (or OUT(T) where GLSL should not copy them in).
 #ifndef VKP_COMPAT_GLSL
 #define VKP_COMPAT_GLSL
 
@@ -13,6 +13,7 @@
 #include <glm/gtc/packing.hpp>
 #define INLINE inline
 #define INOUT(T) T&
+#define OUT(T) T&
 #define INOUT_ARRAY(T, name, N) T name[N]
 #define IN_ARRAY(T, name, N) const T name[N]
 #define SHARED_BEGIN namespace vkp::gpu { using namespace glm;
@@ -21,6 +22,7 @@
 #else
 #define INLINE
 #define INOUT(T) inout T
+#define OUT(T) out T
 #define INOUT_ARRAY(T, name, N) inout T name[N]
 #define IN_ARRAY(T, name, N) T name[N]
 #define SHARED_BEGIN

@@ -107,6 +107,31 @@ const uint kPathFlagNoDirectLightSampling = 1u;  // BSDF sampling only (test/ref
 // --direct raster (host/passes/raster_direct_pass.h) covers the first vertex's direct light of:
 const uint kPathFlagRasterDeltaLights = 2u;  // point, spot and directional lights
 const uint kPathFlagRasterAreaLights = 4u;   // emissive triangles (as point samples)
+
+// --direct raster: the raster pass's term is added to every camera sample.
+INLINE bool rasterDirectLightOn(uint flags) {
+    return (flags & (kPathFlagRasterDeltaLights | kPathFlagRasterAreaLights)) != 0u;
+}
+
+// --direct raster at camera-path vertex `depth` (0: the first surface the camera sees): the light
+// types (bits 1 << kLight*) whose direct light the raster pass adds there, which next-event
+// estimation must skip (directLight's skipTypes) so they are not counted twice.
+INLINE uint rasterCoveredLightTypes(uint flags, uint depth) {
+    uint skip = 0u;
+    if (depth == 0u && (flags & kPathFlagRasterDeltaLights) != 0u)
+        skip |= (1u << kLightPoint) | (1u << kLightSpot) | (1u << kLightDirectional);
+    if (depth == 0u && (flags & kPathFlagRasterAreaLights) != 0u) skip |= 1u << kLightTriangle;
+    return skip;
+}
+
+// --direct raster: emission of an area light found at vertex `depth` by a BSDF sample (not a
+// delta lobe) from the first vertex. The raster term holds all of a covered area light's light
+// at the first vertex, so this emission is dropped instead of MIS-weighted against the skipped
+// next-event estimate. Emission behind delta bounces is not covered and counts.
+INLINE bool rasterCoversEmission(uint flags, uint depth, bool lastDelta) {
+    return depth == 1u && !lastDelta && (flags & kPathFlagRasterAreaLights) != 0u;
+}
+
 // Camera rays through pixel centres, no jitter: the raster term is evaluated there (tests).
 const uint kPathFlagPixelCentres = 8u;
 // Guided path tracer: Russian roulette by the guide's estimate of what the path still brings

@@ -8,6 +8,7 @@
 #include "constants.glsl"
 #include "gpu_types.glsl"
 #include "hash.glsl"
+#include "photon.glsl"
 #include "photon_grid.glsl"
 SHARED_BEGIN
 
@@ -16,14 +17,45 @@ const uint kDepositAll = 0u;         // every photon (Jensen's photon map)
 const uint kDepositImportance = 1u;  // kept with p = min(1, f * importance density) (Keller & Wald)
 const uint kDepositDensity = 2u;     // kept by the ratio of current to required density (Suykens & Willems)
 
-// An importon is stored as a GpuPhoton: the red "power" channel holds its visual importance W
-// (the luminance of the camera path's throughput; every importon path carries 1), the green one
-// its path importance for density control (Suykens & Willems eq. 4 for a path eye -> y -> x:
-// f_r(y) cos(y) cos(x) / |x - y|^2, times the albedo of earlier bounces; 0 where the camera sees
-// the point directly), and kPhotonPrimary marks the importons the camera sees directly.
-
-// Largest finite value a record's half-float channels hold.
+// Largest finite value a half float holds.
 const float kMaxHalfFloat = 65504.0f;
+
+const uint kImportonValid = 1u;    // the slot holds an importon (slots of paths that ended early stay 0)
+const uint kImportonPrimary = 2u;  // the first importon of its path: what the camera sees directly
+                                   // (or through mirror-like bounces); the test rays of f
+
+// One stored importon (importon_trace.comp; read by importance_splat.comp, importon_importance.comp
+// and the host).
+struct GpuImporton {
+    vec3 position;          // world space
+    float importance;       // visual importance W: the luminance of the camera path's throughput
+                            // (every importon path carries 1)
+    float pathImportance;   // Suykens & Willems eq. 4 for a path eye -> y -> x: f_r(y) cos(y) cos(x)
+                            // / |x - y|^2 times the albedo of earlier bounces; 0 without a y
+    uint normal;            // octahedral unit vector (16+16 bits): the shading normal on the side
+                            // the camera path arrived from (the importance grid's normal bin)
+    uint flags;             // kImportonValid | kImportonPrimary
+    uint pad0;
+};
+STATIC_ASSERT_SIZE(GpuImporton, 32)
+
+// Importance values are rounded to half precision, as when importons were GpuPhoton records with
+// them in the half-float power channels: the importance grid, and so deposition, stay as they
+// were measured (docs/importance-deposition.md). Values must be at most kMaxHalfFloat.
+INLINE float roundToHalf(float x) {
+    return unpackHalf2x16(packHalf2x16(vec2(x, 0.0f))).x;
+}
+
+INLINE GpuImporton makeImporton(vec3 position, float importance, float pathImportance, vec3 normal, uint flags) {
+    GpuImporton i;
+    i.position = position;
+    i.importance = roundToHalf(importance);
+    i.pathImportance = roundToHalf(pathImportance);
+    i.normal = encodeOctahedral(normal);
+    i.flags = flags;
+    i.pad0 = 0u;
+    return i;
+}
 
 // Push constants of importon_trace.comp.
 struct ImportonTraceParams {

@@ -1,5 +1,5 @@
-// Ray/triangle and ray/box tests shared by the GPU traversal (bvh_traverse.glsl) and the host BVH
-// (host/bvh/bvh.cpp): the host compile is the reference the GPU must match.
+// Ray/triangle and ray/box tests of the BVH traversal (bvh_traverse.glsl, compiled for the GPU and
+// for the host BVH in host/bvh/bvh.cpp): the host compile is the reference the GPU must match.
 #ifndef VKP_INTERSECT_GLSL
 #define VKP_INTERSECT_GLSL
 #include "compat.glsl"

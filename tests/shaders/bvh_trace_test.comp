@@ -1,6 +1,6 @@
 // GPU side of the BVH test: traces each ray with traceClosest and traceAny
 // (shaders/shared/bvh_traverse.glsl); the host compares with closestHit/anyHit of host/bvh/bvh.h
-// (same tree, same intersect.glsl), which tests/bvh_test.cpp checks against brute force.
+// (the same header compiled as C++), which tests/bvh_test.cpp checks against brute force.
 //
 // Host layouts (std430, all 4-byte scalars):
 //   binding 0  TestRay { vec4 origin (xyz, w = tMax); vec4 direction (xyz, w unused) }  32 B

@@ -1,0 +1,108 @@
+// GLSL-only: one vertex of any path the kernels trace — camera paths (path_tracer.glsl,
+// visible_points.comp, raster_direct.comp), photon paths (photon_trace.comp), importon paths
+// (importon_trace.comp) and final gather rays (final_gather.comp). Every kernel extends its paths
+// the same way:
+//
+//   Ray ray = rayFrom(origin, dir);
+//   PathVertex v;
+//   if (!traceVertex(ray, v)) ...;          // escaped along ray.dir
+//   throughput *= v.transmittance;          // absorption of the medium the ray crossed
+//   ... emission, storing, next-event estimation at v ...
+//   BsdfSample bs = sampleVertexBsdf(v, radiance, u);
+//   spawnRay(v, bs, ray);                   // direction, offset origin, medium after the bounce
+//
+// so what the surface at a hit is lives here once: when alpha masking, normal mapping or a new
+// BSDF arrive, traceVertex (skip masked hits, perturb the shading normal) and sampleVertexBsdf /
+// the BsdfParams it reads change, and every kernel follows.
+#ifndef VKP_PATH_VERTEX_GLSL
+#define VKP_PATH_VERTEX_GLSL
+
+#include "scene_access.glsl"
+
+// A ray between two path vertices and the medium it travels through.
+struct Ray {
+    vec3 origin;
+    vec3 dir;           // unit
+    vec3 mediumSigma;   // Beer-Lambert absorption per unit length of the KHR_materials_volume
+                        // solid the ray is inside (zero outside every solid)
+};
+
+// A ray that starts outside every solid (camera, lights, reflections off a visible point).
+Ray rayFrom(vec3 origin, vec3 dir) {
+    Ray ray;
+    ray.origin = origin;
+    ray.dir = dir;
+    ray.mediumSigma = vec3(0.0f);
+    return ray;
+}
+
+// The surface a ray found, ready for shading: the hit, its material and BSDF, and the shading
+// frame on the side the ray came from. Local directions (wo, BsdfSample.wi) are in that frame.
+struct PathVertex {
+    SurfaceHit hit;
+    GpuMaterial material;
+    BsdfParams bsdf;
+    float distance;       // from the ray's origin (kInfinity when the ray escaped)
+    vec3 transmittance;   // exp(-sigma * distance): what the ray's medium let through
+    vec3 n;               // shading normal on the arrival side (+z of the frame), world space
+    vec3 t;
+    vec3 b;
+    vec3 wo;              // local direction back along the ray, never below the horizon
+};
+
+// The shading frame around n (world space) and the local outgoing direction woWorld in it. An
+// interpolated shading normal can face away from a direction that is above the geometric surface
+// (silhouettes): wo is then treated as grazing rather than as arriving from below.
+void shadingFrame(vec3 n, vec3 woWorld, out vec3 t, out vec3 b, out vec3 wo) {
+    orthonormalBasis(n, t, b);
+    wo = toLocal(woWorld, t, b, n);
+    if (wo.z <= 0.0f) wo.z = 1.0e-4f;
+}
+
+// Follows the ray to the closest surface and sets up the vertex there. Returns false when the
+// ray leaves the scene: v.distance is then kInfinity and the escape direction is ray.dir, where
+// light from an environment will be looked up.
+bool traceVertex(Ray ray, out PathVertex v) {
+    float b1;
+    float b2;
+    uint tri;
+    if (!traceClosest(ray.origin, ray.dir, kInfinity, v.distance, tri, b1, b2)) {
+        v.distance = kInfinity;
+        return false;
+    }
+    v.transmittance = exp(-ray.mediumSigma * v.distance);
+    v.hit = surfaceAt(tri, b1, b2, ray.dir);
+    v.material = materials[v.hit.material];
+    v.bsdf = bsdfParamsAt(v.material, v.hit.uv);
+    v.n = v.hit.frontFace ? v.hit.shadingNormal : -v.hit.shadingNormal;
+    shadingFrame(v.n, -ray.dir, v.t, v.b, v.wo);
+    return true;
+}
+
+// Samples the vertex's BSDF for the next direction (local). `radiance`: camera-path and gather
+// throughput (refraction scales it by eta^2), not photons and importons (shared/bsdf.glsl).
+BsdfSample sampleVertexBsdf(PathVertex v, bool radiance, vec3 u) {
+    return sampleBsdf(v.bsdf, v.wo, v.hit.frontFace, radiance, u);
+}
+
+// The vertex's BSDF (f, without the cosine) towards local wi.
+vec3 evalVertexBsdf(PathVertex v, vec3 wi) {
+    return evalBsdf(v.bsdf, v.wo, wi);
+}
+
+// Solid-angle pdf with which sampleVertexBsdf produces local wi through its non-delta lobes.
+float pdfVertexBsdf(PathVertex v, vec3 wi) {
+    return pdfBsdf(v.bsdf, v.wo, wi);
+}
+
+// Continues the ray from the vertex along the sampled direction: the origin leaves the surface on
+// that side (offsetRayOrigin), and a transmission into or out of a solid with
+// KHR_materials_volume absorption changes the medium (thin-walled surfaces have no inside).
+void spawnRay(PathVertex v, BsdfSample bs, inout Ray ray) {
+    ray.dir = normalize(toWorld(bs.wi, v.t, v.b, v.n));
+    ray.origin = offsetRayOrigin(v.hit.position, v.hit.geometricNormal, ray.dir);
+    if ((bs.lobe & kLobeTransmission) != 0u && (v.material.flags & kMaterialThinWalled) == 0u)
+        ray.mediumSigma = v.hit.frontFace ? v.material.attenuationCoeff : vec3(0.0f);
+}
+
+#endif
