@@ -130,7 +130,7 @@ PhotonMapSettings mapSettings(uint32_t mode, const ImportonMap* importons) {
 // (nothing absorbed yet) and no path importance; later ones carry W <= 1 and the path importance
 // through the importon before them.
 TEST_F(DepositionTest, ImportonRecordsDescribeTheirPaths) {
-    const GpuScene box("cornell-box");
+    const UploadedScene box("cornell-box");
     ImportonSettings settings;
     settings.paths = 4096;
     const ImportonMap map(test::gpu(), box.arrays, box.buffers,
