@@ -293,5 +293,42 @@ TEST(Cli, BadDirectSettingsExitWithTwo) {
     }
 }
 
+// --- output: display settings ----------------------------------------------------------------
+
+std::string exrAttribute(const ExrAttributes& attributes, const std::string& key) {
+    for (const auto& [name, value] : attributes)
+        if (name == key) return value;
+    return "(absent)";
+}
+
+std::string fileBytes(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(Cli, ExposureAndTonemapChangeThePngNotTheExr) {
+    const fs::path dir = tempDir("display");
+    const std::string common = "render " + kBox + " --quiet --spp 2 --width 16 --height 12 --seed 5 ";
+    RunResult r = runVkphoton(common + "-o " + (dir / "a.exr").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    r = runVkphoton(common + "--exposure 2.5 --tonemap clamp -o " + (dir / "b.exr").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    ExrAttributes a, b;
+    const ImageRgb imageA = readExr(dir / "a.exr", &a), imageB = readExr(dir / "b.exr", &b);
+    EXPECT_EQ(imageA.pixels, imageB.pixels);  // linear, whatever the PNG shows
+    EXPECT_EQ(exrAttribute(a, "vkphoton/exposure"), "0");
+    EXPECT_EQ(exrAttribute(a, "vkphoton/tonemap"), "agx");
+    EXPECT_EQ(exrAttribute(b, "vkphoton/exposure"), "2.5");
+    EXPECT_EQ(exrAttribute(b, "vkphoton/tonemap"), "clamp");
+    EXPECT_NE(fileBytes(dir / "a.png"), fileBytes(dir / "b.png"));
+
+    for (const std::string args : {"--exposure nan", "--exposure 100", "--exposure banana", "--tonemap filmic"}) {
+        r = runVkphoton(common + args + " -o " + (dir / "bad.exr").string());
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+        EXPECT_NE(r.output.find(args.substr(0, args.find(' '))), std::string::npos) << args << "\n" << r.output;
+    }
+    EXPECT_FALSE(fs::exists(dir / "bad.exr"));
+}
+
 }  // namespace
 }  // namespace vkp

@@ -75,6 +75,15 @@ int runCommandLine(int argc, const char* const* argv) {
     addDeviceOptions(*renderCmd, render.device, render.validate);
     renderCmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
     renderCmd->add_flag("--quiet", render.quiet, "No progress output");
+    const auto views = viewTransformChoices();
+    renderCmd->add_option("--tonemap", render.display.view,
+                          "The PNG's view transform: agx (Blender 4's AgX), aces-fit (Narkowicz's ACES fit), clamp "
+                          "(clip to [0, 1]); the EXR stays linear")
+        ->transform(oneOf(views))
+        ->option_text(choiceText(views, render.display.view));
+    renderCmd->add_option("--exposure", render.display.exposureEv,
+                          "Exposure of the PNG in stops: the radiance is scaled by 2^EV before the view transform")
+        ->capture_default_str();
     std::string integratorHelp = "The integrator:";
     std::string integratorChoices;
     for (const IntegratorKind& kind : integratorKinds()) {
@@ -134,6 +143,7 @@ int runCommandLine(int argc, const char* const* argv) {
         if (renderCmd->parsed()) {
             render.frame.nextEventEstimation = !bsdfOnly;
             render.frame.check();
+            render.display.check();
             const IntegratorConfig& config = *configs.at(integratorName);
             config.check();
             return runRender(render, config);

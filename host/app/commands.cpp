@@ -102,9 +102,12 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
         {"vkphoton/totalSeconds", fmt::format("{:.3f}", totalSeconds)},
         {"vkphoton/partial", partial ? "true" : "false"},
         {"vkphoton/stopReason", stopReason},
+        // The PNG's display settings; the EXR's pixels are linear radiance, untouched by them.
+        {"vkphoton/exposure", fmt::format("{}", options.display.exposureEv)},
+        {"vkphoton/tonemap", viewTransformName(options.display.view)},
     };
     writeExr(exrPath, result.image, attributes);
-    writePng(pngPath, result.image);
+    writePng(pngPath, result.image, options.display);
     if (!options.statsJson.empty()) {
         nlohmann::json json = stats.toJson();
         json["meanRadiance"] = meanRadiance(result.image);
@@ -182,7 +185,7 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
     const PathGuide guide(gpuScene, settings, options.seed);
     const GuideGridAtPixel grid = guideGridAtPixel(scene, gpuScene.arrays(), guide, settings, camera, options.width,
                                                    options.height, options.x, options.y);
-    writePng(output, guideGridImage(grid));
+    writePng(output, guideGridImage(grid), DisplaySettings{ViewTransform::Clamp});  // densities scaled to [0, 1]
     if (!options.quiet) {
         fmt::print("pixel ({}, {}) sees ({:.3f}, {:.3f}, {:.3f}), normal ({:.2f}, {:.2f}, {:.2f}); {} photons\n", options.x,
                    options.y, grid.position.x, grid.position.y, grid.position.z, grid.normal.x, grid.normal.y,

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "image/view_transform.h"
 #include "render/deposit_options.h"
 #include "render/frame.h"
 #include "render/integrator_registry.h"
@@ -16,6 +17,7 @@ struct RenderCommandOptions {
     std::filesystem::path output;       // .exr; empty: out/<scene name>.exr
     std::filesystem::path statsJson;    // empty: none
     FrameSettings frame;
+    DisplaySettings display;            // the PNG's exposure and view transform
     std::string device;
     bool validate = false;
     bool quiet = false;
