@@ -293,7 +293,7 @@ TEST(Cli, BadDirectSettingsExitWithTwo) {
     }
 }
 
-// --- output: display settings ----------------------------------------------------------------
+// --- output: display settings, view override --------------------------------------------------------
 
 std::string exrAttribute(const ExrAttributes& attributes, const std::string& key) {
     for (const auto& [name, value] : attributes)
@@ -328,6 +328,28 @@ TEST(Cli, ExposureAndTonemapChangeThePngNotTheExr) {
         EXPECT_NE(r.output.find(args.substr(0, args.find(' '))), std::string::npos) << args << "\n" << r.output;
     }
     EXPECT_FALSE(fs::exists(dir / "bad.exr"));
+}
+
+TEST(Cli, ViewOverrideIsCheckedByEveryCommandThatHasACamera) {
+    const fs::path dir = tempDir("view");
+    const std::pair<std::string, std::string> bad[] = {
+        {"--look-from nan,0,0", "--look-from"}, {"--look-from=-1,inf,0", "--look-from"}, {"--look-at 1,2", "--look-at"},
+        {"--look-at 1,2,3,4", "--look-at"},     {"--fov 0", "--fov"},                    {"--fov 180", "--fov"},
+        {"--fov nan", "--fov"},                 {"--look-from 1,2,3 --look-at 1,2,3", "--look-from"},
+    };
+    for (const std::string& command : {"render " + kBox + " -o " + (dir / "x.exr").string(),
+                                      "photons " + kBox + " --photons 100 -o " + (dir / "x.ply").string(),
+                                      "guide-grid " + kBox + " --pixel 1 1 -o " + (dir / "x.png").string()})
+        for (const auto& [args, flag] : bad) {
+            const RunResult r = runVkphoton(command + " --quiet " + args);
+            EXPECT_EQ(r.exitCode, 2) << command << " " << args << "\n" << r.output;
+            EXPECT_NE(r.output.find(flag), std::string::npos) << command << " " << args << "\n" << r.output;
+        }
+    EXPECT_TRUE(fs::is_empty(dir));
+    // Negative coordinates parse as values, not as options.
+    const RunResult r = runVkphoton("render " + kBox + " --quiet --spp 1 --width 8 --height 8 --look-from -0.5,1.5,3 "
+                                    "--look-at 0,1,-1 --fov 55 -o " + (dir / "ok.exr").string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
 }
 
 }  // namespace

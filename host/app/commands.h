@@ -37,6 +37,7 @@ struct PhotonsCommandOptions {
     }();
     uint32_t width = 512, height = 512; // the image the importons' camera looks at
     int cameraIndex = -1;
+    ViewOverride view;
     std::string device;
     bool validate = false;
     bool quiet = false;
@@ -50,6 +51,7 @@ struct GuideGridCommandOptions {
     uint32_t x = 0, y = 0;              // the pixel
     uint32_t width = 512, height = 512;
     int cameraIndex = -1;
+    ViewOverride view;
     uint32_t seed = 0;
     GuideSettings guide;
     std::string device;

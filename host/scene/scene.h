@@ -89,7 +89,4 @@ struct Scene {
     size_t droppedDegenerateTriangles = 0;
 };
 
-// A camera framing the whole scene from its +Z side, used when the file has none.
-Camera defaultCamera(const Bounds& bounds);
-
 }  // namespace vkp
