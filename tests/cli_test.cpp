@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "image/exr.h"
+#include "image/image.h"
 
 namespace vkp {
 namespace {
@@ -24,8 +25,10 @@ struct RunResult {
     std::string output;  // stdout and stderr
 };
 
-RunResult runVkphoton(const std::string& args) {
-    const std::string command = std::string(VKPHOTON_BINARY) + " " + args + " 2>&1";
+// `environment`: assignments put before the command ("VK_ICD_FILENAMES=...").
+RunResult runVkphoton(const std::string& args, const std::string& environment = "") {
+    const std::string command = (environment.empty() ? "" : "env " + environment + " ") + std::string(VKPHOTON_BINARY) +
+                                " " + args + " 2>&1";
     RunResult result;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;
@@ -47,7 +50,7 @@ fs::path tempDir(const std::string& name) {
 const std::string kBox = std::string(VKPHOTON_SCENES) + "/cornell-box.gltf";
 
 TEST(Cli, HelpOnEveryCommand) {
-    for (const char* args : {"--help", "render --help", "photons --help", "devices --help"}) {
+    for (const char* args : {"--help", "render --help", "photons --help", "devices --help", "info --help"}) {
         const RunResult r = runVkphoton(args);
         EXPECT_EQ(r.exitCode, 0) << args << "\n" << r.output;
         EXPECT_NE(r.output.find("Usage"), std::string::npos) << args;
@@ -293,7 +296,7 @@ TEST(Cli, BadDirectSettingsExitWithTwo) {
     }
 }
 
-// --- output: display settings, view override --------------------------------------------------------
+// --- output: display settings, framing, view override, info ---------------------------------
 
 std::string exrAttribute(const ExrAttributes& attributes, const std::string& key) {
     for (const auto& [name, value] : attributes)
@@ -350,6 +353,47 @@ TEST(Cli, ViewOverrideIsCheckedByEveryCommandThatHasACamera) {
     const RunResult r = runVkphoton("render " + kBox + " --quiet --spp 1 --width 8 --height 8 --look-from -0.5,1.5,3 "
                                     "--look-at 0,1,-1 --fov 55 -o " + (dir / "ok.exr").string());
     EXPECT_EQ(r.exitCode, 0) << r.output;
+}
+
+const std::string kAnnotated = std::string(VKPHOTON_TEST_DATA) + "/info/annotated.gltf";
+
+TEST(Cli, ACameraLessSceneIsFramed) {
+    const fs::path dir = tempDir("framing");
+    const RunResult r = runVkphoton("render " + kAnnotated + " --quiet --spp 4 --width 24 --height 16 -o " +
+                                    (dir / "a.exr").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const ImageRgb image = readExr(dir / "a.exr");
+    // The emissive triangle faces +Z: from the three-quarter view it is seen, so the image is lit.
+    EXPECT_GT(meanValue(image), 0.0);
+}
+
+TEST(Cli, InfoDescribesTheSceneWithoutAVulkanDevice) {
+    const std::string noVulkan = "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json";
+    RunResult r = runVkphoton("info " + kAnnotated, noVulkan);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* expected : {"triangles    2", "materials    2", "glowing coat (emissive)", "1 point, 1 spot, 0 directional",
+                                 "cameras      0", "animations   2 (3 channels): not played", "nodes        4",
+                                 "KHR_texture_transform", "textures     1, 8 bytes decoded", "EXT_vkphoton_test_unknown"})
+        EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+
+    r = runVkphoton("info --json " + kAnnotated, noVulkan);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const size_t start = r.output.find('{');  // after the loader's warning about KHR_texture_transform
+    ASSERT_NE(start, std::string::npos) << r.output;
+    const nlohmann::json j = nlohmann::json::parse(r.output.substr(start));
+    EXPECT_EQ(j["triangles"], 2);
+    EXPECT_EQ(j["animations"]["channels"], 3);
+    EXPECT_EQ(j["extensions"].size(), 5u);
+
+    r = runVkphoton("info " + kBox, noVulkan);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("KHR_materials_emissive_strength"), std::string::npos) << r.output;
+    for (const std::string& bad : {std::string("/nonexistent/scene.gltf"), std::string(VKPHOTON_TEST_DATA) + "/bad/accessor_missing.gltf"}) {
+        r = runVkphoton("info " + bad, noVulkan);
+        EXPECT_EQ(r.exitCode, 2) << bad << "\n" << r.output;
+        EXPECT_NE(r.output.find(bad), std::string::npos) << r.output;
+    }
+    EXPECT_EQ(runVkphoton("info").exitCode, 2);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.h"
+#include "app/info_command.h"
 #include "util/cli_choice.h"
 #include "util/errors.h"
 
@@ -174,6 +175,12 @@ int runCommandLine(int argc, const char* const* argv) {
     addDeviceOptions(*guideCmd, guideGrid.device, guideGrid.validate);
     guideCmd->add_flag("--quiet", guideGrid.quiet, "No output but the file");
 
+    InfoCommandOptions info;
+    CLI::App* infoCmd = app.add_subcommand(
+        "info", "Describe a glTF scene: geometry, materials, lights, cameras, animations, extensions, textures");
+    infoCmd->add_option("scene", info.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+    infoCmd->add_flag("--json", info.json, "Print the report as JSON");
+
     app.add_subcommand("devices", "List the Vulkan devices");
 
     try {
@@ -202,6 +209,7 @@ int runCommandLine(int argc, const char* const* argv) {
             guideGrid.check();
             return runGuideGrid(guideGrid);
         }
+        if (infoCmd->parsed()) return runInfo(info);
         return runDevices();
     } catch (const InputError& e) {
         fmt::print(stderr, "error: {}\n", e.what());
