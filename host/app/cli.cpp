@@ -79,18 +79,21 @@ void addViewOptions(CLI::App& cmd, ViewOverride& view) {
         [](std::string& input) -> std::string {
             return parsePoint(input) ? "" : "'" + input + "' is not three numbers X,Y,Z";
         },
-        "X,Y,Z");
+        "");
     cmd.add_option_function<std::string>(
            "--look-from", [&view](const std::string& text) { view.lookFrom = parsePoint(text); },
            "Camera position X,Y,Z (world units): overrides the camera's; it looks at --look-at, else at the scene's centre")
-        ->check(point);
+        ->check(point)
+        ->type_name("X,Y,Z");
     cmd.add_option_function<std::string>(
            "--look-at", [&view](const std::string& text) { view.lookAt = parsePoint(text); },
            "Point X,Y,Z the camera looks at (world units), from --look-from or where the camera stands")
-        ->check(point);
+        ->check(point)
+        ->type_name("X,Y,Z");
     cmd.add_option_function<float>("--fov", [&view](float degrees) { view.fovDegrees = degrees; },
                                    "Vertical field of view in degrees, 0 < DEG < 180 [default: the camera's; 40 for the "
-                                   "default framing]");
+                                   "default framing]")
+        ->type_name("DEG");
 }
 
 void addDeviceOptions(CLI::App& cmd, std::string& device, bool& validate) {
