@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "image/exr.h"
+#include "image/image.h"
 
 namespace vkp {
 namespace {
@@ -24,8 +25,10 @@ struct RunResult {
     std::string output;  // stdout and stderr
 };
 
-RunResult runVkphoton(const std::string& args) {
-    const std::string command = std::string(VKPHOTON_BINARY) + " " + args + " 2>&1";
+// `environment`: assignments put before the command ("VK_ICD_FILENAMES=...").
+RunResult runVkphoton(const std::string& args, const std::string& environment = "") {
+    const std::string command = (environment.empty() ? "" : "env " + environment + " ") + std::string(VKPHOTON_BINARY) +
+                                " " + args + " 2>&1";
     RunResult result;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;
@@ -47,7 +50,7 @@ fs::path tempDir(const std::string& name) {
 const std::string kBox = std::string(VKPHOTON_SCENES) + "/cornell-box.gltf";
 
 TEST(Cli, HelpOnEveryCommand) {
-    for (const char* args : {"--help", "render --help", "photons --help", "devices --help"}) {
+    for (const char* args : {"--help", "render --help", "photons --help", "devices --help", "info --help"}) {
         const RunResult r = runVkphoton(args);
         EXPECT_EQ(r.exitCode, 0) << args << "\n" << r.output;
         EXPECT_NE(r.output.find("Usage"), std::string::npos) << args;
@@ -291,6 +294,106 @@ TEST(Cli, BadDirectSettingsExitWithTwo) {
         EXPECT_TRUE(r.output.find("--direct") != std::string::npos ||
                     r.output.find("--area-light-samples") != std::string::npos) << args << "\n" << r.output;
     }
+}
+
+// --- output: display settings, framing, view override, info ---------------------------------
+
+std::string exrAttribute(const ExrAttributes& attributes, const std::string& key) {
+    for (const auto& [name, value] : attributes)
+        if (name == key) return value;
+    return "(absent)";
+}
+
+std::string fileBytes(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(Cli, ExposureAndTonemapChangeThePngNotTheExr) {
+    const fs::path dir = tempDir("display");
+    const std::string common = "render " + kBox + " --quiet --spp 2 --width 16 --height 12 --seed 5 ";
+    RunResult r = runVkphoton(common + "-o " + (dir / "a.exr").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    r = runVkphoton(common + "--exposure 2.5 --tonemap clamp -o " + (dir / "b.exr").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    ExrAttributes a, b;
+    const ImageRgb imageA = readExr(dir / "a.exr", &a), imageB = readExr(dir / "b.exr", &b);
+    EXPECT_EQ(imageA.pixels, imageB.pixels);  // linear, whatever the PNG shows
+    EXPECT_EQ(exrAttribute(a, "vkphoton/exposure"), "0");
+    EXPECT_EQ(exrAttribute(a, "vkphoton/tonemap"), "agx");
+    EXPECT_EQ(exrAttribute(b, "vkphoton/exposure"), "2.5");
+    EXPECT_EQ(exrAttribute(b, "vkphoton/tonemap"), "clamp");
+    EXPECT_NE(fileBytes(dir / "a.png"), fileBytes(dir / "b.png"));
+
+    for (const std::string args : {"--exposure nan", "--exposure 100", "--exposure banana", "--tonemap filmic"}) {
+        r = runVkphoton(common + args + " -o " + (dir / "bad.exr").string());
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+        EXPECT_NE(r.output.find(args.substr(0, args.find(' '))), std::string::npos) << args << "\n" << r.output;
+    }
+    EXPECT_FALSE(fs::exists(dir / "bad.exr"));
+}
+
+TEST(Cli, ViewOverrideIsCheckedByEveryCommandThatHasACamera) {
+    const fs::path dir = tempDir("view");
+    const std::pair<std::string, std::string> bad[] = {
+        {"--look-from nan,0,0", "--look-from"}, {"--look-from=-1,inf,0", "--look-from"}, {"--look-at 1,2", "--look-at"},
+        {"--look-at 1,2,3,4", "--look-at"},     {"--fov 0", "--fov"},                    {"--fov 180", "--fov"},
+        {"--fov nan", "--fov"},                 {"--look-from 1,2,3 --look-at 1,2,3", "--look-from"},
+    };
+    for (const std::string& command : {"render " + kBox + " -o " + (dir / "x.exr").string(),
+                                      "photons " + kBox + " --photons 100 -o " + (dir / "x.ply").string(),
+                                      "guide-grid " + kBox + " --pixel 1 1 -o " + (dir / "x.png").string()})
+        for (const auto& [args, flag] : bad) {
+            const RunResult r = runVkphoton(command + " --quiet " + args);
+            EXPECT_EQ(r.exitCode, 2) << command << " " << args << "\n" << r.output;
+            EXPECT_NE(r.output.find(flag), std::string::npos) << command << " " << args << "\n" << r.output;
+        }
+    EXPECT_TRUE(fs::is_empty(dir));
+    // Negative coordinates parse as values, not as options.
+    const RunResult r = runVkphoton("render " + kBox + " --quiet --spp 1 --width 8 --height 8 --look-from -0.5,1.5,3 "
+                                    "--look-at 0,1,-1 --fov 55 -o " + (dir / "ok.exr").string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+}
+
+const std::string kAnnotated = std::string(VKPHOTON_TEST_DATA) + "/info/annotated.gltf";
+
+TEST(Cli, ACameraLessSceneIsFramed) {
+    const fs::path dir = tempDir("framing");
+    const RunResult r = runVkphoton("render " + kAnnotated + " --quiet --spp 4 --width 24 --height 16 -o " +
+                                    (dir / "a.exr").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const ImageRgb image = readExr(dir / "a.exr");
+    // The emissive triangle faces +Z: from the three-quarter view it is seen, so the image is lit.
+    EXPECT_GT(meanValue(image), 0.0);
+}
+
+TEST(Cli, InfoDescribesTheSceneWithoutAVulkanDevice) {
+    const std::string noVulkan = "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json";
+    RunResult r = runVkphoton("info " + kAnnotated, noVulkan);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* expected : {"triangles    2", "materials    2", "glowing coat (emissive)", "1 point, 1 spot, 0 directional",
+                                 "cameras      0", "animations   2 (3 channels): not played", "nodes        4",
+                                 "KHR_texture_transform", "textures     1, 8 bytes decoded", "EXT_vkphoton_test_unknown"})
+        EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
+
+    r = runVkphoton("info --json " + kAnnotated, noVulkan);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const size_t start = r.output.find('{');  // after the loader's warning about KHR_texture_transform
+    ASSERT_NE(start, std::string::npos) << r.output;
+    const nlohmann::json j = nlohmann::json::parse(r.output.substr(start));
+    EXPECT_EQ(j["triangles"], 2);
+    EXPECT_EQ(j["animations"]["channels"], 3);
+    EXPECT_EQ(j["extensions"].size(), 5u);
+
+    r = runVkphoton("info " + kBox, noVulkan);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("KHR_materials_emissive_strength"), std::string::npos) << r.output;
+    for (const std::string& bad : {std::string("/nonexistent/scene.gltf"), std::string(VKPHOTON_TEST_DATA) + "/bad/accessor_missing.gltf"}) {
+        r = runVkphoton("info " + bad, noVulkan);
+        EXPECT_EQ(r.exitCode, 2) << bad << "\n" << r.output;
+        EXPECT_NE(r.output.find(bad), std::string::npos) << r.output;
+    }
+    EXPECT_EQ(runVkphoton("info").exitCode, 2);
 }
 
 }  // namespace

@@ -582,26 +582,6 @@ TEST_F(GltfLoader, LimitsAreEnforced) {
     expectRefused([](GltfLimits& l) { l.maxFileBytes = 100; }, "bytes is more than the 100-byte limit");
 }
 
-TEST(DefaultCamera, SeesEveryCornerOfTheBounds) {
-    for (const Bounds& b : {Bounds{glm::vec3(-1, 0, -1), glm::vec3(1, 2, 1)}, Bounds{glm::vec3(0), glm::vec3(10, 1, 1)},
-                            Bounds{glm::vec3(-3, -20, 5), glm::vec3(3, 1, 6)}, Bounds{}}) {
-        const Camera c = defaultCamera(b);
-        EXPECT_EQ(c.forward, glm::vec3(0, 0, -1));
-        const Bounds box = b.empty() ? Bounds{glm::vec3(-0.5f), glm::vec3(0.5f)} : b;
-        EXPECT_GT(c.position.z, box.max.z);  // outside the box, on its +z side
-        const float tanHalf = std::tan(0.5f * c.yfov);
-        for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 p(corner & 1 ? box.max.x : box.min.x, corner & 2 ? box.max.y : box.min.y,
-                              corner & 4 ? box.max.z : box.min.z);
-            const glm::vec3 d = p - c.position;
-            const float depth = -d.z;
-            ASSERT_GT(depth, 0.0f);
-            EXPECT_LE(std::abs(d.y) / depth, tanHalf);  // inside the vertical field of view
-            EXPECT_LE(std::abs(d.x) / depth, tanHalf);  // and the horizontal one for aspect >= 1
-        }
-    }
-}
-
 #ifdef VKPHOTON_SCENES
 TEST(ShippedScenes, AllLoad) {
     int scenes = 0;

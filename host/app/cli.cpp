@@ -1,6 +1,7 @@
 #include "app/cli.h"
 
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.h"
+#include "app/info_command.h"
 #include "util/cli_choice.h"
 #include "util/errors.h"
 
@@ -51,6 +53,49 @@ void addFrameOptions(CLI::App& cmd, FrameSettings& frame, bool& bsdfOnly) {
         ->capture_default_str();
 }
 
+// "X,Y,Z": three comma-separated numbers (finite or not: ViewOverride::check names the flag).
+std::optional<glm::vec3> parsePoint(const std::string& text) {
+    glm::vec3 p;
+    size_t start = 0;
+    for (int k = 0; k < 3; ++k) {
+        const size_t end = k < 2 ? text.find(',', start) : text.size();
+        if (end == std::string::npos) return std::nullopt;
+        const std::string part = text.substr(start, end - start);
+        size_t used = 0;
+        try {
+            p[k] = std::stof(part, &used);
+        } catch (const std::exception&) {
+            return std::nullopt;
+        }
+        if (used != part.size()) return std::nullopt;
+        start = end + 1;
+    }
+    return p;
+}
+
+// --look-from, --look-at, --fov, for every command that resolves a camera.
+void addViewOptions(CLI::App& cmd, ViewOverride& view) {
+    const CLI::Validator point(
+        [](std::string& input) -> std::string {
+            return parsePoint(input) ? "" : "'" + input + "' is not three numbers X,Y,Z";
+        },
+        "");
+    cmd.add_option_function<std::string>(
+           "--look-from", [&view](const std::string& text) { view.lookFrom = parsePoint(text); },
+           "Camera position X,Y,Z (world units): overrides the camera's; it looks at --look-at, else at the scene's centre")
+        ->check(point)
+        ->type_name("X,Y,Z");
+    cmd.add_option_function<std::string>(
+           "--look-at", [&view](const std::string& text) { view.lookAt = parsePoint(text); },
+           "Point X,Y,Z the camera looks at (world units), from --look-from or where the camera stands")
+        ->check(point)
+        ->type_name("X,Y,Z");
+    cmd.add_option_function<float>("--fov", [&view](float degrees) { view.fovDegrees = degrees; },
+                                   "Vertical field of view in degrees, 0 < DEG < 180 [default: the camera's; 40 for the "
+                                   "default framing]")
+        ->type_name("DEG");
+}
+
 void addDeviceOptions(CLI::App& cmd, std::string& device, bool& validate) {
     cmd.add_option("--device", device, "Vulkan device: index or name substring (see `vkphoton devices`)");
     cmd.add_flag("--validate", validate, "Enable the Khronos validation layer; any message is an error");
@@ -72,9 +117,19 @@ int runCommandLine(int argc, const char* const* argv) {
     renderCmd->add_option("-o,--output", render.output,
                           "Output EXR path; a PNG is written beside it [default: out/SCENE.exr]");
     addFrameOptions(*renderCmd, render.frame, bsdfOnly);
+    addViewOptions(*renderCmd, render.frame.view);
     addDeviceOptions(*renderCmd, render.device, render.validate);
     renderCmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
     renderCmd->add_flag("--quiet", render.quiet, "No progress output");
+    const auto views = viewTransformChoices();
+    renderCmd->add_option("--tonemap", render.display.view,
+                          "The PNG's view transform: agx (Blender 4's AgX), aces-fit (Narkowicz's ACES fit), clamp "
+                          "(clip to [0, 1]); the EXR stays linear")
+        ->transform(oneOf(views))
+        ->option_text(choiceText(views, render.display.view));
+    renderCmd->add_option("--exposure", render.display.exposureEv,
+                          "Exposure of the PNG in stops: the radiance is scaled by 2^EV before the view transform")
+        ->capture_default_str();
     std::string integratorHelp = "The integrator:";
     std::string integratorChoices;
     for (const IntegratorKind& kind : integratorKinds()) {
@@ -103,6 +158,7 @@ int runCommandLine(int argc, const char* const* argv) {
         ->capture_default_str();
     photonsCmd->add_option("--height", photons.height, "Height of that image")->capture_default_str();
     photonsCmd->add_option("--camera", photons.cameraIndex, "Scene camera index for the importons");
+    addViewOptions(*photonsCmd, photons.view);
     addDeviceOptions(*photonsCmd, photons.device, photons.validate);
     photonsCmd->add_flag("--quiet", photons.quiet, "No summary output");
 
@@ -116,10 +172,17 @@ int runCommandLine(int argc, const char* const* argv) {
     guideCmd->add_option("--width", guideGrid.width, "Image width the pixel belongs to")->capture_default_str();
     guideCmd->add_option("--height", guideGrid.height, "Image height the pixel belongs to")->capture_default_str();
     guideCmd->add_option("--camera", guideGrid.cameraIndex, "Scene camera index");
+    addViewOptions(*guideCmd, guideGrid.view);
     guideCmd->add_option("--seed", guideGrid.seed, "Random seed")->capture_default_str();
     guideGrid.guide.addOptions(*guideCmd, false);
     addDeviceOptions(*guideCmd, guideGrid.device, guideGrid.validate);
     guideCmd->add_flag("--quiet", guideGrid.quiet, "No output but the file");
+
+    InfoCommandOptions info;
+    CLI::App* infoCmd = app.add_subcommand(
+        "info", "Describe a glTF scene: geometry, materials, lights, cameras, animations, extensions, textures");
+    infoCmd->add_option("scene", info.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+    infoCmd->add_flag("--json", info.json, "Print the report as JSON");
 
     app.add_subcommand("devices", "List the Vulkan devices");
 
@@ -134,6 +197,7 @@ int runCommandLine(int argc, const char* const* argv) {
         if (renderCmd->parsed()) {
             render.frame.nextEventEstimation = !bsdfOnly;
             render.frame.check();
+            render.display.check();
             const IntegratorConfig& config = *configs.at(integratorName);
             config.check();
             return runRender(render, config);
@@ -148,6 +212,7 @@ int runCommandLine(int argc, const char* const* argv) {
             guideGrid.check();
             return runGuideGrid(guideGrid);
         }
+        if (infoCmd->parsed()) return runInfo(info);
         return runDevices();
     } catch (const InputError& e) {
         fmt::print(stderr, "error: {}\n", e.what());

@@ -1,5 +1,5 @@
-// The vkphoton command line (CLI11): `render`, `photons`, `guide-grid` and `devices`. The render
-// command's --integrator choices and option groups come from the integrator registry
+// The vkphoton command line (CLI11): `render`, `photons`, `guide-grid`, `info` and `devices`.
+// The render command's --integrator choices and option groups come from the integrator registry
 // (render/integrator_registry.h). Exit codes: 0 ok, 1 runtime failure, 2 bad usage or bad input,
 // 130 interrupted.
 #pragma once

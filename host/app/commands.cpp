@@ -39,12 +39,14 @@ void PhotonsCommandOptions::check() const {
     checkRange("--max-deposits", maxDeposits, 1u, 64u);
     checkRange("--width", width, 1u, 16384u);
     checkRange("--height", height, 1u, 16384u);
+    view.check();
     deposit.check();
 }
 
 void GuideGridCommandOptions::check() const {
     checkRange("--width", width, 1u, 16384u);
     checkRange("--height", height, 1u, 16384u);
+    view.check();
     guide.check();
 }
 
@@ -62,7 +64,8 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
         fmt::print(stderr, "warning: {}: dropped {} degenerate triangle(s)\n", options.scene.string(),
                    scene.droppedDegenerateTriangles);
     // Validate the camera choice before the expensive set-up.
-    chooseCamera(scene, options.frame.cameraIndex);
+    chooseCamera(scene, options.frame.cameraIndex, float(options.frame.width) / float(options.frame.height),
+                 options.frame.view);
 
     vk::Context context({options.validate, options.device});
     if (!options.quiet)
@@ -102,9 +105,12 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
         {"vkphoton/totalSeconds", fmt::format("{:.3f}", totalSeconds)},
         {"vkphoton/partial", partial ? "true" : "false"},
         {"vkphoton/stopReason", stopReason},
+        // The PNG's display settings; the EXR's pixels are linear radiance, untouched by them.
+        {"vkphoton/exposure", fmt::format("{}", options.display.exposureEv)},
+        {"vkphoton/tonemap", viewTransformName(options.display.view)},
     };
     writeExr(exrPath, result.image, attributes);
-    writePng(pngPath, result.image);
+    writePng(pngPath, result.image, options.display);
     if (!options.statsJson.empty()) {
         nlohmann::json json = stats.toJson();
         json["meanRadiance"] = meanRadiance(result.image);
@@ -132,6 +138,7 @@ int runPhotons(const PhotonsCommandOptions& options) {
     frameSettings.width = options.width;
     frameSettings.height = options.height;
     frameSettings.cameraIndex = options.cameraIndex;
+    frameSettings.view = options.view;
     frameSettings.seed = options.seed;
     const Frame frame = makeFrame(scene, frameSettings);
     vk::Context context({options.validate, options.device});
@@ -174,7 +181,8 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
     if (output.extension() != ".png")
         throw InputError(fmt::format("-o {}: the guiding grid is written as .png", output.string()));
     const Scene scene = loadGltf(options.scene);
-    const Camera camera = chooseCamera(scene, options.cameraIndex);
+    const Camera camera =
+        chooseCamera(scene, options.cameraIndex, float(options.width) / float(options.height), options.view);
     vk::Context context({options.validate, options.device});
     const GpuScene gpuScene(context, scene);
     GuideSettings settings = options.guide;
@@ -182,7 +190,7 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
     const PathGuide guide(gpuScene, settings, options.seed);
     const GuideGridAtPixel grid = guideGridAtPixel(scene, gpuScene.arrays(), guide, settings, camera, options.width,
                                                    options.height, options.x, options.y);
-    writePng(output, guideGridImage(grid));
+    writePng(output, guideGridImage(grid), DisplaySettings{ViewTransform::Clamp});  // densities scaled to [0, 1]
     if (!options.quiet) {
         fmt::print("pixel ({}, {}) sees ({:.3f}, {:.3f}, {:.3f}), normal ({:.2f}, {:.2f}, {:.2f}); {} photons\n", options.x,
                    options.y, grid.position.x, grid.position.y, grid.position.z, grid.normal.x, grid.normal.y,

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "image/view_transform.h"
 #include "render/deposit_options.h"
 #include "render/frame.h"
 #include "render/integrator_registry.h"
@@ -16,6 +17,7 @@ struct RenderCommandOptions {
     std::filesystem::path output;       // .exr; empty: out/<scene name>.exr
     std::filesystem::path statsJson;    // empty: none
     FrameSettings frame;
+    DisplaySettings display;            // the PNG's exposure and view transform
     std::string device;
     bool validate = false;
     bool quiet = false;
@@ -35,6 +37,7 @@ struct PhotonsCommandOptions {
     }();
     uint32_t width = 512, height = 512; // the image the importons' camera looks at
     int cameraIndex = -1;
+    ViewOverride view;
     std::string device;
     bool validate = false;
     bool quiet = false;
@@ -48,6 +51,7 @@ struct GuideGridCommandOptions {
     uint32_t x = 0, y = 0;              // the pixel
     uint32_t width = 512, height = 512;
     int cameraIndex = -1;
+    ViewOverride view;
     uint32_t seed = 0;
     GuideSettings guide;
     std::string device;

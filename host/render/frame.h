@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "scene/scene.h"
 #include "shared/gpu_types.glsl"
@@ -17,6 +18,20 @@ enum class DirectLight {
     Raster,  // stencil shadow volumes + lighting pass (render/raster_direct.h)
 };
 
+// --look-from, --look-at, --fov: changes to whichever camera --camera picks (a file camera or
+// the default framing). --look-from alone looks at the centre of the scene's bounds; --look-at
+// alone turns the camera where it stands; --fov alone keeps position and direction.
+struct ViewOverride {
+    std::optional<glm::vec3> lookFrom;   // world position
+    std::optional<glm::vec3> lookAt;     // world position
+    std::optional<float> fovDegrees;     // vertical field of view, (0, 180)
+
+    bool empty() const { return !lookFrom && !lookAt && !fovDegrees; }
+    // Throws InputError naming the flag: coordinates not finite, --look-from equal to
+    // --look-at, a field of view outside (0, 180) degrees or NaN.
+    void check() const;
+};
+
 struct FrameSettings {
     uint32_t width = 512;
     uint32_t height = 512;
@@ -25,6 +40,7 @@ struct FrameSettings {
     uint32_t maxDepth = 16;           // path vertices after the camera (path tracers)
     double timeLimitSeconds = 0.0;    // 0: no limit
     int cameraIndex = -1;             // -1: the scene's first camera, or a default framing
+    ViewOverride view;                // --look-from, --look-at, --fov
     bool nextEventEstimation = true;  // false: BSDF sampling only (a reference for tests)
     DirectLight direct = DirectLight::Traced;
     uint32_t areaLightSamples = 16;   // --area-light-samples: point samples per emissive triangle
@@ -35,9 +51,21 @@ struct FrameSettings {
     void check() const;
 };
 
-// Resolves --camera: the scene's camera `index`, the first one, or a default framing. Throws
-// InputError for an index the scene does not have.
-Camera chooseCamera(const Scene& scene, int index);
+// A three-quarter view of `bounds` from the +X, +Y, +Z side (azimuth 45 degrees between +X and
+// +Z, elevation 30 degrees, up +Y) looking at the box's centre, with a vertical field of view of
+// `yfovRadians`, at the least distance where all eight corners project inside the central
+// kFramingFill of an image of aspect `aspect` (width / height), horizontally and vertically.
+// An empty box frames the unit cube at the origin; a box with no extent frames a cube of size
+// 1e-3 * max(1, |centre|) around it.
+inline constexpr float kFramingFill = 0.95f;
+inline constexpr float kFramingYfov = 0.6981317f;  // 40 degrees
+Camera framingCamera(const Bounds& bounds, float aspect, float yfovRadians = kFramingYfov);
+
+// Resolves --camera and the view override: the scene's camera `index`, else its first camera,
+// else framingCamera(scene.bounds, aspect) (at 40 degrees, or --fov's field of view), and then
+// `view` on top. Throws InputError for an index the scene does not have, or for an override
+// that leaves the camera where it looks.
+Camera chooseCamera(const Scene& scene, int index, float aspect = 1.0f, const ViewOverride& view = {});
 
 // A frame as the integrators see it.
 struct Frame {

@@ -89,6 +89,7 @@ public:
         m_scene.source = m_path;
         m_materials.emplace(m_model, m_scene, [this](const std::string& message) { warn(message); });
         m_materials->convertAll();
+        describeFile();
         const int sceneIndex = m_model.defaultScene >= 0 ? m_model.defaultScene : 0;
         const std::string sceneName = fmt::format("scenes[{}]", sceneIndex);
         if (m_model.scenes.empty()) fail("scenes", "the file has no scene, so no triangle geometry to render");
@@ -125,6 +126,28 @@ private:
             const size_t end = std::min(warnings.find('\n', start), warnings.size());
             if (end > start) warn("tinygltf: " + warnings.substr(start, end - start));
             start = end + 1;
+        }
+    }
+
+    // What `vkphoton info` reports beside the scene: extensions, nodes, skins, animations, and the
+    // extensions each material (or one of its texture references) names.
+    void describeFile() {
+        SceneFileInfo& info = m_scene.file;
+        info.extensionsUsed = m_model.extensionsUsed;
+        info.extensionsRequired = m_model.extensionsRequired;
+        info.nodes = m_model.nodes.size();
+        info.skins = m_model.skins.size();
+        for (const tinygltf::Animation& a : m_model.animations)
+            info.animations.push_back({a.name, a.channels.size(), a.samplers.size()});
+        for (size_t i = 0; i < m_model.materials.size(); ++i) {
+            const tinygltf::Material& source = m_model.materials[i];
+            const auto& pbr = source.pbrMetallicRoughness;
+            std::vector<std::string>& names = m_scene.materials[i].extensions;
+            for (const tinygltf::ExtensionMap* map :
+                 {&source.extensions, &pbr.baseColorTexture.extensions, &pbr.metallicRoughnessTexture.extensions,
+                  &source.normalTexture.extensions, &source.occlusionTexture.extensions, &source.emissiveTexture.extensions})
+                for (const auto& entry : *map)
+                    if (std::find(names.begin(), names.end(), entry.first) == names.end()) names.push_back(entry.first);
         }
     }
 

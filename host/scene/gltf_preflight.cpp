@@ -5,12 +5,12 @@
 #include <fstream>
 #include <map>
 #include <optional>
-#include <set>
 #include <string_view>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "scene/gltf_extensions.h"
 #include "scene/gltf_uri_policy.h"
 #include "util/errors.h"
 
@@ -27,11 +27,6 @@ constexpr int kMaxJsonDepth = 64;
 constexpr uint32_t kGlbVersion = 2;
 constexpr uint32_t kChunkJson = 0x4E4F534Au;  // "JSON", little-endian
 constexpr uint32_t kChunkBin = 0x004E4942u;   // "BIN\0"
-
-// Required extensions the loader implements (others make the file unreadable by definition).
-const std::set<std::string_view> kSupportedRequiredExtensions = {
-    "KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_materials_transmission",
-    "KHR_materials_ior",   "KHR_materials_volume",            "KHR_mesh_quantization"};
 
 [[noreturn]] void fail(const std::string& element, const std::string& what) {
     throw InputError(element.empty() ? what : element + ": " + what);
@@ -199,7 +194,8 @@ void checkAsset(const Json& root) {
         fail("asset.version", "must be \"2.x\": only glTF 2.0 is supported");
     for (const Json& name : arrayField(root, "extensionsRequired", "")) {
         if (!name.is_string()) fail("extensionsRequired", "holds a non-string");
-        if (!kSupportedRequiredExtensions.count(name.get<std::string>()))
+        // Only extensions the loader reads may be required (others make the file unreadable).
+        if (!gltfExtensionIsRead(name.get<std::string>()))
             fail("extensionsRequired", fmt::format("{} is required by the file but not supported", name.get<std::string>()));
     }
 }

@@ -46,6 +46,7 @@ struct Material {
     int baseColorTexture = -1;      // indices into Scene::textures
     int metallicRoughnessTexture = -1;
     int emissiveTexture = -1;
+    std::vector<std::string> extensions;  // the glTF extensions the material and its textures name
 };
 
 struct Triangle {
@@ -78,6 +79,21 @@ struct Camera {
     float aspectRatio = 0.0f;                // 0: take it from the image size
 };
 
+// What the glTF file holds beside the rendered scene, for `vkphoton info` (filled by the loader).
+struct AnimationInfo {
+    std::string name;
+    size_t channels = 0;
+    size_t samplers = 0;
+};
+
+struct SceneFileInfo {
+    std::vector<std::string> extensionsUsed;      // as the file lists them
+    std::vector<std::string> extensionsRequired;
+    size_t nodes = 0;                             // in the whole file, not only the scene's tree
+    size_t skins = 0;
+    std::vector<AnimationInfo> animations;        // not played: the scene is its rest pose
+};
+
 struct Scene {
     std::filesystem::path source;
     std::vector<Triangle> triangles;
@@ -87,9 +103,7 @@ struct Scene {
     std::vector<Camera> cameras;             // perspective cameras in node order
     Bounds bounds;
     size_t droppedDegenerateTriangles = 0;
+    SceneFileInfo file;
 };
-
-// A camera framing the whole scene from its +Z side, used when the file has none.
-Camera defaultCamera(const Bounds& bounds);
 
 }  // namespace vkp

@@ -1,0 +1,56 @@
+#include "scene/gltf_extensions.h"
+
+#include <array>
+
+namespace vkp {
+namespace {
+
+using enum ExtensionSupport;
+
+constexpr std::array kExtensions{
+    GltfExtension{"KHR_lights_punctual", Read, "point, spot and directional lights (range is ignored)"},
+    GltfExtension{"KHR_materials_emissive_strength", Read, "multiplies the emission"},
+    GltfExtension{"KHR_materials_ior", Read, "index of refraction"},
+    GltfExtension{"KHR_materials_transmission", Read, "transmissionFactor (not the texture)"},
+    GltfExtension{"KHR_materials_volume", Read, "thicknessFactor and attenuation (not the thickness texture)"},
+    GltfExtension{"KHR_mesh_quantization", Read, "any component type for positions, normals, texture coordinates"},
+    GltfExtension{"KHR_texture_transform", Ignored, "textures are sampled untransformed (a warning names each)"},
+    GltfExtension{"KHR_materials_anisotropy", Ignored, "isotropic GGX instead"},
+    GltfExtension{"KHR_materials_clearcoat", Ignored, "no clear coat layer"},
+    GltfExtension{"KHR_materials_diffuse_transmission", Ignored, "opaque diffuse instead"},
+    GltfExtension{"KHR_materials_dispersion", Ignored, "one index of refraction for all wavelengths"},
+    GltfExtension{"KHR_materials_iridescence", Ignored, "no thin-film interference"},
+    GltfExtension{"KHR_materials_pbrSpecularGlossiness", Ignored, "the metallic-roughness fallback is used"},
+    GltfExtension{"KHR_materials_sheen", Ignored, "no sheen layer"},
+    GltfExtension{"KHR_materials_specular", Ignored, "specular strength and colour from ior alone"},
+    GltfExtension{"KHR_materials_unlit", Ignored, "shaded like any other material"},
+    GltfExtension{"KHR_materials_variants", Ignored, "each primitive's default material"},
+    GltfExtension{"KHR_animation_pointer", Ignored, "animations are not played"},
+    GltfExtension{"KHR_draco_mesh_compression", Ignored, "compressed geometry is not decoded"},
+    GltfExtension{"EXT_meshopt_compression", Ignored, "compressed buffers are not decoded"},
+    GltfExtension{"EXT_mesh_gpu_instancing", Ignored, "a node's instances are not drawn, only its mesh"},
+    GltfExtension{"KHR_texture_basisu", Ignored, "KTX2 images are not decoded"},
+    GltfExtension{"EXT_texture_webp", Ignored, "WebP images are not decoded"},
+    GltfExtension{"EXT_texture_avif", Ignored, "AVIF images are not decoded"},
+    GltfExtension{"EXT_lights_image_based", Ignored, "no environment light"},
+    GltfExtension{"KHR_xmp_json_ld", Ignored, "metadata only"},
+};
+
+}  // namespace
+
+std::span<const GltfExtension> knownGltfExtensions() { return kExtensions; }
+
+const GltfExtension* findGltfExtension(std::string_view name) {
+    for (const GltfExtension& e : kExtensions)
+        if (e.name == name) return &e;
+    return nullptr;
+}
+
+bool gltfExtensionIsRead(std::string_view name) {
+    const GltfExtension* e = findGltfExtension(name);
+    return e && e->support == Read;
+}
+
+std::string_view extensionSupportName(ExtensionSupport support) { return support == Read ? "read" : "ignored"; }
+
+}  // namespace vkp
