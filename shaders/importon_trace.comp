@@ -6,14 +6,15 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/kernels/importons.glsl"
 #include "scene_access.glsl"
 #include "shared/halton.glsl"
 #include "shared/importance.glsl"
 #include "shared/photon.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kImportonGroupSize) in;
 
-layout(std430, set = 0, binding = 8) writeonly buffer Importons { GpuPhoton importons[]; };
+layout(std430, set = 0, binding = kImportonTraceImportonBinding) writeonly buffer Importons { GpuPhoton importons[]; };
 
 layout(push_constant) uniform Push { ImportonTraceParams params; };
 

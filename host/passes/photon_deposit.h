@@ -3,10 +3,13 @@
 // or drops each photon (and reweights the kept ones) in place, before the map's compaction.
 #pragma once
 
+#include "gpu_scene/scene_buffers.h"
 #include "passes/photon_grid.h"
-#include "passes/scene_pass.h"
 #include "shared/importance.glsl"
+#include "shared/kernels/deposit.glsl"
+#include "shared/kernels/importons.glsl"
 #include "vk/buffer.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 
@@ -31,9 +34,9 @@ public:
 private:
     vk::Buffer m_importance;     // per slot: importance density, largest path importance
     vk::Buffer m_redistributed;  // per grid photon, rgb: power handed to it (fixed point), zero between rounds
-    vk::ComputeKernel m_lookup;
-    ScenePass m_deposit;
-    vk::ComputeKernel m_redistribute;
+    vk::Kernel<gpu::ImportanceLookupKernel> m_lookup;
+    vk::Kernel<gpu::PhotonDepositKernel> m_deposit;
+    vk::Kernel<gpu::DepositRedistributeKernel> m_redistribute;
 };
 
 }  // namespace vkp

@@ -1,7 +1,6 @@
-// A compute pass over a 1-D range of items (pixels) that reads the scene buffers at bindings 0..7
-// (shaders/scene_access.glsl) and its own buffers from binding 8 on: the photon integrator's
-// estimate passes (caustic_estimate.comp, final_gather.comp, sppm_update.comp), each named in
-// the comment of its shader.
+// A compute pass over a 1-D range of items (pixels) that reads the scene buffers and its own
+// buffers after them: the photon integrator's estimate passes, with the interface
+// shared/kernels/photon_estimates.glsl declares for `shader`.
 #pragma once
 
 #include <string>
@@ -15,15 +14,16 @@ namespace vkp {
 
 class ScenePass {
 public:
+    // `shader`: final_gather.comp, caustic_estimate.comp or sppm_update.comp; `buffers` bound from
+    // the first binding after the scene's on; `pushBytes` must be the interface's.
     ScenePass(vk::Context& context, std::string shader, const SceneBuffers& scene,
               const std::vector<const vk::Buffer*>& buffers, uint32_t pushBytes);
 
     template <typename Push> void record(VkCommandBuffer cmd, uint64_t items, const Push& push) const {
-        m_kernel.record(cmd, vk::groupCount(items, kGroupSize), push);
+        m_kernel.record(cmd, vk::groupCount(items, m_kernel.groupSize()), push);
     }
 
 private:
-    static constexpr uint32_t kGroupSize = 64;  // local_size_x of the pass shaders
     vk::ComputeKernel m_kernel;
 };
 
