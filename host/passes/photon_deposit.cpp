@@ -2,9 +2,6 @@
 
 #include <glm/glm.hpp>
 
-#include "vk/compute_kernel.h"
-#include "vk/context.h"
-
 namespace vkp {
 
 PhotonDeposit::PhotonDeposit(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& importanceTable,
@@ -15,10 +12,7 @@ PhotonDeposit::PhotonDeposit(vk::Context& context, const SceneBuffers& scene, co
       m_redistributed(context, "deposit redistributed power",
                       std::max<VkDeviceSize>(16, VkDeviceSize(mapGrid.slotCount()) * 3 * sizeof(uint32_t)),
                       vk::kStorageUsage),
-      m_lookup(context), m_deposit(context), m_redistribute(context) {
-    m_lookup.bind(gpu::kImportanceLookupTableBinding, importanceTable);
-    m_lookup.bind(gpu::kImportanceLookupSlotBinding, slots);
-    m_lookup.bind(gpu::kImportanceLookupImportanceBinding, m_importance);
+      m_lookup(context, importanceTable, slots, m_importance), m_deposit(context), m_redistribute(context) {
     m_deposit.bind(scene.bindings());
     m_deposit.bind(gpu::kPhotonDepositGridBinding, mapGrid.cellStart());
     m_deposit.bind(gpu::kPhotonDepositGridBinding + 1, mapGrid.photons());
@@ -28,8 +22,9 @@ PhotonDeposit::PhotonDeposit(vk::Context& context, const SceneBuffers& scene, co
     m_redistribute.bind(gpu::kRedistributeMapBinding, map);
     m_redistribute.bind(gpu::kRedistributeSortedSlotBinding, mapGrid.sortedSlots());
     m_redistribute.bind(gpu::kRedistributeRedistributedBinding, m_redistributed);
-    context.submitAndWait([&](VkCommandBuffer cmd) { m_redistributed.fillZero(cmd); });
 }
+
+void PhotonDeposit::recordClear(VkCommandBuffer cmd) const { m_redistributed.fillZero(cmd); }
 
 void PhotonDeposit::recordRedistribution(VkCommandBuffer cmd, uint32_t gridPhotons) const {
     gpu::RedistributeParams params{};
@@ -40,7 +35,7 @@ void PhotonDeposit::recordRedistribution(VkCommandBuffer cmd, uint32_t gridPhoto
 void PhotonDeposit::record(VkCommandBuffer cmd, gpu::ImportanceGridParams lookup,
                            const gpu::PhotonDepositParams& params) const {
     lookup.slotCount = params.slotCount;
-    m_lookup.record(cmd, params.slotCount, lookup);
+    m_lookup.record(cmd, lookup);
     vk::computeBarrier(cmd);
     m_deposit.record(cmd, params.slotCount, params);
 }

@@ -1,6 +1,8 @@
-// A compute pass over a 1-D range of items (pixels) that reads the scene buffers and its own
-// buffers after them: the photon integrator's estimate passes, with the interface
-// shared/kernels/photon_estimates.glsl declares for `shader`.
+// Deprecated: host/render/photon_integrator.cpp's estimate passes until it switches to
+// FinalGatherPass, CausticEstimatePass and SppmUpdatePass (final_gather_pass.h,
+// caustic_estimate_pass.h, sppm_update_pass.h); remove this file then. A compute pass over a 1-D
+// range of items (pixels) that reads the scene buffers and its own buffers after them, with the
+// interface shared/kernels/photon_estimates.glsl declares for `shader`.
 #pragma once
 
 #include <string>

@@ -9,12 +9,13 @@
 
 #include <fmt/format.h>
 
+#include "passes/importance_lookup_pass.h"
+#include "passes/importance_splat_pass.h"
+#include "passes/importon_trace_pass.h"
 #include "shared/importance.glsl"
-#include "shared/kernels/importons.glsl"
 #include "render/photon_map.h"
 #include "util/errors.h"
 #include "util/stopwatch.h"
-#include "vk/kernel.h"
 #include "vk/context.h"
 
 namespace vkp {
@@ -63,9 +64,7 @@ ImportonMap::ImportonMap(vk::Context& context, const SceneArrays& arrays, const 
     const auto start = Clock::now();
     const uint32_t slots = settings.paths * settings.maxDeposits;
     m_slots = vk::Buffer(context, "importons", VkDeviceSize(slots) * sizeof(gpu::GpuPhoton), vk::kStorageUsage);
-    vk::Kernel<gpu::ImportonTraceKernel> trace(context);
-    trace.bind(buffers.bindings());
-    trace.bind(gpu::kImportonTraceImportonBinding, m_slots);
+    const ImportonTracePass trace(context, buffers, m_slots);
     gpu::ImportonTraceParams params{};
     params.camera = camera;
     params.width = width;
@@ -77,7 +76,7 @@ ImportonMap::ImportonMap(vk::Context& context, const SceneArrays& arrays, const 
     context.submitAndWait([&](VkCommandBuffer cmd) {
         m_slots.fillZero(cmd);
         vk::transferToComputeBarrier(cmd);
-        trace.record(cmd, params.pathCount, params);
+        trace.record(cmd, params);
         vk::computeToHostBarrier(cmd);
     });
 
@@ -106,19 +105,17 @@ ImportonMap::ImportonMap(vk::Context& context, const SceneArrays& arrays, const 
 // Splats the importons into a table with room for every cell at every level (at most one per
 // importon and level); doubles it should the probes ever run out (an importon would be lost).
 void ImportonMap::buildTable(vk::Context& context) {
-    vk::Kernel<gpu::ImportanceSplatKernel> splat(context);
     uint64_t entries = std::bit_ceil(std::max<uint64_t>(1024, m_stats.stored * gpu::kImportanceLevels / 4));
     for (;; entries *= 2) {
         m_table = vk::Buffer(context, "importance grid", entries * sizeof(gpu::ImportanceCell), vk::kStorageUsage);
-        splat.bind(gpu::kImportanceSplatImportonBinding, m_slots);
-        splat.bind(gpu::kImportanceSplatTableBinding, m_table);
+        const ImportanceSplatPass splat(context, m_slots, m_table);
         gpu::ImportanceGridParams params = lookupParams();
         params.tableMask = static_cast<uint32_t>(entries - 1);
         params.slotCount = m_settings.paths * m_settings.maxDeposits;
         context.submitAndWait([&](VkCommandBuffer cmd) {
             m_table.fillZero(cmd);
             vk::transferToComputeBarrier(cmd);
-            splat.record(cmd, params.slotCount, params);
+            splat.record(cmd, params);
             vk::computeToHostBarrier(cmd);
         });
         uint64_t counted = 0;
@@ -146,14 +143,11 @@ gpu::ImportanceGridParams ImportonMap::lookupParams(uint32_t requiredFlags, uint
 float ImportonMap::estimateImportanceScale(vk::Context& context, const std::vector<gpu::GpuPhoton>& importons) const {
     const uint32_t testSlots = std::min(m_settings.testRays, m_settings.paths) * m_settings.maxDeposits;
     vk::Buffer sensed(context, "importon test rays", VkDeviceSize(testSlots) * sizeof(glm::vec2), vk::kStorageUsage);
-    vk::Kernel<gpu::ImportanceLookupKernel> lookup(context);
-    lookup.bind(gpu::kImportanceLookupTableBinding, m_table);
-    lookup.bind(gpu::kImportanceLookupSlotBinding, m_slots);
-    lookup.bind(gpu::kImportanceLookupImportanceBinding, sensed);
+    const ImportanceLookupPass lookup(context, m_table, m_slots, sensed);
     gpu::ImportanceGridParams params = lookupParams();
     params.slotCount = testSlots;
     context.submitAndWait([&](VkCommandBuffer cmd) {
-        lookup.record(cmd, testSlots, params);
+        lookup.record(cmd, params);
         vk::computeToHostBarrier(cmd);
     });
     const auto values = sensed.download<glm::vec2>();
