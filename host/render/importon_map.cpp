@@ -80,6 +80,8 @@ ImportonMap::ImportonMap(vk::Context& context, const SceneArrays& arrays, const 
         vk::computeToHostBarrier(cmd);
     });
 
+    // Read-back (docs/architecture.md): the importons, for the grid's cell size (their occupancy),
+    // the median path importance and, below, which test slots the camera sees directly.
     const std::vector<gpu::GpuPhoton> importons = downloadImportons();
     std::vector<glm::vec3> positions;
     std::vector<float> pathImportance;
@@ -118,6 +120,8 @@ void ImportonMap::buildTable(vk::Context& context) {
             splat.record(cmd, params);
             vk::computeToHostBarrier(cmd);
         });
+        // Read-back (docs/architecture.md): the table, to check that it counted every importon at
+        // every level (a full table loses importons; it is then rebuilt twice as large).
         uint64_t counted = 0;
         for (const gpu::ImportanceCell& cell : m_table.download<gpu::ImportanceCell>())
             if (cell.key != gpu::kImportanceEmptyKey) counted += cell.count;
@@ -150,6 +154,7 @@ float ImportonMap::estimateImportanceScale(vk::Context& context, const std::vect
         lookup.record(cmd, params);
         vk::computeToHostBarrier(cmd);
     });
+    // Read-back (docs/architecture.md): the importance the test rays sense; f is a minimum over them.
     const auto values = sensed.download<glm::vec2>();
     float least = std::numeric_limits<float>::infinity();
     for (uint32_t slot = 0; slot < testSlots; ++slot)

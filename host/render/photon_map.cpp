@@ -154,10 +154,14 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
                 vk::computeToHostBarrier(cmd);
             }
         });
+        // Read-back (docs/architecture.md): the photons stored so far, the size of the next round's
+        // redistribution dispatch.
         if (redistribute) m_state.download(&storedSoFar, sizeof(storedSoFar), gpu::kPhotonMapStateCount * sizeof(uint32_t));
         stats.chunks += 1;
     }
     stats.candidates = candidateCount(stats.traced, m_settings.requiredFlags, m_settings.rejectedFlags);
+    // Read-back (docs/architecture.md): the map's photon count, which sets the grid's cell size
+    // (cellSizeFor) before the grid is built, and the statistics.
     uint32_t state[gpu::kPhotonMapStateSize];
     m_state.download(state, sizeof(state));
     stats.stored = state[gpu::kPhotonMapStateCount];
