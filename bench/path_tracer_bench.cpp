@@ -16,7 +16,8 @@
 #include "scene/gltf_loader.h"
 #include "util/errors.h"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "shaders/bench_kernels.glsl"
+#include "vk/kernel.h"
 #include "vk/context.h"
 #include "vk/shader_registry.h"
 
@@ -27,11 +28,6 @@ extern const vk::ShaderEntry* const vkphoton_bench_shaders_table[];
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-struct RayPush {
-    vkp::gpu::GpuCamera camera;
-    uint32_t width, height, mode, seed;
-};
 
 }  // namespace
 
@@ -59,10 +55,10 @@ int main(int argc, char** argv) {
         const SceneBuffers buffers(context, arrays);
         const uint64_t rayPixels = uint64_t(raySize) * raySize;
         vk::Buffer result(context, "hit counts", rayPixels * sizeof(uint32_t), vk::kStorageUsage);
-        vk::ComputeKernel kernel(context, "ray_throughput.comp", 9, sizeof(RayPush));
+        vk::Kernel<gpu::RayBenchKernel> kernel(context);
         kernel.bind(buffers.bindings());
-        kernel.bind(8, result);
-        RayPush push{makeGpuCamera(chooseCamera(scene, -1), raySize, raySize), raySize, raySize, 0, 0};
+        kernel.bind(gpu::kRayBenchResultBinding, result);
+        gpu::RayBenchParams push{makeGpuCamera(chooseCamera(scene, -1), raySize, raySize), raySize, raySize, 0, 0};
 
         auto timeMode = [&](uint32_t mode) {
             std::vector<double> times;
@@ -70,7 +66,7 @@ int main(int argc, char** argv) {
                 push.mode = mode;
                 push.seed = r;
                 const auto start = Clock::now();
-                context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, vk::groupCount(rayPixels, 64), push); });
+                context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, rayPixels, push); });
                 if (r > 0) times.push_back(std::chrono::duration<double>(Clock::now() - start).count());
             }
             return bench::median(times);

@@ -23,7 +23,8 @@
 #include "scene/gltf_loader.h"
 #include "util/stopwatch.h"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "shaders/bench_kernels.glsl"
+#include "vk/kernel.h"
 #include "vk/context.h"
 #include "vk/shader_registry.h"
 
@@ -35,12 +36,6 @@ namespace {
 
 using namespace vkp;
 
-struct GatherPush {
-    gpu::PhotonGridView grid;
-    uint32_t queries, stride, mode, k;
-    float radius;
-    uint32_t pad[3];
-};
 
 
 void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_t repeat) {
@@ -68,19 +63,21 @@ void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_
     const uint32_t stride = 8;
     const uint32_t queries = static_cast<uint32_t>(stats.stored / stride);
     vk::Buffer results(context, "results", std::max<VkDeviceSize>(16, queries * sizeof(float)), vk::kStorageUsage);
-    vk::ComputeKernel kernel(context, "gather_throughput.comp", 3, sizeof(GatherPush));
-    kernel.bind({&map.grid().cellStart(), &map.grid().photons(), &results});
+    vk::Kernel<gpu::GatherBenchKernel> kernel(context);
+    kernel.bind(gpu::kGatherBenchGridBinding, map.grid().cellStart());
+    kernel.bind(gpu::kGatherBenchGridBinding + 1, map.grid().photons());
+    kernel.bind(gpu::kGatherBenchResultBinding, results);
     fmt::print("\n### Gathers ({} queries at photon positions, cell size {} m)\n\n", queries, settings.cellSize);
     fmt::print("| query | queries/s |\n|---|---|\n");
     struct Mode { const char* name; uint32_t mode, k; float radius; };
     for (const Mode& m : {Mode{"fixed radius 0.03 m, cone filter", 0, 0, 0.03f},
                           Mode{"32 nearest within 0.06 m", 1, 32, 0.06f},
                           Mode{"nearest within 0.03 m", 2, 1, 0.03f}}) {
-        GatherPush push{map.grid().view(map.photonPower()), queries, stride, m.mode, m.k, m.radius, {}};
+        gpu::GatherBenchParams push{map.grid().view(map.photonPower()), queries, stride, m.mode, m.k, m.radius};
         std::vector<double> times;
         for (uint32_t r = 0; r <= repeat; ++r) {
             const auto start = Clock::now();
-            context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, vk::groupCount(queries, 64), push); });
+            context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, queries, push); });
             if (r > 0) times.push_back(secondsSince(start));
         }
         fmt::print("| {} | {:.2f} M |\n", m.name, queries / bench::median(times) / 1e6);

@@ -20,7 +20,8 @@
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "shaders/bench_kernels.glsl"
+#include "vk/kernel.h"
 #include "vk/context.h"
 #include "vk/shader_registry.h"
 
@@ -87,10 +88,10 @@ int main(int argc, char** argv) {
                 rasterGs = std::make_unique<RasterDirectPass>(context, arrays, buffers, lights, width, height,
                                                               VolumeGeometry::GeometryShader);
             vk::Buffer traced(context, "traced direct", pixels * sizeof(glm::vec4), vk::kStorageUsage);
-            vk::ComputeKernel kernel(context, "traced_direct.comp", 10, sizeof(gpu::RasterDirectParams));
+            vk::Kernel<gpu::TracedDirectKernel> kernel(context);
             kernel.bind(buffers.bindings());
-            kernel.bind(8, raster.shadows().lights());
-            kernel.bind(9, traced);
+            kernel.bind(gpu::kTracedDirectLightBinding, raster.shadows().lights());
+            kernel.bind(gpu::kTracedDirectOutputBinding, traced);
 
             std::vector<double> rasterTimes, gsTimes, tracedTimes;
             for (uint32_t r = 0; r < repeat + 1; ++r) {  // the first run warms up
@@ -113,7 +114,7 @@ int main(int argc, char** argv) {
                         params.height = height;
                         params.firstLight = i;
                         params.lightCount = 1;
-                        kernel.record(cmd, vk::groupCount(pixels, 64), params);
+                        kernel.record(cmd, pixels, params);
                         vk::computeBarrier(cmd);
                     }
                 });

@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 packages=(
   build-essential cmake pkg-config python3
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
-  glslang-tools glslang-dev spirv-tools
+  glslang-tools glslang-dev spirv-tools libspirv-cross-c-shared-dev
   libglm-dev libtinygltf-dev libopenexr-dev libstb-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev
 )

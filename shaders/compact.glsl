@@ -3,15 +3,16 @@
 #ifndef VKP_COMPACT_GLSL
 #define VKP_COMPACT_GLSL
 
+#include "shared/kernels/compaction.glsl"
 #include "shared/photon.glsl"
 #include "shared/photon_grid.glsl"
 
-layout(std430, set = 0, binding = 0) readonly buffer Slots { GpuPhoton slots[]; };
+layout(std430, set = 0, binding = kCompactSlotBinding) readonly buffer Slots { GpuPhoton slots[]; };
 // scannedCount + 1 entries: 1 per kept slot (0 past the chunk), then (scanned) each kept slot's
 // rank in the chunk; ranks[scannedCount] ends as the chunk's number of kept photons.
-layout(std430, set = 0, binding = 1) buffer Ranks { uint ranks[]; };
-layout(std430, set = 0, binding = 2) buffer Map { GpuPhoton map[]; };
-layout(std430, set = 0, binding = 3) buffer MapState { uint mapState[]; };  // kPhotonMapState*
+layout(std430, set = 0, binding = kCompactRankBinding) buffer Ranks { uint ranks[]; };
+layout(std430, set = 0, binding = kCompactMapBinding) buffer Map { GpuPhoton map[]; };
+layout(std430, set = 0, binding = kCompactStateBinding) buffer MapState { uint mapState[]; };  // kPhotonMapState*
 
 layout(push_constant) uniform Push { PhotonCompactParams params; };
 

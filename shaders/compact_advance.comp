@@ -5,7 +5,7 @@
 
 #include "compact.glsl"
 
-layout(local_size_x = 1) in;
+layout(local_size_x = kCompactAdvanceGroupSize) in;
 
 void main() {
     uint count = mapState[kPhotonMapStateCount];

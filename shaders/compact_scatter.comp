@@ -5,7 +5,7 @@
 
 #include "compact.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kCompactGroupSize) in;
 
 void main() {
     uint slot = gl_GlobalInvocationID.x;

@@ -4,14 +4,15 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/kernels/deposit.glsl"
 #include "shared/importance.glsl"
 #include "shared/photon.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kDepositGroupSize) in;
 
-layout(std430, set = 0, binding = 0) buffer Map { GpuPhoton map[]; };
-layout(std430, set = 0, binding = 1) readonly buffer SortedSlots { uint sortedSlots[]; };
-layout(std430, set = 0, binding = 2) buffer Redistributed { uint redistributed[]; };
+layout(std430, set = 0, binding = kRedistributeMapBinding) buffer Map { GpuPhoton map[]; };
+layout(std430, set = 0, binding = kRedistributeSortedSlotBinding) readonly buffer SortedSlots { uint sortedSlots[]; };
+layout(std430, set = 0, binding = kRedistributeRedistributedBinding) buffer Redistributed { uint redistributed[]; };
 
 layout(push_constant) uniform Push { RedistributeParams params; };
 

@@ -12,18 +12,19 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/kernels/photon_estimates.glsl"
 #include "scene_access.glsl"
 #include "path_vertex.glsl"
 #include "shared/halton.glsl"
 #include "visible_point_access.glsl"
 #include "shared/photon_render.glsl"
-#define PHOTON_GRID_BINDING 10
+#define PHOTON_GRID_BINDING kFinalGatherGridBinding
 #include "photon_gather.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kPhotonEstimateGroupSize) in;
 
-layout(std430, set = 0, binding = 8) buffer Film { vec4 film[]; };
-layout(std430, set = 0, binding = 9) readonly buffer VisiblePoints { GpuVisiblePoint visiblePoints[]; };
+layout(std430, set = 0, binding = kFinalGatherFilmBinding) buffer Film { vec4 film[]; };
+layout(std430, set = 0, binding = kFinalGatherPointBinding) readonly buffer VisiblePoints { GpuVisiblePoint visiblePoints[]; };
 
 layout(push_constant) uniform Push { FinalGatherParams params; };
 

@@ -3,16 +3,17 @@
 #ifndef VKP_GRID_BUILD_GLSL
 #define VKP_GRID_BUILD_GLSL
 
+#include "shared/kernels/grid_build.glsl"
 #include "shared/photon.glsl"
 #include "shared/photon_grid.glsl"
 
-layout(std430, set = 0, binding = 0) readonly buffer Photons { GpuPhoton photons[]; };  // fixed slots
+layout(std430, set = 0, binding = kGridSlotBinding) readonly buffer Photons { GpuPhoton photons[]; };  // fixed slots
 // tableSize + 1 entries: counts per bucket, then (scanned) the first sorted index of each bucket;
 // the last entry ends as the number of photons in the grid.
-layout(std430, set = 0, binding = 1) buffer CellStart { uint cellStart[]; };
-layout(std430, set = 0, binding = 2) buffer Cursor { uint cursor[]; };            // scatter positions
-layout(std430, set = 0, binding = 3) buffer SortedSlots { uint sortedSlots[]; };  // slot per sorted photon
-layout(std430, set = 0, binding = 4) writeonly buffer GridPhotons { GpuPhoton gridPhotons[]; };
+layout(std430, set = 0, binding = kGridCellStartBinding) buffer CellStart { uint cellStart[]; };
+layout(std430, set = 0, binding = kGridCursorBinding) buffer Cursor { uint cursor[]; };            // scatter positions
+layout(std430, set = 0, binding = kGridSortedSlotBinding) buffer SortedSlots { uint sortedSlots[]; };  // slot per sorted photon
+layout(std430, set = 0, binding = kGridPhotonBinding) writeonly buffer GridPhotons { GpuPhoton gridPhotons[]; };
 
 layout(push_constant) uniform Push { PhotonGridParams params; };
 

@@ -4,7 +4,7 @@
 
 #include "grid_build.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kGridGroupSize) in;
 
 void main() {
     uint slot = gl_GlobalInvocationID.x;

@@ -8,7 +8,7 @@
 
 #include "grid_build.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kGridGroupSize) in;
 
 const uint kGaps[8] = uint[8](701u, 301u, 132u, 57u, 23u, 10u, 4u, 1u);
 

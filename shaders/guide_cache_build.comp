@@ -11,16 +11,17 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/kernels/guide_cache.glsl"
 #include "shared/guiding.glsl"
 #include "shared/photon.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kGuideCacheGroupSize) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer CellStart { uint cellStart[]; };
-layout(std430, set = 0, binding = 1) readonly buffer GridPhotons { GpuPhoton gridPhotons[]; };
-layout(std430, set = 0, binding = 2) writeonly buffer CacheCells { ivec4 cacheCells[]; };  // xyz cell, w 1: used
-layout(std430, set = 0, binding = 3) writeonly buffer CacheCdfs { float cacheCdfs[]; };    // kMaxGuideCells each
-layout(std430, set = 0, binding = 4) writeonly buffer CacheIrradiance { vec4 cacheIrradiance[]; };  // rgb W/m^2, w photons
+layout(std430, set = 0, binding = kGuideCacheCellStartBinding) readonly buffer CellStart { uint cellStart[]; };
+layout(std430, set = 0, binding = kGuideCachePhotonBinding) readonly buffer GridPhotons { GpuPhoton gridPhotons[]; };
+layout(std430, set = 0, binding = kGuideCacheCellsBinding) writeonly buffer CacheCells { ivec4 cacheCells[]; };  // xyz cell, w 1: used
+layout(std430, set = 0, binding = kGuideCacheCdfsBinding) writeonly buffer CacheCdfs { float cacheCdfs[]; };    // kMaxGuideCells each
+layout(std430, set = 0, binding = kGuideCacheIrradianceBinding) writeonly buffer CacheIrradiance { vec4 cacheIrradiance[]; };  // rgb W/m^2, w photons
 
 layout(push_constant) uniform Push { GuideParams guide; };
 

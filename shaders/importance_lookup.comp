@@ -8,15 +8,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/kernels/importons.glsl"
 #include "shared/normal_bins.glsl"
 #include "shared/importance.glsl"
 #include "shared/photon.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kImportonGroupSize) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer Table { ImportanceCell table[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Slots { GpuPhoton slots[]; };
-layout(std430, set = 0, binding = 2) writeonly buffer Importance { vec2 importance[]; };  // density, max path importance
+layout(std430, set = 0, binding = kImportanceLookupTableBinding) readonly buffer Table { ImportanceCell table[]; };
+layout(std430, set = 0, binding = kImportanceLookupSlotBinding) readonly buffer Slots { GpuPhoton slots[]; };
+layout(std430, set = 0, binding = kImportanceLookupImportanceBinding) writeonly buffer Importance { vec2 importance[]; };  // density, max path importance
 
 layout(push_constant) uniform Push { ImportanceGridParams params; };
 

@@ -4,14 +4,15 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/kernels/importons.glsl"
 #include "shared/normal_bins.glsl"
 #include "shared/importance.glsl"
 #include "shared/photon.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kImportonGroupSize) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer Importons { GpuImporton importons[]; };
-layout(std430, set = 0, binding = 1) buffer Table { ImportanceCell table[]; };
+layout(std430, set = 0, binding = kImportanceSplatImportonBinding) readonly buffer Importons { GpuImporton importons[]; };
+layout(std430, set = 0, binding = kImportanceSplatTableBinding) buffer Table { ImportanceCell table[]; };
 
 layout(push_constant) uniform Push { ImportanceGridParams params; };
 

@@ -6,15 +6,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/kernels/importons.glsl"
 #include "scene_access.glsl"
 #include "path_vertex.glsl"
 #include "shared/halton.glsl"
 #include "shared/importance.glsl"
 #include "shared/photon.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kImportonGroupSize) in;
 
-layout(std430, set = 0, binding = 8) writeonly buffer Importons { GpuImporton importons[]; };
+layout(std430, set = 0, binding = kImportonTraceImportonBinding) writeonly buffer Importons { GpuImporton importons[]; };
 
 layout(push_constant) uniform Push { ImportonTraceParams params; };
 

@@ -11,26 +11,26 @@
 #ifndef VKP_PATH_TRACER_GLSL
 #define VKP_PATH_TRACER_GLSL
 
+#include "shared/kernels/path_trace.glsl"
 #include "scene_access.glsl"
 #include "shared/halton.glsl"
 #include "camera_and_lights.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kPathTraceGroupSize) in;
 
-layout(std430, set = 0, binding = 8) buffer Film { vec4 film[]; };  // rgb sum, sample count
-layout(std430, set = 0, binding = 9) buffer Counters { uint counters[]; };
-// counters[0]: samples that produced a non-finite value (dropped); counters[1] (low) and [2] (high
-// word): rays traced from camera-path vertices (the work Russian roulette saves)
-layout(std430, set = 0, binding = 10) readonly buffer RasterDirect { vec4 rasterDirect[]; };
+layout(std430, set = 0, binding = kPathTraceFilmBinding) buffer Film { vec4 film[]; };  // rgb sum, sample count
+layout(std430, set = 0, binding = kPathTraceCounterBinding) buffer Counters { uint counters[]; };
+// counters[kPathTraceCounter*]: dropped non-finite samples, rays traced (shared/kernels/path_trace.glsl)
+layout(std430, set = 0, binding = kPathTraceRasterDirectBinding) readonly buffer RasterDirect { vec4 rasterDirect[]; };
 
 #ifdef GUIDED
 #include "shared/guiding.glsl"
 #ifdef GUIDE_CACHE
-layout(std430, set = 0, binding = 11) readonly buffer CacheCells { ivec4 cacheCells[]; };
-layout(std430, set = 0, binding = 12) readonly buffer CacheCdfs { float cacheCdfs[]; };
-layout(std430, set = 0, binding = 13) readonly buffer CacheIrradiance { vec4 cacheIrradiance[]; };
+layout(std430, set = 0, binding = kPathTraceGuideCellsBinding) readonly buffer CacheCells { ivec4 cacheCells[]; };
+layout(std430, set = 0, binding = kPathTraceGuideCdfsBinding) readonly buffer CacheCdfs { float cacheCdfs[]; };
+layout(std430, set = 0, binding = kPathTraceGuideIrradianceBinding) readonly buffer CacheIrradiance { vec4 cacheIrradiance[]; };
 #else
-#define PHOTON_GRID_BINDING 11
+#define PHOTON_GRID_BINDING kPathTraceGuideBinding
 #include "photon_gather.glsl"
 #endif
 layout(push_constant) uniform Push { PathTraceParams params; GuideParams guide; };
@@ -225,7 +225,7 @@ void main() {
         vec3 l = st.radiance;
         if (addRaster) l += rasterDirect[pixel].rgb;
         if (any(isnan(l)) || any(isinf(l))) {
-            atomicAdd(counters[0], 1u);
+            atomicAdd(counters[kPathTraceCounterNonFinite], 1u);
             l = vec3(0.0f);
         }
         acc += vec4(l, 1.0f);
@@ -233,7 +233,7 @@ void main() {
         if (done < params.sampleCount) st = startPath(params.firstSample + done, streamSeed, px, py);
     }
     film[pixel] = acc;
-    if (atomicAdd(counters[1], segments) + segments < segments) atomicAdd(counters[2], 1u);  // carry
+    if (atomicAdd(counters[kPathTraceCounterSegmentsLow], segments) + segments < segments) atomicAdd(counters[kPathTraceCounterSegmentsHigh], 1u);  // carry
 }
 
 #endif

@@ -8,18 +8,19 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
-#define PHOTON_GRID_BINDING 8
+#include "shared/kernels/deposit.glsl"
+#define PHOTON_GRID_BINDING kPhotonDepositGridBinding
 #include "scene_access.glsl"
 #include "photon_gather.glsl"
 #include "shared/hash.glsl"
 #include "shared/importance.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kDepositGroupSize) in;
 
-layout(std430, set = 0, binding = 10) buffer Slots { GpuPhoton slots[]; };
-layout(std430, set = 0, binding = 11) readonly buffer Importance { vec2 importance[]; };
+layout(std430, set = 0, binding = kPhotonDepositSlotBinding) buffer Slots { GpuPhoton slots[]; };
+layout(std430, set = 0, binding = kPhotonDepositImportanceBinding) readonly buffer Importance { vec2 importance[]; };
 // Per photon of the map's grid, rgb: power redistributed to it (density control, fixed point).
-layout(std430, set = 0, binding = 12) buffer Redistributed { uint redistributed[]; };
+layout(std430, set = 0, binding = kPhotonDepositRedistributedBinding) buffer Redistributed { uint redistributed[]; };
 
 layout(push_constant) uniform Push { PhotonDepositParams params; };
 

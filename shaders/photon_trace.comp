@@ -11,15 +11,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/kernels/photon_trace.glsl"
 #include "scene_access.glsl"
 #include "path_vertex.glsl"
 #include "shared/halton.glsl"
 #include "shared/photon.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kPhotonTraceGroupSize) in;
 
-layout(std430, set = 0, binding = 8) writeonly buffer Photons { GpuPhoton photons[]; };
-layout(std430, set = 0, binding = 9) buffer Counters { uint counters[]; };
+layout(std430, set = 0, binding = kPhotonTracePhotonBinding) writeonly buffer Photons { GpuPhoton photons[]; };
+layout(std430, set = 0, binding = kPhotonTraceCounterBinding) buffer Counters { uint counters[]; };
 
 layout(push_constant) uniform Push { PhotonTraceParams params; };
 

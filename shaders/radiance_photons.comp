@@ -6,15 +6,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/kernels/photon_estimates.glsl"
 #include "shared/sampling.glsl"
 #include "shared/bsdf.glsl"
 #include "shared/photon_render.glsl"
-#define PHOTON_GRID_BINDING 0
+#define PHOTON_GRID_BINDING kRadiancePhotonsGridBinding
 #include "photon_gather.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kPhotonEstimateGroupSize) in;
 
-layout(std430, set = 0, binding = 2) writeonly buffer RadiancePhotons { GpuPhoton radiancePhotons[]; };
+layout(std430, set = 0, binding = kRadiancePhotonsOutputBinding) writeonly buffer RadiancePhotons { GpuPhoton radiancePhotons[]; };
 
 layout(push_constant) uniform Push { RadiancePhotonParams params; };
 

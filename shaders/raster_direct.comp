@@ -3,20 +3,21 @@
 // its mask channel, in float, added to the direct buffer (summed over passes). This is exactly the
 // expectation of the path tracer's next-event estimate at the first vertex for those lights, with
 // the shadow ray replaced by the stencil result (Dmitriev et al. 2002, section 6.1).
-// Reads: scene (bindings 0..7), raster lights (8), masks (9). Writes: direct (10, vec4 per pixel).
+// Reads: scene, raster lights, masks. Writes: direct (vec4 per pixel); shared/kernels/raster_direct.glsl.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/kernels/raster_direct.glsl"
 #include "scene_access.glsl"
 #include "shared/halton.glsl"
 #include "camera_and_lights.glsl"
 #include "raster_light_access.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kRasterDirectGroupSize) in;
 
-layout(std430, set = 0, binding = 8) readonly buffer RasterLights { GpuLight rasterLights[]; };
-layout(std430, set = 0, binding = 9) readonly buffer Masks { uint masks[]; };
-layout(std430, set = 0, binding = 10) buffer Direct { vec4 direct[]; };
+layout(std430, set = 0, binding = kRasterDirectLightBinding) readonly buffer RasterLights { GpuLight rasterLights[]; };
+layout(std430, set = 0, binding = kRasterDirectMaskBinding) readonly buffer Masks { uint masks[]; };
+layout(std430, set = 0, binding = kRasterDirectOutputBinding) buffer Direct { vec4 direct[]; };
 layout(push_constant) uniform Push { RasterDirectParams params; };
 
 void main() {

@@ -2,12 +2,12 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
-#include "shared/photon_grid.glsl"
+#include "shared/kernels/prefix_scan.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kScanGroupSize) in;
 
-layout(std430, set = 0, binding = 0) buffer Data { uint data[]; };
-layout(std430, set = 0, binding = 1) readonly buffer BlockOffsets { uint blockOffsets[]; };
+layout(std430, set = 0, binding = kScanAddDataBinding) buffer Data { uint data[]; };
+layout(std430, set = 0, binding = kScanAddBlockSumBinding) readonly buffer BlockOffsets { uint blockOffsets[]; };
 
 layout(push_constant) uniform Push { uint count; } push;
 

@@ -3,16 +3,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
-#include "shared/photon_grid.glsl"
+#include "shared/kernels/prefix_scan.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kScanGroupSize) in;
 
-layout(std430, set = 0, binding = 0) buffer Data { uint data[]; };
-layout(std430, set = 0, binding = 1) writeonly buffer BlockSums { uint blockSums[]; };
+layout(std430, set = 0, binding = kScanBlocksDataBinding) buffer Data { uint data[]; };
+layout(std430, set = 0, binding = kScanBlocksBlockSumBinding) writeonly buffer BlockSums { uint blockSums[]; };
 
 layout(push_constant) uniform Push { uint count; } push;
 
-shared uint threadTotals[kGridGroupSize];
+shared uint threadTotals[kScanGroupSize];
 
 void main() {
     uint thread = gl_LocalInvocationID.x;
@@ -27,7 +27,7 @@ void main() {
     // Inclusive Hillis-Steele scan of the per-thread totals.
     threadTotals[thread] = sum;
     barrier();
-    for (uint offset = 1u; offset < kGridGroupSize; offset *= 2u) {
+    for (uint offset = 1u; offset < kScanGroupSize; offset *= 2u) {
         uint add = thread >= offset ? threadTotals[thread - offset] : 0u;
         barrier();
         threadTotals[thread] += add;
@@ -39,5 +39,5 @@ void main() {
         if (i < push.count) data[i] = running;
         running += items[k];
     }
-    if (thread == kGridGroupSize - 1u) blockSums[gl_WorkGroupID.x] = threadTotals[thread];
+    if (thread == kScanGroupSize - 1u) blockSums[gl_WorkGroupID.x] = threadTotals[thread];
 }

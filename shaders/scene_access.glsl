@@ -1,23 +1,23 @@
 // GLSL-only scene access shared by the integrator shaders: buffer declarations, surface
 // interaction at a hit, texture lookups and next-event light sampling. Bindings are the ones
-// listed in host/gpu_scene/scene_buffers.h (SceneBinding).
+// named in shared/kernels/scene.glsl.
 #ifndef VKP_SCENE_ACCESS_GLSL
 #define VKP_SCENE_ACCESS_GLSL
 
 #include "shared/gpu_types.glsl"
+#include "shared/kernels/scene.glsl"
 #include "shared/constants.glsl"
 #include "shared/sampling.glsl"
 #include "shared/bsdf.glsl"
 
-layout(std430, set = 0, binding = 0) readonly buffer Triangles { GpuTriangle triangles[]; };
-layout(std430, set = 0, binding = 1) readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Shading { GpuTriangleShading shading[]; };
-layout(std430, set = 0, binding = 3) readonly buffer Materials { GpuMaterial materials[]; };
-layout(std430, set = 0, binding = 4) readonly buffer Lights { GpuLight lights[]; };
-layout(std430, set = 0, binding = 5) readonly buffer LightCdf { float lightCdf[]; };
-layout(std430, set = 0, binding = 6) readonly buffer Textures { GpuTexture textures[]; };
-layout(std430, set = 0, binding = 7) readonly buffer Texels { uint texels[]; };
-const uint kSceneBindingCount = 8u;
+layout(std430, set = 0, binding = kSceneTrianglesBinding) readonly buffer Triangles { GpuTriangle triangles[]; };
+layout(std430, set = 0, binding = kSceneBvhNodesBinding) readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };
+layout(std430, set = 0, binding = kSceneShadingBinding) readonly buffer Shading { GpuTriangleShading shading[]; };
+layout(std430, set = 0, binding = kSceneMaterialsBinding) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, set = 0, binding = kSceneLightsBinding) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, set = 0, binding = kSceneLightCdfBinding) readonly buffer LightCdf { float lightCdf[]; };
+layout(std430, set = 0, binding = kSceneTexturesBinding) readonly buffer Textures { GpuTexture textures[]; };
+layout(std430, set = 0, binding = kSceneTexelsBinding) readonly buffer Texels { uint texels[]; };
 
 #include "shared/intersect.glsl"
 #include "shared/bvh_traverse.glsl"

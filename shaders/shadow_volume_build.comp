@@ -6,18 +6,19 @@
 //     sides = silhouette edges (facing triangle whose neighbour across the edge does not face);
 //   everything else: each triangle, turned to face the light, gets its own closed volume, so open
 //     and non-manifold meshes shadow correctly at the cost of more fill.
-// Reads: shadow triangles (binding 0), raster lights (binding 1). Writes: volume vertices (2).
+// Reads: shadow triangles, raster lights. Writes: volume vertices (shared/kernels/raster_direct.glsl).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/kernels/raster_direct.glsl"
 #include "shared/gpu_types.glsl"
 #include "shared/shadow_volume.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kShadowVolumeGroupSize) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer Tris { GpuShadowTriangle tris[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
-layout(std430, set = 0, binding = 2) writeonly buffer Volumes { vec4 volumeVertices[]; };
+layout(std430, set = 0, binding = kShadowVolumeTriangleBinding) readonly buffer Tris { GpuShadowTriangle tris[]; };
+layout(std430, set = 0, binding = kShadowVolumeLightBinding) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, set = 0, binding = kShadowVolumeVertexBinding) writeonly buffer Volumes { vec4 volumeVertices[]; };
 layout(push_constant) uniform Push { ShadowVolumeParams params; };
 
 // The light as a homogeneous point: (position, 1), or (-direction, 0) for directional lights.

@@ -10,6 +10,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "shared/kernels/photon_estimates.glsl"
 #include "scene_access.glsl"
 #include "path_vertex.glsl"
 #include "shared/halton.glsl"
@@ -17,11 +18,11 @@
 #include "shared/visible_point.glsl"
 #include "camera_and_lights.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kPhotonEstimateGroupSize) in;
 
-layout(std430, set = 0, binding = 8) buffer Film { vec4 film[]; };  // rgb sum, sample count
-layout(std430, set = 0, binding = 9) writeonly buffer VisiblePoints { GpuVisiblePoint visiblePoints[]; };
-layout(std430, set = 0, binding = 10) readonly buffer RasterDirect { vec4 rasterDirect[]; };  // --direct raster
+layout(std430, set = 0, binding = kVisiblePointsFilmBinding) buffer Film { vec4 film[]; };  // rgb sum, sample count
+layout(std430, set = 0, binding = kVisiblePointsPointBinding) writeonly buffer VisiblePoints { GpuVisiblePoint visiblePoints[]; };
+layout(std430, set = 0, binding = kVisiblePointsRasterDirectBinding) readonly buffer RasterDirect { vec4 rasterDirect[]; };  // --direct raster
 
 layout(push_constant) uniform Push { VisiblePointParams params; };
 

@@ -9,8 +9,9 @@
 #include "gpu_test_support.h"
 #include "scene/gltf_loader.h"
 #include "shared/intersect.glsl"
+#include "shaders/test_kernels.glsl"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 namespace {
@@ -36,11 +37,14 @@ std::vector<TestHit> traceOnGpu(const Bvh& bvh, const std::vector<gpu::GpuTriang
     vk::Buffer nodeBuffer = vk::makeStorageBuffer(context, "nodes", bvh.nodes);
     vk::Buffer triBuffer = vk::makeStorageBuffer(context, "triangles", tris);
     vk::Buffer hitBuffer(context, "hits", rays.size() * sizeof(TestHit), vk::kStorageUsage);
-    vk::ComputeKernel kernel(context, "bvh_trace_test.comp", 4, 4);
-    kernel.bind({&rayBuffer, &nodeBuffer, &triBuffer, &hitBuffer});
+    vk::Kernel<gpu::BvhTestKernel> kernel(context);
+    kernel.bind(gpu::kBvhTestRayBinding, rayBuffer);
+    kernel.bind(gpu::kBvhTestNodeBinding, nodeBuffer);
+    kernel.bind(gpu::kBvhTestTriangleBinding, triBuffer);
+    kernel.bind(gpu::kBvhTestHitBinding, hitBuffer);
     const auto count = static_cast<uint32_t>(rays.size());
     context.submitAndWait([&](VkCommandBuffer cmd) {
-        kernel.record(cmd, vk::groupCount(count, 64), count);
+        kernel.record(cmd, count, count);
         vk::computeToHostBarrier(cmd);
     });
     return hitBuffer.download<TestHit>();

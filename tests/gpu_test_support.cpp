@@ -14,9 +14,17 @@ namespace {
 size_t g_seenMessages = 0;
 }
 
+void registerTestShaders() {
+    static const bool registered = [] {
+        vk::registerShaderTable(embedded::vkphoton_test_shaders_table);
+        return true;
+    }();
+    (void)registered;
+}
+
 vk::Context& gpu() {
     static std::unique_ptr<vk::Context> context = [] {
-        vk::registerShaderTable(embedded::vkphoton_test_shaders_table);
+        registerTestShaders();
         vk::ContextOptions options;
         options.validate = true;
         return std::make_unique<vk::Context>(options);

@@ -10,8 +10,11 @@
 
 namespace vkp::test {
 
-// The shared context (created on first use, validation always on).
+// The shared context (created on first use, validation always on); registers the test shaders.
 vk::Context& gpu();
+
+// Makes the test shaders (tests/shaders/) visible to vk::shaderCode() without creating a device.
+void registerTestShaders();
 
 // Fills and frees `bytes` of device memory with a pattern that reads as valid photons, so that a
 // pass reading memory it never wrote gives different results in the next run.

@@ -17,7 +17,8 @@
 #include "render/renderer.h"
 #include "test_scenes.h"
 #include "util/errors.h"
-#include "vk/compute_kernel.h"
+#include "shaders/test_kernels.glsl"
+#include "vk/kernel.h"
 
 namespace vkp {
 namespace {
@@ -29,30 +30,26 @@ public:
 
     std::string name() const override { return "constant"; }
     void prepare(const Frame& frame, const Film& film) override {
-        m_kernel = std::make_unique<vk::ComputeKernel>(m_scene.context(), "constant_film.comp", 1,
-                                                       uint32_t(sizeof(Push)));
-        m_kernel->bind(0, film.sums());
+        m_kernel = std::make_unique<vk::Kernel<gpu::ConstantFilmKernel>>(m_scene.context());
+        m_kernel->bind(gpu::kConstantFilmBinding, film.sums());
         m_pixels = frame.pixels();
     }
     uint32_t maxSamplesPerBatch() const override { return 1024; }
     void recordSamples(VkCommandBuffer cmd, uint32_t, uint32_t count) override {
-        const Push push{glm::vec4(m_value), uint32_t(m_pixels), count};
-        m_kernel->record(cmd, vk::groupCount(m_pixels, 64), push);
+        gpu::ConstantFilmParams push{};
+        push.radiance = glm::vec4(m_value);
+        push.pixels = uint32_t(m_pixels);
+        push.sampleCount = count;
+        m_kernel->record(cmd, m_pixels, push);
         vk::computeBarrier(cmd);
     }
     void report(Stats& stats) const override { stats.set("constant.value", m_value); }
 
 private:
-    struct Push {
-        glm::vec4 radiance;
-        uint32_t pixels;
-        uint32_t sampleCount;
-        uint32_t pad[2];
-    };
     const GpuScene& m_scene;
     float m_value;
     uint64_t m_pixels = 0;
-    std::unique_ptr<vk::ComputeKernel> m_kernel;
+    std::unique_ptr<vk::Kernel<gpu::ConstantFilmKernel>> m_kernel;
 };
 
 // Its settings and command-line option, as the registry asks.

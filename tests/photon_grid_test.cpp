@@ -17,6 +17,8 @@
 #include "shared/photon_estimate.glsl"
 #include "shared/photon_grid.glsl"
 #include "shared/sampling.glsl"
+#include "shaders/test_kernels.glsl"
+#include "vk/kernel.h"
 
 namespace vkp {
 namespace {
@@ -81,16 +83,6 @@ struct GatherQuery {
     uint32_t k;
 };
 
-struct GatherTestPush {
-    gpu::PhotonGridView grid;
-    gpu::BsdfParams bsdf;
-    uint32_t count;
-    float coneK;
-    uint32_t requiredFlags;
-    uint32_t rejectedFlags;
-};
-static_assert(sizeof(GatherTestPush) == 64);
-
 const glm::vec3 kTestWo = glm::normalize(glm::vec3(0.3f, -0.2f, 1.0f));  // as in photon_gather_test.comp
 
 bool countsAt(const gpu::GpuPhoton& p, glm::vec3 n, uint32_t required, uint32_t rejected) {
@@ -120,10 +112,14 @@ TEST_F(PhotonGridTest, GathersMatchBruteForce) {
     vk::Buffer fixedOut(context, "fixed results", queries.size() * sizeof(glm::vec4), vk::kStorageUsage);
     constexpr uint32_t kStride = gpu::kMaxGatherK + 2;
     vk::Buffer nearestOut(context, "nearest results", queries.size() * kStride * sizeof(uint32_t), vk::kStorageUsage);
-    vk::ComputeKernel kernel(context, "photon_gather_test.comp", 5, sizeof(GatherTestPush));
-    kernel.bind({&queryBuffer, &fixedOut, &nearestOut, &grid.cellStart(), &grid.photons()});
+    vk::Kernel<gpu::GatherTestKernel> kernel(context);
+    kernel.bind(gpu::kGatherTestQueryBinding, queryBuffer);
+    kernel.bind(gpu::kGatherTestFixedBinding, fixedOut);
+    kernel.bind(gpu::kGatherTestNearestBinding, nearestOut);
+    kernel.bind(gpu::kGatherTestGridBinding, grid.cellStart());
+    kernel.bind(gpu::kGatherTestGridBinding + 1, grid.photons());
 
-    GatherTestPush push{};
+    gpu::GatherTestParams push{};
     push.grid = grid.view(1.0f);
     push.bsdf.baseColor = glm::vec3(0.8f, 0.6f, 0.4f);
     push.bsdf.metallic = 0.0f;
@@ -136,7 +132,7 @@ TEST_F(PhotonGridTest, GathersMatchBruteForce) {
     context.submitAndWait([&](VkCommandBuffer cmd) {
         grid.record(cmd);
         vk::computeBarrier(cmd);
-        kernel.record(cmd, vk::groupCount(queries.size(), 64), push);
+        kernel.record(cmd, queries.size(), push);
         vk::computeToHostBarrier(cmd);
     });
     const auto fixed = fixedOut.download<glm::vec4>();

@@ -16,8 +16,9 @@
 #include "passes/shadow_volume_pass.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
+#include "shaders/test_kernels.glsl"
 #include "test_scenes.h"
-#include "vk/compute_kernel.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 namespace {
@@ -58,17 +59,17 @@ MaskAgreement compareMaskWithRays(const Scene& scene, const Camera& camera, uint
 
     const uint64_t pixels = uint64_t(width) * height;
     vk::Buffer out(context, "visibility", pixels * 3 * sizeof(uint32_t), vk::kStorageUsage);
-    vk::ComputeKernel kernel(context, "shadow_visibility_test.comp", 10, sizeof(gpu::RasterDirectParams));
+    vk::Kernel<gpu::ShadowTestKernel> kernel(context);
     kernel.bind(buffers.bindings());
-    kernel.bind(8, pass.lights());
-    kernel.bind(9, out);
+    kernel.bind(gpu::kShadowTestLightBinding, pass.lights());
+    kernel.bind(gpu::kShadowTestOutputBinding, out);
     gpu::RasterDirectParams params{};
     params.camera = gpuCamera;
     params.width = width;
     params.height = height;
     params.lightCount = static_cast<uint32_t>(lights.size());
     context.submitAndWait([&](VkCommandBuffer cmd) {
-        kernel.record(cmd, vk::groupCount(pixels, 64), params);
+        kernel.record(cmd, pixels, params);
         vk::computeBarrier(cmd);
     });
     const auto traced = out.download<uint32_t>();

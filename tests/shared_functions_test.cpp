@@ -7,8 +7,9 @@
 
 #include "gpu_test_support.h"
 #include "shared/harness_functions.glsl"
+#include "shaders/test_kernels.glsl"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 namespace {
@@ -36,12 +37,12 @@ std::vector<glm::uvec4> runOnGpu(uint32_t function, const std::vector<HarnessInp
     vk::Context& context = test::gpu();
     vk::Buffer in = vk::makeStorageBuffer(context, "harness inputs", inputs);
     vk::Buffer out(context, "harness outputs", inputs.size() * sizeof(glm::uvec4), vk::kStorageUsage);
-    vk::ComputeKernel kernel(context, "shared_functions_test.comp", 2, 8);
-    kernel.bind(0, in);
-    kernel.bind(1, out);
-    const uint32_t push[2] = {static_cast<uint32_t>(inputs.size()), function};
+    vk::Kernel<gpu::HarnessKernel> kernel(context);
+    kernel.bind(gpu::kHarnessInputBinding, in);
+    kernel.bind(gpu::kHarnessOutputBinding, out);
+    const gpu::HarnessParams push{static_cast<uint32_t>(inputs.size()), function};
     context.submitAndWait([&](VkCommandBuffer cmd) {
-        kernel.record(cmd, vk::groupCount(inputs.size(), gpu::kTestGroupSize), push, sizeof(push));
+        kernel.record(cmd, inputs.size(), push);
         vk::computeToHostBarrier(cmd);
     });
     return out.download<glm::uvec4>();

@@ -6,21 +6,15 @@
 
 #include "shared/sampling.glsl"
 #include "shared/bsdf.glsl"
-#define PHOTON_GRID_BINDING 0
+#include "bench_kernels.glsl"
+#define PHOTON_GRID_BINDING kGatherBenchGridBinding
 #include "photon_gather.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kBenchGroupSize) in;
 
-layout(std430, set = 0, binding = 2) writeonly buffer Results { float results[]; };
+layout(std430, set = 0, binding = kGatherBenchResultBinding) writeonly buffer Results { float results[]; };
 
-layout(push_constant) uniform Push {
-    PhotonGridView grid;
-    uint queries;
-    uint stride;
-    uint mode;
-    uint k;
-    float radius;
-} push;
+layout(push_constant) uniform Push { GatherBenchParams push; };
 
 void main() {
     uint q = gl_GlobalInvocationID.x;

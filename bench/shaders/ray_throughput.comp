@@ -4,19 +4,14 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "bench_kernels.glsl"
 #include "scene_access.glsl"
 #include "shared/halton.glsl"
 
-layout(local_size_x = 64) in;
-layout(std430, set = 0, binding = 8) buffer Result { uint hitCount[]; };
+layout(local_size_x = kBenchGroupSize) in;
+layout(std430, set = 0, binding = kRayBenchResultBinding) buffer Result { uint hitCount[]; };
 
-layout(push_constant) uniform Push {
-    GpuCamera camera;
-    uint width;
-    uint height;
-    uint mode;
-    uint seed;
-} push;
+layout(push_constant) uniform Push { RayBenchParams push; };
 
 void main() {
     uint pixel = gl_GlobalInvocationID.x;

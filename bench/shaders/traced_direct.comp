@@ -1,19 +1,20 @@
 // Benchmark counterpart of shaders/raster_direct.comp with the mask replaced by a shadow ray
 // (lightVisible, as the path tracer's next-event estimate traces it): the exact direct light of
 // one raster light per dispatch (lavapipe's loop budget: one shadow ray per invocation and
-// dispatch), added to the direct buffer. Bindings: scene 0..7, raster lights 8, direct 9.
+// dispatch), added to the direct buffer. Bindings: bench_kernels.glsl.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "bench_kernels.glsl"
 #include "scene_access.glsl"
 #include "shared/halton.glsl"
 #include "camera_and_lights.glsl"
 #include "raster_light_access.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kBenchGroupSize) in;
 
-layout(std430, set = 0, binding = 8) readonly buffer RasterLights { GpuLight rasterLights[]; };
-layout(std430, set = 0, binding = 9) buffer Direct { vec4 direct[]; };
+layout(std430, set = 0, binding = kTracedDirectLightBinding) readonly buffer RasterLights { GpuLight rasterLights[]; };
+layout(std430, set = 0, binding = kTracedDirectOutputBinding) buffer Direct { vec4 direct[]; };
 layout(push_constant) uniform Push { RasterDirectParams params; };
 
 void main() {

@@ -154,7 +154,16 @@ SceneBuffers::SceneBuffers(vk::Context& context, const SceneArrays& a)
       m_lightCount(static_cast<uint32_t>(a.lights.size())) {}
 
 std::vector<const vk::Buffer*> SceneBuffers::bindings() const {
-    return {&m_triangles, &m_nodes, &m_shading, &m_materials, &m_lights, &m_lightCdf, &m_textures, &m_texels};
+    std::vector<const vk::Buffer*> b(gpu::kSceneBindingCount);
+    b[gpu::kSceneTrianglesBinding] = &m_triangles;
+    b[gpu::kSceneBvhNodesBinding] = &m_nodes;
+    b[gpu::kSceneShadingBinding] = &m_shading;
+    b[gpu::kSceneMaterialsBinding] = &m_materials;
+    b[gpu::kSceneLightsBinding] = &m_lights;
+    b[gpu::kSceneLightCdfBinding] = &m_lightCdf;
+    b[gpu::kSceneTexturesBinding] = &m_textures;
+    b[gpu::kSceneTexelsBinding] = &m_texels;
+    return b;
 }
 
 uint64_t SceneBuffers::bytes() const {

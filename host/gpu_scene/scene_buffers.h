@@ -1,6 +1,6 @@
 // The scene on the GPU: BVH-ordered triangles, BVH nodes, shading attributes, materials, lights
-// with their selection CDF, and textures. Bound at bindings 0..7 of every integrator shader
-// (shaders/scene_access.glsl declares the same order).
+// with their selection CDF, and textures. Bound at the bindings shared/kernels/scene.glsl names
+// (0..7) of every kernel that reads the scene (shaders/scene_access.glsl declares them).
 #pragma once
 
 #include <cstdint>
@@ -8,6 +8,7 @@
 
 #include "scene/scene.h"
 #include "shared/gpu_types.glsl"
+#include "shared/kernels/scene.glsl"
 #include "vk/buffer.h"
 
 namespace vkp {
@@ -38,7 +39,7 @@ class SceneBuffers {
 public:
     SceneBuffers(vk::Context& context, const SceneArrays& arrays);
 
-    // The eight scene buffers in binding order.
+    // The scene buffers in binding order (kSceneBindingCount of them, from binding 0).
     std::vector<const vk::Buffer*> bindings() const;
     uint32_t lightCount() const { return m_lightCount; }
     uint64_t bytes() const;

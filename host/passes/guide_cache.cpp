@@ -21,15 +21,19 @@ GuideCache::GuideCache(vk::Context& context, const vk::Buffer& photons, uint32_t
              vk::kStorageUsage),
       m_irradiance(context, "guide cache irradiance",
                    VkDeviceSize(m_grid.tableSize()) * gpu::kNormalBins * sizeof(glm::vec4), vk::kStorageUsage),
-      m_build(context, "guide_cache_build.comp", 5, sizeof(gpu::GuideParams)) {
+      m_build(context) {
     m_params.grid = m_grid.view(params.grid.photonPower);
-    m_build.bind({&m_grid.cellStart(), &m_grid.photons(), &m_cells, &m_cdfs, &m_irradiance});
+    m_build.bind(gpu::kGuideCacheCellStartBinding, m_grid.cellStart());
+    m_build.bind(gpu::kGuideCachePhotonBinding, m_grid.photons());
+    m_build.bind(gpu::kGuideCacheCellsBinding, m_cells);
+    m_build.bind(gpu::kGuideCacheCdfsBinding, m_cdfs);
+    m_build.bind(gpu::kGuideCacheIrradianceBinding, m_irradiance);
 }
 
 void GuideCache::record(VkCommandBuffer cmd) const {
     m_grid.record(cmd);
     vk::computeBarrier(cmd);
-    m_build.record(cmd, vk::groupCount(uint64_t(m_grid.tableSize()) * gpu::kNormalBins, 64), m_params);
+    m_build.record(cmd, uint64_t(m_grid.tableSize()) * gpu::kNormalBins, m_params);
 }
 
 }  // namespace vkp

@@ -8,8 +8,9 @@
 
 #include "passes/photon_grid.h"
 #include "shared/guiding.glsl"
+#include "shared/kernels/guide_cache.glsl"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 
@@ -37,7 +38,7 @@ private:
     vk::Buffer m_cells;
     vk::Buffer m_cdfs;
     vk::Buffer m_irradiance;
-    vk::ComputeKernel m_build;
+    vk::Kernel<gpu::GuideCacheBuildKernel> m_build;
 };
 
 }  // namespace vkp

@@ -8,10 +8,12 @@ PhotonCompaction::PhotonCompaction(vk::Context& context, const vk::Buffer& slots
     : m_params(params), m_maxSlots(maxSlots),
       m_ranks(context, "photon compaction ranks", (VkDeviceSize(maxSlots) + 1) * sizeof(uint32_t), vk::kStorageUsage),
       m_scan(context, m_ranks, maxSlots + 1),
-      m_mark(context, "compact_mark.comp", 4, sizeof(gpu::PhotonCompactParams)),
-      m_scatter(context, "compact_scatter.comp", 4, sizeof(gpu::PhotonCompactParams)),
-      m_advance(context, "compact_advance.comp", 4, sizeof(gpu::PhotonCompactParams)) {
-    const std::vector<const vk::Buffer*> bindings{&slots, &m_ranks, &map, &state};
+      m_mark(context), m_scatter(context), m_advance(context) {
+    std::vector<const vk::Buffer*> bindings(gpu::kCompactBindingCount);
+    bindings[gpu::kCompactSlotBinding] = &slots;
+    bindings[gpu::kCompactRankBinding] = &m_ranks;
+    bindings[gpu::kCompactMapBinding] = &map;
+    bindings[gpu::kCompactStateBinding] = &state;
     m_mark.bind(bindings);
     m_scatter.bind(bindings);
     m_advance.bind(bindings);
@@ -22,12 +24,12 @@ void PhotonCompaction::record(VkCommandBuffer cmd, uint32_t slotCount) const {
     params.slotCount = slotCount;
     params.scannedCount = m_maxSlots;
     // Marks cover every scanned entry (zeros past slotCount), so the scan's length is fixed.
-    m_mark.record(cmd, vk::groupCount(uint64_t(m_maxSlots) + 1, gpu::kGridGroupSize), params);
+    m_mark.record(cmd, uint64_t(m_maxSlots) + 1, params);
     vk::computeBarrier(cmd);
     m_scan.record(cmd);
-    m_scatter.record(cmd, vk::groupCount(slotCount, gpu::kGridGroupSize), params);
+    m_scatter.record(cmd, slotCount, params);
     vk::computeBarrier(cmd);
-    m_advance.record(cmd, 1, params);
+    m_advance.record(cmd, 1, params);  // one invocation
 }
 
 }  // namespace vkp

@@ -5,9 +5,10 @@
 #pragma once
 
 #include "passes/prefix_scan.h"
+#include "shared/kernels/compaction.glsl"
 #include "shared/photon_grid.glsl"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 
@@ -27,9 +28,9 @@ private:
     uint32_t m_maxSlots;
     vk::Buffer m_ranks;
     PrefixScan m_scan;
-    vk::ComputeKernel m_mark;
-    vk::ComputeKernel m_scatter;
-    vk::ComputeKernel m_advance;
+    vk::Kernel<gpu::CompactMarkKernel> m_mark;
+    vk::Kernel<gpu::CompactScatterKernel> m_scatter;
+    vk::Kernel<gpu::CompactAdvanceKernel> m_advance;
 };
 
 }  // namespace vkp

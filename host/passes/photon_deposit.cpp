@@ -2,9 +2,6 @@
 
 #include <glm/glm.hpp>
 
-#include "vk/compute_kernel.h"
-#include "vk/context.h"
-
 namespace vkp {
 
 PhotonDeposit::PhotonDeposit(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& importanceTable,
@@ -15,26 +12,30 @@ PhotonDeposit::PhotonDeposit(vk::Context& context, const SceneBuffers& scene, co
       m_redistributed(context, "deposit redistributed power",
                       std::max<VkDeviceSize>(16, VkDeviceSize(mapGrid.slotCount()) * 3 * sizeof(uint32_t)),
                       vk::kStorageUsage),
-      m_lookup(context, "importance_lookup.comp", 3, sizeof(gpu::ImportanceGridParams)),
-      m_deposit(context, "photon_deposit.comp", scene,
-                {&mapGrid.cellStart(), &mapGrid.photons(), &slots, &m_importance, &m_redistributed},
-                sizeof(gpu::PhotonDepositParams)),
-      m_redistribute(context, "deposit_redistribute.comp", 3, sizeof(gpu::RedistributeParams)) {
-    m_lookup.bind({&importanceTable, &slots, &m_importance});
-    m_redistribute.bind({&map, &mapGrid.sortedSlots(), &m_redistributed});
-    context.submitAndWait([&](VkCommandBuffer cmd) { m_redistributed.fillZero(cmd); });
+      m_lookup(context, importanceTable, slots, m_importance), m_deposit(context), m_redistribute(context) {
+    m_deposit.bind(scene.bindings());
+    m_deposit.bind(gpu::kPhotonDepositGridBinding, mapGrid.cellStart());
+    m_deposit.bind(gpu::kPhotonDepositGridBinding + 1, mapGrid.photons());
+    m_deposit.bind(gpu::kPhotonDepositSlotBinding, slots);
+    m_deposit.bind(gpu::kPhotonDepositImportanceBinding, m_importance);
+    m_deposit.bind(gpu::kPhotonDepositRedistributedBinding, m_redistributed);
+    m_redistribute.bind(gpu::kRedistributeMapBinding, map);
+    m_redistribute.bind(gpu::kRedistributeSortedSlotBinding, mapGrid.sortedSlots());
+    m_redistribute.bind(gpu::kRedistributeRedistributedBinding, m_redistributed);
 }
+
+void PhotonDeposit::recordClear(VkCommandBuffer cmd) const { m_redistributed.fillZero(cmd); }
 
 void PhotonDeposit::recordRedistribution(VkCommandBuffer cmd, uint32_t gridPhotons) const {
     gpu::RedistributeParams params{};
     params.gridPhotons = gridPhotons;
-    m_redistribute.record(cmd, vk::groupCount(gridPhotons, 64), params);
+    m_redistribute.record(cmd, gridPhotons, params);
 }
 
 void PhotonDeposit::record(VkCommandBuffer cmd, gpu::ImportanceGridParams lookup,
                            const gpu::PhotonDepositParams& params) const {
     lookup.slotCount = params.slotCount;
-    m_lookup.record(cmd, vk::groupCount(params.slotCount, 64), lookup);
+    m_lookup.record(cmd, lookup);
     vk::computeBarrier(cmd);
     m_deposit.record(cmd, params.slotCount, params);
 }

@@ -1,12 +1,17 @@
 // Importance-driven deposition of one traced chunk of photon slots (docs/importance-deposition.md):
 // importance_lookup.comp senses the importons around every photon, photon_deposit.comp keeps
-// or drops each photon (and reweights the kept ones) in place, before the map's compaction.
+// or drops each photon (and reweights the kept ones) in place, before the map's compaction;
+// density control's deposit_redistribute.comp adds rejected photons' power to the map's photons.
+// Reads the scene, the importance grid, the map's grid; writes the chunk's slots and the map.
 #pragma once
 
+#include "gpu_scene/scene_buffers.h"
+#include "passes/importance_lookup_pass.h"
 #include "passes/photon_grid.h"
-#include "passes/scene_pass.h"
 #include "shared/importance.glsl"
+#include "shared/kernels/deposit.glsl"
 #include "vk/buffer.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 
@@ -18,12 +23,16 @@ public:
     PhotonDeposit(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& importanceTable,
                   const vk::Buffer& slots, uint32_t maxSlots, const vk::Buffer& map, const PhotonGrid& mapGrid);
 
+    // Zeroes the power handed to the map's photons (a transfer): record it once, before the first
+    // record(), followed by a transfer-to-compute barrier.
+    void recordClear(VkCommandBuffer cmd) const;
+
     // Records the lookup and the decision for params.slotCount slots (lookup.slotCount is set
     // from it); the caller places a barrier before (after the slot writes) and after.
     void record(VkCommandBuffer cmd, gpu::ImportanceGridParams lookup, const gpu::PhotonDepositParams& params) const;
 
     // Density control with redistribution, after record(): adds the power handed to the grid's
-    // `gridPhotons` photons to them in the map. Barriers as for record().
+    // `gridPhotons` photons to them in the map (and zeroes it again). Barriers as for record().
     void recordRedistribution(VkCommandBuffer cmd, uint32_t gridPhotons) const;
 
     uint64_t bytes() const { return m_importance.size() + m_redistributed.size(); }
@@ -31,9 +40,9 @@ public:
 private:
     vk::Buffer m_importance;     // per slot: importance density, largest path importance
     vk::Buffer m_redistributed;  // per grid photon, rgb: power handed to it (fixed point), zero between rounds
-    vk::ComputeKernel m_lookup;
-    ScenePass m_deposit;
-    vk::ComputeKernel m_redistribute;
+    ImportanceLookupPass m_lookup;
+    vk::Kernel<gpu::PhotonDepositKernel> m_deposit;
+    vk::Kernel<gpu::DepositRedistributeKernel> m_redistribute;
 };
 
 }  // namespace vkp

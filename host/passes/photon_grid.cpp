@@ -41,12 +41,14 @@ PhotonGrid::PhotonGrid(vk::Context& context, const vk::Buffer& photons, uint32_t
       m_gridPhotons(context, "photon grid photons", atLeast16(VkDeviceSize(slotCount) * sizeof(gpu::GpuPhoton)),
                     vk::kStorageUsage),
       m_scan(context, m_cellStart, m_params.tableMask + 2),
-      m_count(context, "grid_count.comp", 5, sizeof(gpu::PhotonGridParams)),
-      m_scatter(context, "grid_scatter.comp", 5, sizeof(gpu::PhotonGridParams)),
-      m_sortCells(context, "grid_sort_cells.comp", 5, sizeof(gpu::PhotonGridParams)),
-      m_copy(context, "grid_copy.comp", 5, sizeof(gpu::PhotonGridParams)) {
+      m_count(context), m_scatter(context), m_sortCells(context), m_copy(context) {
     setCellSize(settings.cellSize);
-    const std::vector<const vk::Buffer*> bindings{&photons, &m_cellStart, &m_cursor, &m_sortedSlots, &m_gridPhotons};
+    std::vector<const vk::Buffer*> bindings(gpu::kGridBindingCount);
+    bindings[gpu::kGridSlotBinding] = &photons;
+    bindings[gpu::kGridCellStartBinding] = &m_cellStart;
+    bindings[gpu::kGridCursorBinding] = &m_cursor;
+    bindings[gpu::kGridSortedSlotBinding] = &m_sortedSlots;
+    bindings[gpu::kGridPhotonBinding] = &m_gridPhotons;
     m_count.bind(bindings);
     m_scatter.bind(bindings);
     m_sortCells.bind(bindings);
@@ -61,20 +63,19 @@ void PhotonGrid::setCellSize(float cellSize) {
 }
 
 void PhotonGrid::record(VkCommandBuffer cmd) const {
-    const uint32_t slotGroups = vk::groupCount(m_params.slotCount, gpu::kGridGroupSize);
     m_cellStart.fillZero(cmd);
     vk::transferToComputeBarrier(cmd);
-    m_count.record(cmd, slotGroups, m_params);
+    m_count.record(cmd, m_params.slotCount, m_params);
     vk::computeBarrier(cmd);
     m_scan.record(cmd);
     const VkBufferCopy region{0, 0, m_cursor.size()};
     vkCmdCopyBuffer(cmd, m_cellStart.handle(), m_cursor.handle(), 1, &region);
     vk::transferToComputeBarrier(cmd);
-    m_scatter.record(cmd, slotGroups, m_params);
+    m_scatter.record(cmd, m_params.slotCount, m_params);
     vk::computeBarrier(cmd);
-    m_sortCells.record(cmd, vk::groupCount(tableSize(), gpu::kGridGroupSize), m_params);
+    m_sortCells.record(cmd, tableSize(), m_params);
     vk::computeBarrier(cmd);
-    m_copy.record(cmd, slotGroups, m_params);
+    m_copy.record(cmd, m_params.slotCount, m_params);
 }
 
 gpu::PhotonGridView PhotonGrid::view(float photonPower) const {

@@ -7,9 +7,10 @@
 #include <cstdint>
 
 #include "passes/prefix_scan.h"
+#include "shared/kernels/grid_build.glsl"
 #include "shared/photon_grid.glsl"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 
@@ -56,10 +57,10 @@ private:
     vk::Buffer m_sortedSlots;
     vk::Buffer m_gridPhotons;
     PrefixScan m_scan;
-    vk::ComputeKernel m_count;
-    vk::ComputeKernel m_scatter;
-    vk::ComputeKernel m_sortCells;
-    vk::ComputeKernel m_copy;
+    vk::Kernel<gpu::GridCountKernel> m_count;
+    vk::Kernel<gpu::GridScatterKernel> m_scatter;
+    vk::Kernel<gpu::GridSortCellsKernel> m_sortCells;
+    vk::Kernel<gpu::GridCopyKernel> m_copy;
 };
 
 }  // namespace vkp

@@ -1,22 +1,17 @@
 #include "passes/photon_trace_pass.h"
 
 namespace vkp {
-namespace {
-constexpr uint32_t kPhotonBinding = 8;
-constexpr uint32_t kCounterBinding = 9;
-constexpr uint32_t kGroupSize = 64;  // local_size_x of photon_trace.comp
-}  // namespace
 
 PhotonTracePass::PhotonTracePass(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& photons,
                                  const vk::Buffer& counters)
-    : m_kernel(context, "photon_trace.comp", kCounterBinding + 1, sizeof(gpu::PhotonTraceParams)) {
+    : m_kernel(context) {
     m_kernel.bind(scene.bindings());
-    m_kernel.bind(kPhotonBinding, photons);
-    m_kernel.bind(kCounterBinding, counters);
+    m_kernel.bind(gpu::kPhotonTracePhotonBinding, photons);
+    m_kernel.bind(gpu::kPhotonTraceCounterBinding, counters);
 }
 
 void PhotonTracePass::record(VkCommandBuffer cmd, const gpu::PhotonTraceParams& params) const {
-    m_kernel.record(cmd, vk::groupCount(params.pathCount, kGroupSize), params);
+    m_kernel.record(cmd, params.pathCount, params);
 }
 
 }  // namespace vkp

@@ -1,11 +1,12 @@
 // Photon tracing pass (shaders/photon_trace.comp): reads the scene buffers, writes photon records
-// into fixed per-path slots and adds to the photon counters.
+// into fixed per-path slots and adds to the photon counters (kPhotonCounter*,
+// shared/kernels/photon_trace.glsl).
 #pragma once
 
 #include "gpu_scene/scene_buffers.h"
-#include "shared/photon.glsl"
+#include "shared/kernels/photon_trace.glsl"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 
@@ -17,7 +18,7 @@ public:
     void record(VkCommandBuffer cmd, const gpu::PhotonTraceParams& params) const;
 
 private:
-    vk::ComputeKernel m_kernel;
+    vk::Kernel<gpu::PhotonTraceKernel> m_kernel;
 };
 
 }  // namespace vkp

@@ -7,8 +7,9 @@
 #include <memory>
 #include <vector>
 
+#include "shared/kernels/prefix_scan.glsl"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 
@@ -25,8 +26,8 @@ private:
     struct Level {
         uint32_t count;                            // items scanned at this level
         vk::Buffer blockSums;                      // one per block: scanned by the next level
-        std::unique_ptr<vk::ComputeKernel> scan;   // scan_blocks.comp over this level's items
-        std::unique_ptr<vk::ComputeKernel> add;    // scan_add.comp: adds the scanned block sums
+        std::unique_ptr<vk::Kernel<gpu::ScanBlocksKernel>> scan;  // over this level's items
+        std::unique_ptr<vk::Kernel<gpu::ScanAddKernel>> add;      // adds the scanned block sums
     };
     std::vector<Level> m_levels;
 };

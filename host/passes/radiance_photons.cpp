@@ -9,13 +9,15 @@ RadiancePhotons::RadiancePhotons(vk::Context& context, const PhotonGrid& globalG
     : m_count(photonCount),  // a slot per photon: radiance photons where the shader picks them
       m_photons(context, "radiance photons", std::max<VkDeviceSize>(16, VkDeviceSize(m_count) * sizeof(gpu::GpuPhoton)),
                 vk::kStorageUsage),
-      m_kernel(context, "radiance_photons.comp", 3, sizeof(gpu::RadiancePhotonParams)) {
+      m_kernel(context) {
     m_params.grid = globalGrid.view(photonPower);
     m_params.photonCount = photonCount;
     m_params.stride = std::max(1u, stride);
     m_params.k = k;
     m_params.maxRadius = maxRadius;
-    m_kernel.bind({&globalGrid.cellStart(), &globalGrid.photons(), &m_photons});
+    m_kernel.bind(gpu::kRadiancePhotonsGridBinding, globalGrid.cellStart());
+    m_kernel.bind(gpu::kRadiancePhotonsGridBinding + 1, globalGrid.photons());
+    m_kernel.bind(gpu::kRadiancePhotonsOutputBinding, m_photons);
     PhotonGridSettings settings = globalGrid.settings();
     settings.requiredFlags = 0;
     settings.rejectedFlags = 0;
@@ -23,7 +25,7 @@ RadiancePhotons::RadiancePhotons(vk::Context& context, const PhotonGrid& globalG
 }
 
 void RadiancePhotons::record(VkCommandBuffer cmd) const {
-    m_kernel.record(cmd, vk::groupCount(m_count, 64), m_params);
+    m_kernel.record(cmd, m_count, m_params);
     vk::computeBarrier(cmd);
     m_grid->record(cmd);
 }

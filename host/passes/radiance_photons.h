@@ -9,9 +9,10 @@
 
 #include "passes/photon_grid.h"
 #include "shared/photon.glsl"
+#include "shared/kernels/photon_estimates.glsl"
 #include "shared/photon_render.glsl"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 
@@ -33,7 +34,7 @@ private:
     gpu::RadiancePhotonParams m_params{};
     uint32_t m_count;
     vk::Buffer m_photons;
-    vk::ComputeKernel m_kernel;
+    vk::Kernel<gpu::RadiancePhotonsKernel> m_kernel;
     std::unique_ptr<PhotonGrid> m_grid;
 };
 

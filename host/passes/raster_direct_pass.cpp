@@ -12,8 +12,12 @@ RasterDirectPass::RasterDirectPass(vk::Context& context, const SceneArrays& arra
                                    VolumeGeometry geometry)
     : m_width(width), m_height(height), m_shadows(context, arrays.triangles, rasterLights, width, height, geometry),
       m_direct(context, "raster direct", uint64_t(width) * height * sizeof(glm::vec4), vk::kStorageUsage),
-      m_lighting(context, "raster_direct.comp", scene, {&m_shadows.lights(), &m_shadows.masks(), &m_direct},
-                 sizeof(gpu::RasterDirectParams)) {}
+      m_lighting(context) {
+    m_lighting.bind(scene.bindings());
+    m_lighting.bind(gpu::kRasterDirectLightBinding, m_shadows.lights());
+    m_lighting.bind(gpu::kRasterDirectMaskBinding, m_shadows.masks());
+    m_lighting.bind(gpu::kRasterDirectOutputBinding, m_direct);
+}
 
 void RasterDirectPass::record(VkCommandBuffer cmd, const gpu::GpuCamera& camera, float near) const {
     m_direct.fillZero(cmd);

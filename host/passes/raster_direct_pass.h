@@ -9,9 +9,10 @@
 #include <vector>
 
 #include "gpu_scene/scene_buffers.h"
-#include "passes/scene_pass.h"
 #include "passes/shadow_volume_pass.h"
+#include "shared/kernels/raster_direct.glsl"
 #include "vk/buffer.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 
@@ -33,7 +34,7 @@ private:
     uint32_t m_height;
     ShadowVolumePass m_shadows;
     vk::Buffer m_direct;
-    ScenePass m_lighting;
+    vk::Kernel<gpu::RasterDirectKernel> m_lighting;
 };
 
 // Near plane distance of the raster camera: small against the scene so nothing in view is clipped.

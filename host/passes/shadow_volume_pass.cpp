@@ -110,11 +110,13 @@ ShadowVolumePass::ShadowVolumePass(vk::Context& context, const std::vector<gpu::
       m_masks(context, "shadow masks",
               std::max<VkDeviceSize>(16, VkDeviceSize(std::max(1u, m_passCount)) * width * height * 4),
               vk::kStorageUsage),
-      m_build(context, "shadow_volume_build.comp", 3, sizeof(gpu::ShadowVolumeParams)) {
+      m_build(context) {
     m_positions.upload(prepassPositions(m_shadowTriangles.triangles));
     if (m_triangleCount > 0) m_adjacency.upload(adjacencyIndices(m_shadowTriangles.triangles));
     for (const auto& light : rasterLights) m_lightPoints.push_back(lightPoint(light));
-    m_build.bind({&m_triangles, &m_lights, &m_volumes});
+    m_build.bind(gpu::kShadowVolumeTriangleBinding, m_triangles);
+    m_build.bind(gpu::kShadowVolumeLightBinding, m_lights);
+    m_build.bind(gpu::kShadowVolumeVertexBinding, m_volumes);
 
     const bool clamp = context.depthClampEnabled();
     vk::GraphicsPipelineDesc base;
@@ -196,7 +198,7 @@ void ShadowVolumePass::record(VkCommandBuffer cmd, const gpu::GpuCamera& camera,
         }
         if (computeVolumes) {
             gpu::ShadowVolumeParams build{m_triangleCount, first, count, 0u};
-            m_build.record(cmd, vk::groupCount(uint64_t(m_triangleCount) * count, gpu::kShadowVolumeGroupSize), build);
+            m_build.record(cmd, uint64_t(m_triangleCount) * count, build);
             vk::memoryBarrier2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
                                VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT, VK_ACCESS_2_VERTEX_ATTRIBUTE_READ_BIT);
         }

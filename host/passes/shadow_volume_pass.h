@@ -13,8 +13,9 @@
 
 #include "passes/shadow_triangles.h"
 #include "shared/gpu_types.glsl"
+#include "shared/kernels/raster_direct.glsl"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "vk/kernel.h"
 #include "vk/graphics_pipeline.h"
 #include "vk/image.h"
 
@@ -71,7 +72,7 @@ private:
     vk::Buffer m_lights;      // GpuLight per raster light
     vk::Buffer m_volumes;     // volume vertices of one pass (written by compute, drawn as vertices)
     vk::Buffer m_masks;
-    vk::ComputeKernel m_build;
+    vk::Kernel<gpu::ShadowVolumeBuildKernel> m_build;
     std::unique_ptr<vk::GraphicsPipeline> m_depthPipeline;
     std::unique_ptr<vk::GraphicsPipeline> m_volumePipeline;
     std::unique_ptr<vk::GraphicsPipeline> m_volumeGeometryPipeline;

@@ -3,9 +3,10 @@
 #pragma once
 
 #include "gpu_scene/scene_buffers.h"
+#include "shared/kernels/photon_estimates.glsl"
 #include "shared/visible_point.glsl"
 #include "vk/buffer.h"
-#include "vk/compute_kernel.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 
@@ -18,7 +19,7 @@ public:
     void record(VkCommandBuffer cmd, const gpu::VisiblePointParams& params) const;
 
 private:
-    vk::ComputeKernel m_kernel;
+    vk::Kernel<gpu::VisiblePointsKernel> m_kernel;
 };
 
 }  // namespace vkp

@@ -7,7 +7,7 @@ namespace vkp {
 Film::Film(vk::Context& context, uint32_t width, uint32_t height)
     : m_width(width), m_height(height),
       m_sums(context, "film", uint64_t(width) * height * sizeof(glm::vec4), vk::kStorageUsage),
-      m_counters(context, "film counters", 16 * sizeof(uint32_t), vk::kStorageUsage) {}
+      m_counters(context, "film counters", gpu::kPathTraceCounterCount * sizeof(uint32_t), vk::kStorageUsage) {}
 
 void Film::recordClear(VkCommandBuffer cmd) const {
     m_sums.fillZero(cmd);
@@ -19,13 +19,7 @@ ImageRgb Film::resolve() const {
     return resolveFilm(m_sums.download<glm::vec4>(), m_width, m_height);
 }
 
-FilmCounters Film::readCounters() const {
-    const std::vector<uint32_t> counts = m_counters.download<uint32_t>();
-    FilmCounters c;
-    c.nonFiniteSamples = counts[0];
-    c.pathSegments = counts[1] | (uint64_t(counts[2]) << 32);
-    return c;
-}
+PathTraceCounters Film::readCounters() const { return PathTracePass::readCounters(m_counters); }
 
 ImageRgb resolveFilm(const std::vector<glm::vec4>& sums, uint32_t width, uint32_t height) {
     ImageRgb image;

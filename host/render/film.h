@@ -9,21 +9,17 @@
 #include <glm/glm.hpp>
 
 #include "image/image.h"
+#include "passes/path_trace_pass.h"
 #include "vk/buffer.h"
 
 namespace vkp {
-
-struct FilmCounters {
-    uint64_t nonFiniteSamples = 0;  // samples that were NaN or infinite (dropped)
-    uint64_t pathSegments = 0;      // rays traced from camera-path vertices (no shadow rays)
-};
 
 class Film {
 public:
     Film(vk::Context& context, uint32_t width, uint32_t height);
 
     const vk::Buffer& sums() const { return m_sums; }
-    // uint slots: 0 non-finite samples, 1 and 2 the low and high words of the path segments.
+    // The camera-path kernels' counters (slots gpu::kPathTraceCounter*, passes/path_trace_pass.h).
     const vk::Buffer& counters() const { return m_counters; }
     uint32_t width() const { return m_width; }
     uint32_t height() const { return m_height; }
@@ -32,7 +28,7 @@ public:
     void recordClear(VkCommandBuffer cmd) const;
     // Read-backs after the last sample's submission: the mean per pixel, and the counters.
     ImageRgb resolve() const;
-    FilmCounters readCounters() const;
+    PathTraceCounters readCounters() const;
 
 private:
     uint32_t m_width;

@@ -9,12 +9,13 @@
 
 #include <fmt/format.h>
 
-#include "passes/scene_pass.h"
+#include "passes/importance_lookup_pass.h"
+#include "passes/importance_splat_pass.h"
+#include "passes/importon_trace_pass.h"
 #include "shared/importance.glsl"
 #include "render/photon_map.h"
 #include "util/errors.h"
 #include "util/stopwatch.h"
-#include "vk/compute_kernel.h"
 #include "vk/context.h"
 
 namespace vkp {
@@ -63,7 +64,7 @@ ImportonMap::ImportonMap(vk::Context& context, const SceneArrays& arrays, const 
     const auto start = Clock::now();
     const uint32_t slots = settings.paths * settings.maxDeposits;
     m_slots = vk::Buffer(context, "importons", VkDeviceSize(slots) * sizeof(gpu::GpuImporton), vk::kStorageUsage);
-    const ScenePass trace(context, "importon_trace.comp", buffers, {&m_slots}, sizeof(gpu::ImportonTraceParams));
+    const ImportonTracePass trace(context, buffers, m_slots);
     gpu::ImportonTraceParams params{};
     params.camera = camera;
     params.width = width;
@@ -75,10 +76,12 @@ ImportonMap::ImportonMap(vk::Context& context, const SceneArrays& arrays, const 
     context.submitAndWait([&](VkCommandBuffer cmd) {
         m_slots.fillZero(cmd);
         vk::transferToComputeBarrier(cmd);
-        trace.record(cmd, settings.paths, params);
+        trace.record(cmd, params);
         vk::computeToHostBarrier(cmd);
     });
 
+    // Read-back (docs/architecture.md): the importons, for the grid's cell size (their occupancy),
+    // the median path importance and, below, which test slots the camera sees directly.
     const std::vector<gpu::GpuImporton> importons = downloadImportons();
     std::vector<glm::vec3> positions;
     std::vector<float> pathImportance;
@@ -103,20 +106,21 @@ ImportonMap::ImportonMap(vk::Context& context, const SceneArrays& arrays, const 
 // Splats the importons into a table with room for every cell at every level (at most one per
 // importon and level); doubles it should the probes ever run out (an importon would be lost).
 void ImportonMap::buildTable(vk::Context& context) {
-    vk::ComputeKernel splat(context, "importance_splat.comp", 2, sizeof(gpu::ImportanceGridParams));
     uint64_t entries = std::bit_ceil(std::max<uint64_t>(1024, m_stats.stored * gpu::kImportanceLevels / 4));
     for (;; entries *= 2) {
         m_table = vk::Buffer(context, "importance grid", entries * sizeof(gpu::ImportanceCell), vk::kStorageUsage);
-        splat.bind({&m_slots, &m_table});
+        const ImportanceSplatPass splat(context, m_slots, m_table);
         gpu::ImportanceGridParams params = lookupParams();
         params.tableMask = static_cast<uint32_t>(entries - 1);
         params.slotCount = m_settings.paths * m_settings.maxDeposits;
         context.submitAndWait([&](VkCommandBuffer cmd) {
             m_table.fillZero(cmd);
             vk::transferToComputeBarrier(cmd);
-            splat.record(cmd, vk::groupCount(params.slotCount, 64), params);
+            splat.record(cmd, params);
             vk::computeToHostBarrier(cmd);
         });
+        // Read-back (docs/architecture.md): the table, to check that it counted every importon at
+        // every level (a full table loses importons; it is then rebuilt twice as large).
         uint64_t counted = 0;
         for (const gpu::ImportanceCell& cell : m_table.download<gpu::ImportanceCell>())
             if (cell.key != gpu::kImportanceEmptyKey) counted += cell.count;
@@ -142,14 +146,14 @@ gpu::ImportanceGridParams ImportonMap::lookupParams(uint32_t requiredFlags, uint
 float ImportonMap::estimateImportanceScale(vk::Context& context, const std::vector<gpu::GpuImporton>& importons) const {
     const uint32_t testSlots = std::min(m_settings.testRays, m_settings.paths) * m_settings.maxDeposits;
     vk::Buffer sensed(context, "importon test rays", VkDeviceSize(testSlots) * sizeof(glm::vec2), vk::kStorageUsage);
-    vk::ComputeKernel lookup(context, "importon_importance.comp", 3, sizeof(gpu::ImportanceGridParams));
-    lookup.bind({&m_table, &m_slots, &sensed});
+    const ImportonImportancePass lookup(context, m_table, m_slots, sensed);
     gpu::ImportanceGridParams params = lookupParams();
     params.slotCount = testSlots;
     context.submitAndWait([&](VkCommandBuffer cmd) {
-        lookup.record(cmd, vk::groupCount(testSlots, 64), params);
+        lookup.record(cmd, params);
         vk::computeToHostBarrier(cmd);
     });
+    // Read-back (docs/architecture.md): the importance the test rays sense; f is a minimum over them.
     const auto values = sensed.download<glm::vec2>();
     float least = std::numeric_limits<float>::infinity();
     for (uint32_t slot = 0; slot < testSlots; ++slot)

@@ -118,6 +118,7 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
         chunk.maxDeposits = m_settings.maxDeposits;
         chunk.seed = m_settings.seed;
         stats.traced += m_tracer.trace(chunk);
+        bool freshDeposit = false;
         if (!m_compaction) {  // the first chunk is the largest: the tracer's slots never move after it
             gpu::PhotonCompactParams params{};
             params.capacity = m_capacity;
@@ -126,13 +127,16 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
             m_compaction = std::make_unique<PhotonCompaction>(m_context, m_tracer.photons(),
                                                               m_chunkPaths * m_settings.maxDeposits, m_map, m_state,
                                                               params);
-            if (deposit)
+            if (deposit) {
                 m_deposit = std::make_unique<PhotonDeposit>(m_context, m_buffers, m_settings.deposit.importons->table(),
                                                             m_tracer.photons(), m_chunkPaths * m_settings.maxDeposits,
                                                             m_map, *m_grid);
+                freshDeposit = true;
+            }
         }
         m_context.submitAndWait([&](VkCommandBuffer cmd) {
-            vk::transferToComputeBarrier(cmd);  // the map's clearing
+            if (freshDeposit) m_deposit->recordClear(cmd);
+            vk::transferToComputeBarrier(cmd);  // the map's clearing (and the deposit's)
             vk::computeBarrier(cmd);            // the chunk's photon slots (and the last round's grid)
             if (deposit) {
                 m_deposit->record(cmd, m_settings.deposit.importons->lookupParams(m_settings.requiredFlags, m_settings.rejectedFlags),
@@ -150,10 +154,14 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
                 vk::computeToHostBarrier(cmd);
             }
         });
+        // Read-back (docs/architecture.md): the photons stored so far, the size of the next round's
+        // redistribution dispatch.
         if (redistribute) m_state.download(&storedSoFar, sizeof(storedSoFar), gpu::kPhotonMapStateCount * sizeof(uint32_t));
         stats.chunks += 1;
     }
     stats.candidates = candidateCount(stats.traced, m_settings.requiredFlags, m_settings.rejectedFlags);
+    // Read-back (docs/architecture.md): the map's photon count, which sets the grid's cell size
+    // (cellSizeFor) before the grid is built, and the statistics.
     uint32_t state[gpu::kPhotonMapStateSize];
     m_state.download(state, sizeof(state));
     stats.stored = state[gpu::kPhotonMapStateCount];

@@ -46,6 +46,8 @@ PhotonCounters PhotonTracer::trace(const PhotonSettings& settings) {
     m_nominalPower = m_totalPower / settings.paths;
     m_slotCount = slots;
 
+    // Read-back (docs/architecture.md): the counters, for the statistics and the map's candidate
+    // count (which sets the grid's cell size under deposition).
     const auto c = m_counters.download<uint32_t>();
     PhotonCounters counters;
     counters.emitted = settings.paths;

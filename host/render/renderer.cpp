@@ -41,7 +41,7 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     const double renderSeconds = secondsSince(start);
 
     Stats& stats = result.stats;
-    const FilmCounters counters = film.readCounters();
+    const PathTraceCounters counters = film.readCounters();
     stats.set("integrator", integrator.name());
     stats.set("device", context.deviceName());
     stats.set("settings.width", settings.width);
@@ -63,7 +63,7 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     stats.set("counters.samplesPerPixel", loop.samplesDone);
     stats.set("counters.cameraPaths", cameraPaths);
     stats.set("counters.nonFiniteSamples", counters.nonFiniteSamples);
-    stats.set("counters.pathSegments", counters.pathSegments);
+    stats.set("counters.pathSegments", counters.segments);
     stats.set("counters.pathsPerSecond", renderSeconds > 0.0 ? double(cameraPaths) / renderSeconds : 0.0);
     stats.set("partial", loop.samplesDone < settings.samplesPerPixel);
     stats.set("stopReason", loop.stopReason);

@@ -6,39 +6,42 @@
 #include "vk/buffer.h"
 #include "vk/check.h"
 #include "vk/context.h"
+#include "vk/shader_reflection.h"
 #include "vk/shader_registry.h"
 
 namespace vkp::vk {
 
-ComputeKernel::ComputeKernel(Context& context, std::string shaderName, uint32_t storageBufferCount,
-                             uint32_t pushConstantBytes)
-    : m_context(context), m_name(std::move(shaderName)), m_bufferCount(storageBufferCount),
-      m_pushBytes(pushConstantBytes), m_bound(storageBufferCount, false) {
+ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
+    : m_context(context), m_interface(std::move(interface)), m_bound(m_interface.bindingCount, false) {
     const VkDevice device = context.device();
-    const auto code = shaderCode(m_name);
+    const std::string& name = m_interface.shader;
+    const uint32_t bufferCount = m_interface.bindingCount;
+    const uint32_t pushBytes = m_interface.pushBytes;
+    const auto code = shaderCode(name);
+    checkKernelInterface(m_interface, code);
     VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     moduleInfo.codeSize = code.size_bytes();
     moduleInfo.pCode = code.data();
     check(vkCreateShaderModule(device, &moduleInfo, nullptr, &m_module),
-          fmt::format("creating the shader module {}", m_name));
+          fmt::format("creating the shader module {}", name));
 
-    std::vector<VkDescriptorSetLayoutBinding> bindings(m_bufferCount);
-    for (uint32_t i = 0; i < m_bufferCount; ++i) {
+    std::vector<VkDescriptorSetLayoutBinding> bindings(bufferCount);
+    for (uint32_t i = 0; i < bufferCount; ++i) {
         bindings[i].binding = i;
         bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         bindings[i].descriptorCount = 1;
         bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
     }
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setInfo.bindingCount = m_bufferCount;
+    setInfo.bindingCount = bufferCount;
     setInfo.pBindings = bindings.data();
     check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &m_setLayout), "creating a set layout");
 
-    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, m_pushBytes};
+    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
     VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layoutInfo.setLayoutCount = 1;
     layoutInfo.pSetLayouts = &m_setLayout;
-    layoutInfo.pushConstantRangeCount = m_pushBytes ? 1 : 0;
+    layoutInfo.pushConstantRangeCount = pushBytes ? 1 : 0;
     layoutInfo.pPushConstantRanges = &range;
     check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &m_pipelineLayout),
           "creating a pipeline layout");
@@ -50,9 +53,9 @@ ComputeKernel::ComputeKernel(Context& context, std::string shaderName, uint32_t 
     pipelineInfo.stage.pName = "main";
     pipelineInfo.layout = m_pipelineLayout;
     check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &m_pipeline),
-          fmt::format("creating the compute pipeline {}", m_name));
+          fmt::format("creating the compute pipeline {}", name));
 
-    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, std::max(1u, m_bufferCount)};
+    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, std::max(1u, bufferCount)};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 1;
     poolInfo.poolSizeCount = 1;
@@ -75,8 +78,8 @@ ComputeKernel::~ComputeKernel() {
 }
 
 void ComputeKernel::bind(uint32_t binding, const Buffer& buffer) {
-    if (binding >= m_bufferCount)
-        throw RuntimeError(fmt::format("{}: binding {} out of range", m_name, binding));
+    if (binding >= m_interface.bindingCount)
+        throw RuntimeError(fmt::format("{}: binding {} out of range", m_interface.shader, binding));
     VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstSet = m_set;
@@ -88,17 +91,17 @@ void ComputeKernel::bind(uint32_t binding, const Buffer& buffer) {
     m_bound[binding] = true;
 }
 
-void ComputeKernel::bind(const std::vector<const Buffer*>& buffers) {
-    for (uint32_t i = 0; i < buffers.size(); ++i) bind(i, *buffers[i]);
+void ComputeKernel::bind(const std::vector<const Buffer*>& buffers, uint32_t first) {
+    for (uint32_t i = 0; i < buffers.size(); ++i) bind(first + i, *buffers[i]);
 }
 
 void ComputeKernel::record(VkCommandBuffer cmd, uint32_t groups, const void* push,
                            uint32_t pushBytes) const {
-    for (uint32_t i = 0; i < m_bufferCount; ++i)
-        if (!m_bound[i]) throw RuntimeError(fmt::format("{}: binding {} was never bound", m_name, i));
-    if (pushBytes != m_pushBytes)
-        throw RuntimeError(fmt::format("{}: push constants are {} bytes, expected {}", m_name,
-                                       pushBytes, m_pushBytes));
+    for (uint32_t i = 0; i < m_interface.bindingCount; ++i)
+        if (!m_bound[i]) throw RuntimeError(fmt::format("{}: binding {} was never bound", m_interface.shader, i));
+    if (pushBytes != m_interface.pushBytes)
+        throw RuntimeError(fmt::format("{}: push constants are {} bytes, expected {}", m_interface.shader,
+                                       pushBytes, m_interface.pushBytes));
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipelineLayout, 0, 1, &m_set, 0, nullptr);
     if (pushBytes) vkCmdPushConstants(cmd, m_pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes, push);

@@ -1,5 +1,7 @@
 // One compute shader with its pipeline, a descriptor set of storage buffers (binding i = the i-th
-// buffer) and a push-constant block. Recording binds, pushes and dispatches: no submit, no wait.
+// buffer) and a push-constant block, as its KernelInterface says; creating it checks that the
+// shader declares exactly that (shader_reflection.h). Recording binds, pushes and dispatches: no
+// submit, no wait. Passes use the typed form, vk::Kernel<K> (kernel.h).
 #pragma once
 
 #include <cstdint>
@@ -8,6 +10,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "vk/kernel_interface.h"
+
 namespace vkp::vk {
 
 class Buffer;
@@ -15,15 +19,16 @@ class Context;
 
 class ComputeKernel {
 public:
-    ComputeKernel(Context& context, std::string shaderName, uint32_t storageBufferCount,
-                  uint32_t pushConstantBytes);
+    // Throws RuntimeError when the shader's SPIR-V does not declare what `interface` says.
+    ComputeKernel(Context& context, KernelInterface interface);
     ~ComputeKernel();
     ComputeKernel(const ComputeKernel&) = delete;
     ComputeKernel& operator=(const ComputeKernel&) = delete;
 
     // Points binding `binding` at `buffer` (whole range).
     void bind(uint32_t binding, const Buffer& buffer);
-    void bind(const std::vector<const Buffer*>& buffers);
+    // Points bindings first, first + 1, ... at `buffers`.
+    void bind(const std::vector<const Buffer*>& buffers, uint32_t first = 0);
 
     // Dispatches `groups` 1-D workgroups after pushing `pushBytes` of push constants.
     void record(VkCommandBuffer cmd, uint32_t groups, const void* push, uint32_t pushBytes) const;
@@ -31,13 +36,12 @@ public:
         record(cmd, groups, &push, sizeof(Push));
     }
 
-    const std::string& name() const { return m_name; }
+    const std::string& name() const { return m_interface.shader; }
+    uint32_t groupSize() const { return m_interface.groupSize; }
 
 private:
     Context& m_context;
-    std::string m_name;
-    uint32_t m_bufferCount;
-    uint32_t m_pushBytes;
+    KernelInterface m_interface;
     std::vector<bool> m_bound;
     VkShaderModule m_module = VK_NULL_HANDLE;
     VkDescriptorSetLayout m_setLayout = VK_NULL_HANDLE;

@@ -1,4 +1,4 @@
-// Constants shared by host and shaders: math, workgroup sizes, sampler layout.
+// Constants shared by host and shaders: math, sampler layout.
 #ifndef VKP_CONSTANTS_GLSL
 #define VKP_CONSTANTS_GLSL
 #include "compat.glsl"
@@ -9,10 +9,6 @@ const float kInvPi = 0.318309886183791f;
 const float kTwoPi = 6.28318530717959f;
 const float kOneMinusEpsilon = 0.99999994f;  // largest float below 1
 const float kInfinity = 3.0e38f;
-
-// 1-D workgroups: lavapipe vectorises along local_size_x only.
-const uint kPathTraceGroupSize = 64u;
-const uint kTestGroupSize = 64u;
 
 // Halton dimensions used before the sampler falls back to hashed random numbers.
 const uint kHaltonDimensions = 32u;

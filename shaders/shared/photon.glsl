@@ -77,15 +77,6 @@ INLINE uint photonFlags(GpuPhoton p) {
     return p.powerBFlags >> 16u;
 }
 
-// Counters written by photon_trace.comp (indices into its counter buffer).
-const uint kPhotonCounterStoredCaustic = 0u;
-const uint kPhotonCounterStoredGlobal = 1u;    // after at least one diffuse/glossy bounce
-const uint kPhotonCounterStoredPrimary = 2u;   // direct (first-hit) photons
-const uint kPhotonCounterAbsorbed = 3u;        // paths ended by Russian roulette or a black surface
-const uint kPhotonCounterLost = 4u;            // paths that left the scene
-const uint kPhotonCounterTruncated = 5u;       // paths that reached maxDeposits stored photons
-const uint kPhotonCounterCount = 8u;
-
 // Push constants of photon_trace.comp.
 struct PhotonTraceParams {
     vec3 sceneCenter;     // bounding sphere of the scene (directional lights emit from its disk)

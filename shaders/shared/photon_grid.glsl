@@ -7,12 +7,6 @@
 #include "constants.glsl"
 SHARED_BEGIN
 
-// Workgroup size of the grid and scan kernels; a scan block holds kScanItemsPerThread items per
-// invocation.
-const uint kGridGroupSize = 64u;
-const uint kScanItemsPerThread = 4u;
-const uint kScanBlockSize = 256u;  // kGridGroupSize * kScanItemsPerThread
-
 // Most photons a k-nearest gather returns (photon_gather.glsl keeps them in a local heap).
 const uint kMaxGatherK = 64u;
 // A photon counts at a query point when its surface normal is within 60 degrees of the query's
@@ -72,11 +66,6 @@ struct PhotonCompactParams {
     uint pad2;
 };
 STATIC_ASSERT_SIZE(PhotonCompactParams, 32)
-
-// Entries of a photon map's state buffer.
-const uint kPhotonMapStateCount = 0u;    // photons in the map
-const uint kPhotonMapStateDropped = 1u;  // selected photons that did not fit (capacity)
-const uint kPhotonMapStateSize = 4u;
 
 SHARED_END
 #endif

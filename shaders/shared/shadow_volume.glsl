@@ -13,8 +13,6 @@ const uint kLightsPerMaskPass = 4u;
 // Unused slots are written as degenerate triangles, so every triangle owns fixed slots.
 const uint kVolumeVerticesPerTriangle = 24u;
 const uint kShadowNoNeighbor = 0xffffffffu;
-const uint kShadowVolumeGroupSize = 64u;
-const uint kRasterDirectGroupSize = 64u;
 
 // Area-light sample used by the raster pass: a point on an emissive triangle radiating
 // intensity * max(0, cos) towards direction's side (both sides when the emitter is double-sided).

@@ -14,8 +14,9 @@
 
 #include "shared/gpu_types.glsl"
 #include "shared/constants.glsl"
+#include "test_kernels.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kTestGroupSize) in;
 
 struct TestRay {
     vec4 origin;
@@ -30,10 +31,10 @@ struct TestHit {
     uint anyHit;
 };
 
-layout(std430, set = 0, binding = 0) readonly buffer Rays { TestRay rays[]; };
-layout(std430, set = 0, binding = 1) readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Triangles { GpuTriangle triangles[]; };
-layout(std430, set = 0, binding = 3) writeonly buffer Hits { TestHit hits[]; };
+layout(std430, set = 0, binding = kBvhTestRayBinding) readonly buffer Rays { TestRay rays[]; };
+layout(std430, set = 0, binding = kBvhTestNodeBinding) readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };
+layout(std430, set = 0, binding = kBvhTestTriangleBinding) readonly buffer Triangles { GpuTriangle triangles[]; };
+layout(std430, set = 0, binding = kBvhTestHitBinding) writeonly buffer Hits { TestHit hits[]; };
 layout(push_constant) uniform Push { uint rayCount; } push;
 
 #include "shared/bvh_traverse.glsl"

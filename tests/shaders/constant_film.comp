@@ -1,19 +1,16 @@
-// The toy integrator of tests/integrator_seam_test.cpp: adds `sampleCount` samples of a constant
-// radiance to every pixel of the film (vec4 per pixel: RGB sum and sample count).
+// The toy integrator of tests/integrator_seam_test.cpp (its interface: ConstantFilmKernel in
+// test_kernels.glsl): adds `sampleCount` samples of a constant radiance to every film pixel.
 #version 460
+#extension GL_GOOGLE_include_directive : require
 
-layout(local_size_x = 64) in;
+#include "test_kernels.glsl"
 
-layout(std430, set = 0, binding = 0) buffer Film { vec4 film[]; };
-
-layout(push_constant) uniform Push {
-    vec4 radiance;
-    uint pixels;
-    uint sampleCount;
-};
+layout(local_size_x = kTestGroupSize) in;
+layout(std430, set = 0, binding = kConstantFilmBinding) buffer Film { vec4 film[]; };
+layout(push_constant) uniform Push { ConstantFilmParams params; };
 
 void main() {
     uint pixel = gl_GlobalInvocationID.x;
-    if (pixel >= pixels) return;
-    film[pixel] += vec4(radiance.rgb * float(sampleCount), float(sampleCount));
+    if (pixel >= params.pixels) return;
+    film[pixel] += vec4(params.radiance.rgb * float(params.sampleCount), float(params.sampleCount));
 }

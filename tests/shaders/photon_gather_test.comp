@@ -5,10 +5,11 @@
 
 #include "shared/sampling.glsl"
 #include "shared/bsdf.glsl"
-#define PHOTON_GRID_BINDING 3
+#include "test_kernels.glsl"
+#define PHOTON_GRID_BINDING kGatherTestGridBinding
 #include "photon_gather.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kTestGroupSize) in;
 
 struct GatherQuery {
     vec3 position;
@@ -17,18 +18,11 @@ struct GatherQuery {
     uint k;
 };
 
-layout(std430, set = 0, binding = 0) readonly buffer Queries { GatherQuery queries[]; };
-layout(std430, set = 0, binding = 1) writeonly buffer FixedResults { vec4 fixedResults[]; };   // sum, count
-layout(std430, set = 0, binding = 2) writeonly buffer NearestResults { uint nearestResults[]; };  // see below
+layout(std430, set = 0, binding = kGatherTestQueryBinding) readonly buffer Queries { GatherQuery queries[]; };
+layout(std430, set = 0, binding = kGatherTestFixedBinding) writeonly buffer FixedResults { vec4 fixedResults[]; };   // sum, count
+layout(std430, set = 0, binding = kGatherTestNearestBinding) writeonly buffer NearestResults { uint nearestResults[]; };  // see below
 
-layout(push_constant) uniform Push {
-    PhotonGridView grid;
-    BsdfParams bsdf;
-    uint count;
-    float coneK;
-    uint requiredFlags;
-    uint rejectedFlags;
-} push;
+layout(push_constant) uniform Push { GatherTestParams push; };
 
 void main() {
     uint q = gl_GlobalInvocationID.x;

@@ -7,15 +7,16 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#include "test_kernels.glsl"
 #include "scene_access.glsl"
 #include "shared/halton.glsl"
 #include "camera_and_lights.glsl"
 #include "raster_light_access.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kTestGroupSize) in;
 
-layout(std430, set = 0, binding = 8) readonly buffer RasterLights { GpuLight rasterLights[]; };
-layout(std430, set = 0, binding = 9) writeonly buffer Out { uint result[]; };
+layout(std430, set = 0, binding = kShadowTestLightBinding) readonly buffer RasterLights { GpuLight rasterLights[]; };
+layout(std430, set = 0, binding = kShadowTestOutputBinding) writeonly buffer Out { uint result[]; };
 layout(push_constant) uniform Push { RasterDirectParams params; };
 
 void main() {

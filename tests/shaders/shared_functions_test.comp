@@ -4,11 +4,12 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/harness_functions.glsl"
+#include "test_kernels.glsl"
 
-layout(local_size_x = 64) in;
-layout(std430, set = 0, binding = 0) readonly buffer Inputs { HarnessInput inputs[]; };
-layout(std430, set = 0, binding = 1) writeonly buffer Outputs { uvec4 outputs[]; };
-layout(push_constant) uniform Push { uint count; uint function; } push;
+layout(local_size_x = kTestGroupSize) in;
+layout(std430, set = 0, binding = kHarnessInputBinding) readonly buffer Inputs { HarnessInput inputs[]; };
+layout(std430, set = 0, binding = kHarnessOutputBinding) writeonly buffer Outputs { uvec4 outputs[]; };
+layout(push_constant) uniform Push { HarnessParams push; };
 
 void main() {
     uint i = gl_GlobalInvocationID.x;

@@ -136,22 +136,15 @@ void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
     const PhotonGrid& gatherGrid = m_radiancePhotons ? m_radiancePhotons->grid() : m_globalMap->grid();
 
     // Pass 2's passes: visible points, caustics and final gathers per camera sample.
-    m_pixels = frame.pixels();
-    m_points = std::make_unique<vk::Buffer>(context, "visible points", m_pixels * sizeof(gpu::GpuVisiblePoint),
+    m_points = std::make_unique<vk::Buffer>(context, "visible points", frame.pixels() * sizeof(gpu::GpuVisiblePoint),
                                             vk::kStorageUsage);
     m_visiblePass = std::make_unique<VisiblePointPass>(context, m_scene.buffers(), film.sums(), *m_points,
                                                        *frame.rasterDirect);
-    m_gatherPass = std::make_unique<ScenePass>(
-        context, "final_gather.comp", m_scene.buffers(),
-        std::vector<const vk::Buffer*>{&film.sums(), m_points.get(), &gatherGrid.cellStart(), &gatherGrid.photons()},
-        sizeof(gpu::FinalGatherParams));
+    m_gatherPass = std::make_unique<FinalGatherPass>(context, m_scene.buffers(), film.sums(), *m_points, gatherGrid);
     m_causticPass.reset();
     if (m_causticMap)
-        m_causticPass = std::make_unique<ScenePass>(
-            context, "caustic_estimate.comp", m_scene.buffers(),
-            std::vector<const vk::Buffer*>{&film.sums(), m_points.get(), &m_causticMap->grid().cellStart(),
-                                           &m_causticMap->grid().photons()},
-            sizeof(gpu::CausticEstimateParams));
+        m_causticPass = std::make_unique<CausticEstimatePass>(context, m_scene.buffers(), film.sums(), *m_points,
+                                                              m_causticMap->grid());
 
     m_visibleParams = visiblePointParams(frame, m_scene.buffers().lightCount());
     m_causticParams = {};
@@ -183,14 +176,14 @@ void PhotonIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t first, uint32
         m_visiblePass->record(cmd, m_visibleParams);
         vk::computeBarrier(cmd);
         if (m_causticPass) {
-            m_causticPass->record(cmd, m_pixels, m_causticParams);
+            m_causticPass->record(cmd, m_causticParams);
             vk::computeBarrier(cmd);
         }
         // One dispatch per gather ray keeps each invocation's loops within lavapipe's limit.
         m_gatherParams.sampleIndex = sample;
         for (uint32_t ray = 0; ray < std::max(1u, m_settings.gatherRays); ++ray) {
             m_gatherParams.rayIndex = ray;
-            m_gatherPass->record(cmd, m_pixels, m_gatherParams);
+            m_gatherPass->record(cmd, m_gatherParams);
             vk::computeBarrier(cmd);
         }
     }

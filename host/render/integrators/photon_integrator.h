@@ -10,7 +10,8 @@
 
 #include "gpu_scene/gpu_scene.h"
 #include "passes/radiance_photons.h"
-#include "passes/scene_pass.h"
+#include "passes/caustic_estimate_pass.h"
+#include "passes/final_gather_pass.h"
 #include "passes/visible_point_pass.h"
 #include "render/importon_map.h"
 #include "render/integrator.h"
@@ -39,15 +40,14 @@ private:
     PhotonIntegratorSettings m_settings;
     float m_radius;
     Stats m_stats;  // of the last prepare()
-    uint64_t m_pixels = 0;
     std::unique_ptr<ImportonMap> m_importons;
     std::unique_ptr<PhotonMap> m_globalMap;
     std::unique_ptr<PhotonMap> m_causticMap;
     std::unique_ptr<RadiancePhotons> m_radiancePhotons;
     std::unique_ptr<vk::Buffer> m_points;
     std::unique_ptr<VisiblePointPass> m_visiblePass;
-    std::unique_ptr<ScenePass> m_gatherPass;
-    std::unique_ptr<ScenePass> m_causticPass;
+    std::unique_ptr<FinalGatherPass> m_gatherPass;
+    std::unique_ptr<CausticEstimatePass> m_causticPass;
     gpu::VisiblePointParams m_visibleParams{};
     gpu::CausticEstimateParams m_causticParams{};
     gpu::FinalGatherParams m_gatherParams{};

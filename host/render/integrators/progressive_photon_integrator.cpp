@@ -42,11 +42,7 @@ void ProgressivePhotonIntegrator::prepare(const Frame& frame, const Film& film) 
     m_sppm = std::make_unique<vk::Buffer>(vk::makeStorageBuffer(context, "sppm pixels", initial));
     m_visiblePass = std::make_unique<VisiblePointPass>(context, m_scene.buffers(), film.sums(), *m_points,
                                                        *frame.rasterDirect);
-    m_updatePass = std::make_unique<ScenePass>(
-        context, "sppm_update.comp", m_scene.buffers(),
-        std::vector<const vk::Buffer*>{m_sppm.get(), m_points.get(), &m_map->grid().cellStart(),
-                                       &m_map->grid().photons()},
-        sizeof(gpu::SppmParams));
+    m_updatePass = std::make_unique<SppmUpdatePass>(context, m_scene.buffers(), *m_sppm, *m_points, m_map->grid());
     m_visibleParams = visiblePointParams(frame, m_scene.buffers().lightCount());
     m_sppmParams = {};
     m_sppmParams.grid = m_map->grid().view(m_map->photonPower());
@@ -70,7 +66,7 @@ void ProgressivePhotonIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t fi
     vk::computeBarrier(cmd);
     m_visiblePass->record(cmd, m_visibleParams);
     vk::computeBarrier(cmd);
-    m_updatePass->record(cmd, m_pixels, m_sppmParams);
+    m_updatePass->record(cmd, m_sppmParams);
 }
 
 // Direct light (the film's mean) plus tau / (passes pi R^2).

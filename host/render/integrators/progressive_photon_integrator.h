@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "gpu_scene/gpu_scene.h"
-#include "passes/scene_pass.h"
+#include "passes/sppm_update_pass.h"
 #include "passes/visible_point_pass.h"
 #include "render/importon_map.h"
 #include "render/integrator.h"
@@ -43,7 +43,7 @@ private:
     std::unique_ptr<vk::Buffer> m_points;
     std::unique_ptr<vk::Buffer> m_sppm;
     std::unique_ptr<VisiblePointPass> m_visiblePass;
-    std::unique_ptr<ScenePass> m_updatePass;
+    std::unique_ptr<SppmUpdatePass> m_updatePass;
     gpu::VisiblePointParams m_visibleParams{};
     gpu::SppmParams m_sppmParams{};
 };

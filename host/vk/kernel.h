@@ -1,0 +1,35 @@
+// A compute kernel typed by its interface K, a descriptor from shaders/shared/kernels/ (e.g.
+// gpu::GridCountKernel): the shader, the number of storage buffers, the push-constant type and
+// the workgroup size all come from K, so the host states none of them itself, and dispatches are
+// sized in items (one invocation each). Creating it checks K against the shader's SPIR-V.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "vk/compute_kernel.h"
+#include "vk/kernel_interface.h"
+
+namespace vkp::vk {
+
+template <typename K> class Kernel {
+public:
+    using Push = typename K::Push;
+
+    explicit Kernel(Context& context) : m_kernel(context, interfaceOf<K>()) {}
+
+    // Points binding `binding` at `buffer` (whole range).
+    void bind(uint32_t binding, const Buffer& buffer) { m_kernel.bind(binding, buffer); }
+    // Points bindings first, first + 1, ... at `buffers`.
+    void bind(const std::vector<const Buffer*>& buffers, uint32_t first = 0) { m_kernel.bind(buffers, first); }
+
+    // Records one invocation per item, in workgroups of K::kGroupSize (none when items is 0).
+    void record(VkCommandBuffer cmd, uint64_t items, const Push& push) const {
+        m_kernel.record(cmd, groupCount(items, K::kGroupSize), &push, sizeof(Push));
+    }
+
+private:
+    ComputeKernel m_kernel;
+};
+
+}  // namespace vkp::vk

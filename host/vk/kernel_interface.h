@@ -1,0 +1,26 @@
+// What the host tells a compute kernel: its shader, the storage buffers it binds (bindings
+// 0..bindingCount-1 of set 0), the bytes of push constants it pushes and the workgroup size it
+// sizes dispatches by. interfaceOf<K>() takes them from a kernel's interface in
+// shaders/shared/kernels/; the kernel checks them against the shader's SPIR-V when it is created
+// (shader_reflection.h).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace vkp::vk {
+
+struct KernelInterface {
+    std::string shader;          // file name, e.g. "grid_count.comp"
+    uint32_t bindingCount = 0;   // storage buffers at bindings 0 .. bindingCount - 1 of set 0
+    uint32_t pushBytes = 0;      // push constants, from offset 0
+    uint32_t groupSize = 1;      // local_size_x; local_size_y = local_size_z = 1
+};
+
+// The interface a kernel descriptor K declares: K::kShader, K::kBindingCount, K::Push,
+// K::kGroupSize (e.g. gpu::GridCountKernel in shaders/shared/kernels/grid_build.glsl).
+template <typename K> KernelInterface interfaceOf() {
+    return {K::kShader, K::kBindingCount, static_cast<uint32_t>(sizeof(typename K::Push)), K::kGroupSize};
+}
+
+}  // namespace vkp::vk

@@ -1,0 +1,63 @@
+// Interface of the path tracer kernels (shaders/path_tracer.glsl: pathtrace.comp,
+// guided_pathtrace.comp, guided_cached_pathtrace.comp; host/passes/path_trace_pass.h).
+#ifndef VKP_KERNELS_PATH_TRACE_GLSL
+#define VKP_KERNELS_PATH_TRACE_GLSL
+#include "shared/compat.glsl"
+#include "shared/kernels/scene.glsl"
+SHARED_BEGIN
+
+const uint kPathTraceGroupSize = 64u;
+
+// Bindings after the scene's 0..7.
+const uint kPathTraceFilmBinding = 8u;          // vec4 per pixel: rgb sum, sample count
+const uint kPathTraceCounterBinding = 9u;       // uint[kPathTraceCounterCount]
+const uint kPathTraceRasterDirectBinding = 10u; // vec4 per pixel: raster direct light (--direct raster)
+// The guide, guided_pathtrace.comp: the photon grid's cell starts and photons (photon_gather.glsl);
+// guided_cached_pathtrace.comp: the guiding cache's cells, CDFs and irradiance (guide_cache.glsl).
+const uint kPathTraceGuideBinding = 11u;
+const uint kPathTraceGuideCellsBinding = 11u;
+const uint kPathTraceGuideCdfsBinding = 12u;
+const uint kPathTraceGuideIrradianceBinding = 13u;
+
+// Slots of the counter buffer.
+const uint kPathTraceCounterNonFinite = 0u;     // samples that produced a non-finite value (dropped)
+const uint kPathTraceCounterSegmentsLow = 1u;   // rays traced from camera-path vertices, low word
+const uint kPathTraceCounterSegmentsHigh = 2u;  // and high word (the work Russian roulette saves)
+const uint kPathTraceCounterCount = 3u;
+
+SHARED_END
+
+#ifdef __cplusplus
+#include "shared/gpu_types.glsl"
+#include "shared/guiding.glsl"
+namespace vkp::gpu {
+
+// Push constants of the guided variants: the path tracer's, then the guide's.
+struct GuidedPathTraceParams {
+    PathTraceParams params;
+    GuideParams guide;
+};
+static_assert(sizeof(GuidedPathTraceParams) == 128, "within the guaranteed 128 bytes of push constants");
+
+struct PathTraceKernel {
+    static constexpr const char* kShader = "pathtrace.comp";
+    static constexpr uint32_t kBindingCount = kPathTraceRasterDirectBinding + 1u;
+    static constexpr uint32_t kGroupSize = kPathTraceGroupSize;
+    using Push = PathTraceParams;
+};
+struct GuidedPathTraceKernel {
+    static constexpr const char* kShader = "guided_pathtrace.comp";
+    static constexpr uint32_t kBindingCount = kPathTraceGuideBinding + 2u;
+    static constexpr uint32_t kGroupSize = kPathTraceGroupSize;
+    using Push = GuidedPathTraceParams;
+};
+struct GuidedCachedPathTraceKernel {
+    static constexpr const char* kShader = "guided_cached_pathtrace.comp";
+    static constexpr uint32_t kBindingCount = kPathTraceGuideIrradianceBinding + 1u;
+    static constexpr uint32_t kGroupSize = kPathTraceGroupSize;
+    using Push = GuidedPathTraceParams;
+};
+
+}  // namespace vkp::gpu
+#endif
+#endif

@@ -1,0 +1,79 @@
+// Interface of the photon integrator's camera-side kernels: visible_points.comp and the
+// estimates at the visible points, caustic_estimate.comp, final_gather.comp, sppm_update.comp,
+// with radiance_photons.comp, which precomputes what final gathers read
+// (host/passes/visible_point_pass.h, caustic_estimate_pass.h, final_gather_pass.h,
+// sppm_update_pass.h, radiance_photons.h). A grid binding holds the photon grid's cell starts and
+// the next binding its photons (shaders/photon_gather.glsl).
+#ifndef VKP_KERNELS_PHOTON_ESTIMATES_GLSL
+#define VKP_KERNELS_PHOTON_ESTIMATES_GLSL
+#include "shared/compat.glsl"
+#include "shared/kernels/scene.glsl"
+SHARED_BEGIN
+
+const uint kPhotonEstimateGroupSize = 64u;  // one invocation per pixel (per photon: radiance photons)
+
+// visible_points.comp: the scene's 0..7, then
+const uint kVisiblePointsFilmBinding = 8u;          // vec4 per pixel: rgb sum, sample count
+const uint kVisiblePointsPointBinding = 9u;         // GpuVisiblePoint per pixel (written)
+const uint kVisiblePointsRasterDirectBinding = 10u; // vec4 per pixel: raster direct light (--direct raster)
+
+// caustic_estimate.comp: the scene's 0..7, then
+const uint kCausticEstimateFilmBinding = 8u;
+const uint kCausticEstimatePointBinding = 9u;
+const uint kCausticEstimateGridBinding = 10u;       // the caustic map's grid (10, 11)
+
+// final_gather.comp: the scene's 0..7, then
+const uint kFinalGatherFilmBinding = 8u;
+const uint kFinalGatherPointBinding = 9u;
+const uint kFinalGatherGridBinding = 10u;           // the global map's or the radiance photons' grid (10, 11)
+
+// sppm_update.comp: the scene's 0..7, then
+const uint kSppmUpdatePixelBinding = 8u;            // SppmPixel per pixel
+const uint kSppmUpdatePointBinding = 9u;
+const uint kSppmUpdateGridBinding = 10u;            // this pass's photon map's grid (10, 11)
+
+// radiance_photons.comp
+const uint kRadiancePhotonsGridBinding = 0u;        // the global map's grid (0, 1)
+const uint kRadiancePhotonsOutputBinding = 2u;      // GpuPhoton per global photon: radiance photons
+
+SHARED_END
+
+#ifdef __cplusplus
+#include "shared/photon_render.glsl"
+#include "shared/visible_point.glsl"
+namespace vkp::gpu {
+
+struct VisiblePointsKernel {
+    static constexpr const char* kShader = "visible_points.comp";
+    static constexpr uint32_t kBindingCount = kVisiblePointsRasterDirectBinding + 1u;
+    static constexpr uint32_t kGroupSize = kPhotonEstimateGroupSize;
+    using Push = VisiblePointParams;
+};
+struct CausticEstimateKernel {
+    static constexpr const char* kShader = "caustic_estimate.comp";
+    static constexpr uint32_t kBindingCount = kCausticEstimateGridBinding + 2u;
+    static constexpr uint32_t kGroupSize = kPhotonEstimateGroupSize;
+    using Push = CausticEstimateParams;
+};
+struct FinalGatherKernel {
+    static constexpr const char* kShader = "final_gather.comp";
+    static constexpr uint32_t kBindingCount = kFinalGatherGridBinding + 2u;
+    static constexpr uint32_t kGroupSize = kPhotonEstimateGroupSize;
+    using Push = FinalGatherParams;
+};
+struct SppmUpdateKernel {
+    static constexpr const char* kShader = "sppm_update.comp";
+    static constexpr uint32_t kBindingCount = kSppmUpdateGridBinding + 2u;
+    static constexpr uint32_t kGroupSize = kPhotonEstimateGroupSize;
+    using Push = SppmParams;
+};
+struct RadiancePhotonsKernel {
+    static constexpr const char* kShader = "radiance_photons.comp";
+    static constexpr uint32_t kBindingCount = kRadiancePhotonsOutputBinding + 1u;
+    static constexpr uint32_t kGroupSize = kPhotonEstimateGroupSize;
+    using Push = RadiancePhotonParams;
+};
+
+}  // namespace vkp::gpu
+#endif
+#endif

@@ -1,0 +1,38 @@
+// Interface of photon_trace.comp (host/passes/photon_trace_pass.h).
+#ifndef VKP_KERNELS_PHOTON_TRACE_GLSL
+#define VKP_KERNELS_PHOTON_TRACE_GLSL
+#include "shared/compat.glsl"
+#include "shared/kernels/scene.glsl"
+SHARED_BEGIN
+
+const uint kPhotonTraceGroupSize = 64u;
+
+// Bindings after the scene's 0..7.
+const uint kPhotonTracePhotonBinding = 8u;   // GpuPhoton per slot: (path - firstPath) * maxDeposits + k
+const uint kPhotonTraceCounterBinding = 9u;  // uint[kPhotonCounterCount]
+
+// Slots of the counter buffer.
+const uint kPhotonCounterStoredCaustic = 0u;
+const uint kPhotonCounterStoredGlobal = 1u;    // after at least one diffuse/glossy bounce
+const uint kPhotonCounterStoredPrimary = 2u;   // direct (first-hit) photons
+const uint kPhotonCounterAbsorbed = 3u;        // paths ended by Russian roulette or a black surface
+const uint kPhotonCounterLost = 4u;            // paths that left the scene
+const uint kPhotonCounterTruncated = 5u;       // paths that reached maxDeposits stored photons
+const uint kPhotonCounterCount = 8u;
+
+SHARED_END
+
+#ifdef __cplusplus
+#include "shared/photon.glsl"
+namespace vkp::gpu {
+
+struct PhotonTraceKernel {
+    static constexpr const char* kShader = "photon_trace.comp";
+    static constexpr uint32_t kBindingCount = kPhotonTraceCounterBinding + 1u;
+    static constexpr uint32_t kGroupSize = kPhotonTraceGroupSize;
+    using Push = PhotonTraceParams;
+};
+
+}  // namespace vkp::gpu
+#endif
+#endif

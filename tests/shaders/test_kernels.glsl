@@ -1,0 +1,117 @@
+// Interfaces of the test kernels in tests/shaders/, declared once for the shaders and the tests
+// as shaders/shared/kernels/ does for the renderer's (bindings, push constants, workgroup size).
+#ifndef VKP_TEST_KERNELS_GLSL
+#define VKP_TEST_KERNELS_GLSL
+#include "shared/compat.glsl"
+#include "shared/bsdf.glsl"
+#include "shared/photon_grid.glsl"
+#include "shared/kernels/scene.glsl"
+SHARED_BEGIN
+
+const uint kTestGroupSize = 64u;
+
+// shared_functions_test.comp, the shader unit harness: evaluates one shared function for `count` inputs.
+const uint kHarnessInputBinding = 0u;   // HarnessInput (shared/harness_functions.glsl)
+const uint kHarnessOutputBinding = 1u;  // uvec4
+struct HarnessParams {
+    uint count;
+    uint function;                      // kHarness* (shared/harness_functions.glsl)
+};
+STATIC_ASSERT_SIZE(HarnessParams, 8)
+
+// bvh_trace_test.comp; push constants: uint rayCount.
+const uint kBvhTestRayBinding = 0u;       // TestRay
+const uint kBvhTestNodeBinding = 1u;      // GpuBvhNode
+const uint kBvhTestTriangleBinding = 2u;  // GpuTriangle, BVH order
+const uint kBvhTestHitBinding = 3u;       // TestHit
+
+// photon_gather_test.comp
+const uint kGatherTestQueryBinding = 0u;    // GatherQuery
+const uint kGatherTestFixedBinding = 1u;    // vec4 per query: fixed-radius sum, count
+const uint kGatherTestNearestBinding = 2u;  // uint[kMaxGatherK + 2] per query
+const uint kGatherTestGridBinding = 3u;     // the grid's cell starts, photons at 4 (photon_gather.glsl)
+struct GatherTestParams {
+    PhotonGridView grid;
+    BsdfParams bsdf;
+    uint count;
+    float coneK;
+    uint requiredFlags;
+    uint rejectedFlags;
+};
+STATIC_ASSERT_SIZE(GatherTestParams, 64)
+
+// shadow_visibility_test.comp: the scene's 0..7, then; push constants: RasterDirectParams.
+const uint kShadowTestLightBinding = 8u;    // GpuLight: the raster lights
+const uint kShadowTestOutputBinding = 9u;   // uint[3] per pixel
+
+// kernel_interface_test.comp: outputs[i] = inputs[i] * scale + offset.
+const uint kInterfaceTestInputBinding = 0u;
+const uint kInterfaceTestOutputBinding = 1u;
+struct InterfaceTestParams {
+    uint count;
+    uint scale;
+    uint offset;
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+STATIC_ASSERT_SIZE(InterfaceTestParams, 24)
+
+// constant_film.comp, the toy integrator of tests/integrator_seam_test.cpp: adds sampleCount
+// samples of `radiance` to each of `pixels` film entries (vec4: RGB sum, sample count).
+const uint kConstantFilmBinding = 0u;
+struct ConstantFilmParams {
+    vec4 radiance;
+    uint pixels;
+    uint sampleCount;
+    uint pad0;
+    uint pad1;
+};
+STATIC_ASSERT_SIZE(ConstantFilmParams, 32)
+
+SHARED_END
+
+#ifdef __cplusplus
+#include "shared/shadow_volume.glsl"
+namespace vkp::gpu {
+
+struct HarnessKernel {
+    static constexpr const char* kShader = "shared_functions_test.comp";
+    static constexpr uint32_t kBindingCount = kHarnessOutputBinding + 1u;
+    static constexpr uint32_t kGroupSize = kTestGroupSize;
+    using Push = HarnessParams;
+};
+struct BvhTestKernel {
+    static constexpr const char* kShader = "bvh_trace_test.comp";
+    static constexpr uint32_t kBindingCount = kBvhTestHitBinding + 1u;
+    static constexpr uint32_t kGroupSize = kTestGroupSize;
+    using Push = uint32_t;
+};
+struct GatherTestKernel {
+    static constexpr const char* kShader = "photon_gather_test.comp";
+    static constexpr uint32_t kBindingCount = kGatherTestGridBinding + 2u;
+    static constexpr uint32_t kGroupSize = kTestGroupSize;
+    using Push = GatherTestParams;
+};
+struct ShadowTestKernel {
+    static constexpr const char* kShader = "shadow_visibility_test.comp";
+    static constexpr uint32_t kBindingCount = kShadowTestOutputBinding + 1u;
+    static constexpr uint32_t kGroupSize = kTestGroupSize;
+    using Push = RasterDirectParams;
+};
+struct InterfaceTestKernel {
+    static constexpr const char* kShader = "kernel_interface_test.comp";
+    static constexpr uint32_t kBindingCount = kInterfaceTestOutputBinding + 1u;
+    static constexpr uint32_t kGroupSize = kTestGroupSize;
+    using Push = InterfaceTestParams;
+};
+struct ConstantFilmKernel {
+    static constexpr const char* kShader = "constant_film.comp";
+    static constexpr uint32_t kBindingCount = kConstantFilmBinding + 1u;
+    static constexpr uint32_t kGroupSize = kTestGroupSize;
+    using Push = ConstantFilmParams;
+};
+
+}  // namespace vkp::gpu
+#endif
+#endif
