@@ -87,6 +87,7 @@ struct Scene {
     std::vector<Camera> cameras;             // perspective cameras in node order
     Bounds bounds;
     size_t droppedDegenerateTriangles = 0;
+    size_t droppedDuplicateTriangles = 0;    // the same three world positions as an earlier one
 };
 
 // A camera framing the whole scene from its +Z side, used when the file has none.
