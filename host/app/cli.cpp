@@ -10,7 +10,9 @@
 
 #include "app/commands.h"
 #include "util/cli_choice.h"
+#include "util/check_range.h"
 #include "util/errors.h"
+#include "util/printable.h"
 
 namespace vkp {
 namespace {
@@ -51,9 +53,19 @@ void addFrameOptions(CLI::App& cmd, FrameSettings& frame, bool& bsdfOnly) {
         ->capture_default_str();
 }
 
-void addDeviceOptions(CLI::App& cmd, std::string& device, bool& validate) {
+void addDeviceOptions(CLI::App& cmd, std::string& device, bool& validate, double& maxMemoryGiB) {
     cmd.add_option("--device", device, "Vulkan device: index or name substring (see `vkphoton devices`)");
     cmd.add_flag("--validate", validate, "Enable the Khronos validation layer; any message is an error");
+    cmd.add_option("--max-memory", maxMemoryGiB,
+                   "Memory the scene may take, in GiB, estimated from its triangle count before loading "
+                   "(0: the memory available)")
+        ->capture_default_str();
+}
+
+// A path option that was given must not be empty: `-o ''` is a mistake, not "the default".
+void requireNonEmpty(const CLI::App& cmd, const char* name, const std::filesystem::path& value) {
+    if (cmd.get_option(name)->count() > 0 && value.empty())
+        throw InputError(fmt::format("{} '': the path is empty", name));
 }
 
 }  // namespace
@@ -72,7 +84,7 @@ int runCommandLine(int argc, const char* const* argv) {
     renderCmd->add_option("-o,--output", render.output,
                           "Output EXR path; a PNG is written beside it [default: out/SCENE.exr]");
     addFrameOptions(*renderCmd, render.frame, bsdfOnly);
-    addDeviceOptions(*renderCmd, render.device, render.validate);
+    addDeviceOptions(*renderCmd, render.device, render.validate, render.maxMemoryGiB);
     renderCmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
     renderCmd->add_flag("--quiet", render.quiet, "No progress output");
     std::string integratorHelp = "The integrator:";
@@ -103,7 +115,7 @@ int runCommandLine(int argc, const char* const* argv) {
         ->capture_default_str();
     photonsCmd->add_option("--height", photons.height, "Height of that image")->capture_default_str();
     photonsCmd->add_option("--camera", photons.cameraIndex, "Scene camera index for the importons");
-    addDeviceOptions(*photonsCmd, photons.device, photons.validate);
+    addDeviceOptions(*photonsCmd, photons.device, photons.validate, photons.maxMemoryGiB);
     photonsCmd->add_flag("--quiet", photons.quiet, "No summary output");
 
     GuideGridCommandOptions guideGrid;
@@ -118,20 +130,31 @@ int runCommandLine(int argc, const char* const* argv) {
     guideCmd->add_option("--camera", guideGrid.cameraIndex, "Scene camera index");
     guideCmd->add_option("--seed", guideGrid.seed, "Random seed")->capture_default_str();
     guideGrid.guide.addOptions(*guideCmd, false);
-    addDeviceOptions(*guideCmd, guideGrid.device, guideGrid.validate);
+    addDeviceOptions(*guideCmd, guideGrid.device, guideGrid.validate, guideGrid.maxMemoryGiB);
     guideCmd->add_flag("--quiet", guideGrid.quiet, "No output but the file");
 
     app.add_subcommand("devices", "List the Vulkan devices");
 
     try {
         app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e) == 0 ? kExitOk : kExitBadInput;
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e) == 0 ? kExitOk : kExitBadInput;
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e) == 0 ? kExitOk : kExitBadInput;
     } catch (const CLI::ParseError& e) {
-        const int code = app.exit(e);
-        return code == 0 ? kExitOk : kExitBadInput;
+        // CLI11 quotes the arguments: escape them (a value may hold terminal escapes).
+        if (e.get_exit_code() == 0) return kExitOk;
+        fmt::print(stderr, "error: {}\nRun with --help for more information.\n", printable(e.what()));
+        return kExitBadInput;
     }
 
     try {
         if (renderCmd->parsed()) {
+            requireNonEmpty(*renderCmd, "--output", render.output);
+            requireNonEmpty(*renderCmd, "--stats-json", render.statsJson);
+            checkRange("--max-memory", render.maxMemoryGiB, 0.0, 1.0e6);
             render.frame.nextEventEstimation = !bsdfOnly;
             render.frame.check();
             const IntegratorConfig& config = *configs.at(integratorName);
@@ -139,10 +162,12 @@ int runCommandLine(int argc, const char* const* argv) {
             return runRender(render, config);
         }
         if (photonsCmd->parsed()) {
+            requireNonEmpty(*photonsCmd, "--output", photons.output);
             photons.check();
             return runPhotons(photons);
         }
         if (guideCmd->parsed()) {
+            requireNonEmpty(*guideCmd, "--output", guideGrid.output);
             guideGrid.x = pixel.at(0);
             guideGrid.y = pixel.at(1);
             guideGrid.check();
@@ -150,10 +175,10 @@ int runCommandLine(int argc, const char* const* argv) {
         }
         return runDevices();
     } catch (const InputError& e) {
-        fmt::print(stderr, "error: {}\n", e.what());
+        fmt::print(stderr, "error: {}\n", printable(e.what()));
         return kExitBadInput;
     } catch (const std::exception& e) {
-        fmt::print(stderr, "error: {}\n", e.what());
+        fmt::print(stderr, "error: {}\n", printable(e.what()));
         return kExitRuntimeFailure;
     }
 }

@@ -53,6 +53,10 @@ uint8_t linearToSrgb8(float x) {
 uint8_t toDisplayByte(float linear, float exposure) { return linearToSrgb8(tonemapAces(linear * exposure)); }
 
 void writePng(const std::filesystem::path& path, const ImageRgb& image, float exposure) {
+    writeBytesAtomically(path, pngBytes(path, image, exposure));
+}
+
+std::string pngBytes(const std::filesystem::path& path, const ImageRgb& image, float exposure) {
     if (!(std::isfinite(exposure) && exposure > 0.0f))
         throw InputError(fmt::format("exposure must be positive and finite, not {}", exposure));
     if (!isWellFormed(image))
@@ -69,7 +73,7 @@ void writePng(const std::filesystem::path& path, const ImageRgb& image, float ex
     if (!stbi_write_png_to_func(appendBytes, &encoded, static_cast<int>(image.width), static_cast<int>(image.height),
                                 3, display.data(), static_cast<int>(image.width * 3)))
         throw RuntimeError(fmt::format("cannot write {}: the PNG encoder failed", path.string()));
-    writeBytesAtomically(path, encoded);
+    return encoded;
 }
 
 }  // namespace vkp

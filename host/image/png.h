@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 
 #include "image/image.h"
 
@@ -22,6 +23,8 @@ uint8_t toDisplayByte(float linear, float exposure = 1.0f);
 // Writes an RGB 8-bit PNG of toDisplayByte(value, exposure) per channel, atomically (see
 // atomic_file.h). Throws InputError when `exposure` is not positive and finite, RuntimeError
 // naming the path on any other failure (including an image that is not well-formed).
+// The bytes writePng would write.
+std::string pngBytes(const std::filesystem::path& path, const ImageRgb& image, float exposure = 1.0f);
 void writePng(const std::filesystem::path& path, const ImageRgb& image, float exposure = 1.0f);
 
 }  // namespace vkp

@@ -24,6 +24,7 @@
 #include "scene/gltf_materials.h"
 #include "scene/gltf_preflight.h"
 #include "util/errors.h"
+#include "util/printable.h"
 
 namespace vkp {
 namespace {
@@ -180,7 +181,7 @@ private:
     }
 
     void warn(const std::string& message) const {
-        fmt::print(stderr, "warning: {}: {}\n", m_path.string(), message);
+        fmt::print(stderr, "warning: {}\n", printable(m_path.string() + ": " + message));
     }
 
     void parse() {
