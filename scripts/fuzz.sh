@@ -21,6 +21,6 @@ trap 'rm -rf "$work"' EXIT
 # -fork would use more cores than CI has; one process, bounded per input and in all.
 VKPHOTON_FUZZ_FOLDER="$work" "$fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
   -max_len=65536 -dict=fuzz/gltf.dict -artifact_prefix="$dir/artifacts/" -print_final_stats=1 "$corpus" 2>&1 |
-  grep -vE '^#[0-9]+.*(NEW|REDUCE|pulse)' || true
+  grep -vE '^#[0-9]+.*(NEW|REDUCE|pulse)|^warning: ' || true
 status=${PIPESTATUS[0]}
 exit "$status"

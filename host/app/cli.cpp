@@ -39,7 +39,8 @@ void addFrameOptions(CLI::App& cmd, FrameSettings& frame, bool& bsdfOnly) {
     cmd.add_option("--time-limit", frame.timeLimitSeconds,
                    "Stop after this many seconds (0: no limit); the image is marked partial");
     cmd.add_option("--camera", frame.cameraIndex,
-                   "Index of the scene camera to render from [default: first, or a framing of the scene]");
+                   "Index of the scene camera to render from [default: first, or a framing of the scene]")
+        ->check(CLI::NonNegativeNumber);
     cmd.add_flag("--no-nee", bsdfOnly, "Disable next-event estimation (BSDF sampling only; a reference)");
     const std::vector<std::pair<std::string, DirectLight>> direct{{"traced", DirectLight::Traced},
                                                                   {"raster", DirectLight::Raster}};
@@ -60,6 +61,15 @@ void addDeviceOptions(CLI::App& cmd, std::string& device, bool& validate, double
                    "Memory the scene may take, in GiB, estimated from its triangle count before loading "
                    "(0: the memory available)")
         ->capture_default_str();
+}
+
+// An option given an empty value (`--q ''`) is a mistake: CLI11 would leave the default.
+void refuseEmptyValues(CLI::App& app) {
+    for (const CLI::Option* option : app.get_options())
+        for (const std::string& value : option->results())
+            if (value.empty() && option->get_expected_min() > 0)
+                throw InputError(fmt::format("{} '': the value is empty", option->get_name()));
+    for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) refuseEmptyValues(*sub);
 }
 
 // A path option that was given must not be empty: `-o ''` is a mistake, not "the default".
@@ -114,7 +124,7 @@ int runCommandLine(int argc, const char* const* argv) {
     photonsCmd->add_option("--width", photons.width, "Width of the image the importons' camera looks at")
         ->capture_default_str();
     photonsCmd->add_option("--height", photons.height, "Height of that image")->capture_default_str();
-    photonsCmd->add_option("--camera", photons.cameraIndex, "Scene camera index for the importons");
+    photonsCmd->add_option("--camera", photons.cameraIndex, "Scene camera index for the importons")->check(CLI::NonNegativeNumber);
     addDeviceOptions(*photonsCmd, photons.device, photons.validate, photons.maxMemoryGiB);
     photonsCmd->add_flag("--quiet", photons.quiet, "No summary output");
 
@@ -127,7 +137,7 @@ int runCommandLine(int argc, const char* const* argv) {
     guideCmd->add_option("-o,--output", guideGrid.output, "Output .png [default: out/SCENE-guide-X-Y.png]");
     guideCmd->add_option("--width", guideGrid.width, "Image width the pixel belongs to")->capture_default_str();
     guideCmd->add_option("--height", guideGrid.height, "Image height the pixel belongs to")->capture_default_str();
-    guideCmd->add_option("--camera", guideGrid.cameraIndex, "Scene camera index");
+    guideCmd->add_option("--camera", guideGrid.cameraIndex, "Scene camera index")->check(CLI::NonNegativeNumber);
     guideCmd->add_option("--seed", guideGrid.seed, "Random seed")->capture_default_str();
     guideGrid.guide.addOptions(*guideCmd, false);
     addDeviceOptions(*guideCmd, guideGrid.device, guideGrid.validate, guideGrid.maxMemoryGiB);
@@ -151,6 +161,7 @@ int runCommandLine(int argc, const char* const* argv) {
     }
 
     try {
+        refuseEmptyValues(app);
         if (renderCmd->parsed()) {
             requireNonEmpty(*renderCmd, "--output", render.output);
             requireNonEmpty(*renderCmd, "--stats-json", render.statsJson);
