@@ -62,7 +62,12 @@ PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays
         if (deposit.mode == gpu::kDepositDensity && !(deposit.densityAccuracy > 0.0f))
             throw InputError(fmt::format("--density-accuracy {}: must be positive", deposit.densityAccuracy));
     }
-    const uint64_t maxPhotons = context.properties().limits.maxStorageBufferRange / sizeof(gpu::GpuPhoton);
+    // The map's buffer within the storage-buffer range, and its grid passes (one invocation per
+    // photon, 64 per workgroup) within one dispatch: 4 M photons on lavapipe either way, where a
+    // capacity of 2^22 once asked for 65536 workgroups (the limit is 65535).
+    const VkPhysicalDeviceLimits& limits = context.properties().limits;
+    const uint64_t maxPhotons = std::min<uint64_t>(limits.maxStorageBufferRange / sizeof(gpu::GpuPhoton),
+                                                   uint64_t(limits.maxComputeWorkGroupCount[0]) * 64);
     uint64_t chunk = settings.chunkPaths ? settings.chunkPaths
                                          : std::clamp<uint64_t>(kChunkSlots / settings.maxDeposits, 1, kMaxChunkPaths);
     // Density control decides each round against the photons stored by the rounds before.

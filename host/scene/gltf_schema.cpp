@@ -236,8 +236,11 @@ private:
         }
         if (const auto max = bound("maximum")) {
             const bool exclusive = flag("exclusiveMaximum");
+            // Exporters write 1.0000001 for factors bounded by 1: a relative 1e-6 is let through
+            // (the loader clamps it with a warning).
+            const double slack = integral ? 0.0 : 1e-6 * std::max(1.0, std::abs(*max));
             for (const double x : {d, asUsed(d)})
-                if (exclusive ? !(x < *max) : !(x <= *max))
+                if (exclusive ? !(x < *max) : !(x <= *max + slack))
                     return problem(fmt::format("{} {} {}", shortText(value), exclusive ? "must be less than" : "is above the maximum",
                                                numberText(*max)));
         }
