@@ -359,9 +359,9 @@ private:
                 const glm::dvec3 p(world * glm::dvec4(glm::dvec3(positions[v[k]]), 1.0));
                 const double reach = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
                 if (!(reach <= kMaxCoordinate))
-                    fail(m_nodeElement, fmt::format("{}: vertex {} lies at ({:.3g}, {:.3g}, {:.3g}) in world space, beyond the "
-                                                    "+-{:g} units vkphoton handles",
-                                                    m_primitiveElement, v[k], p.x, p.y, p.z, kMaxCoordinate));
+                    fail(m_primitiveElement, fmt::format("vertex {} of {} lies at ({:.3g}, {:.3g}, {:.3g}) in world space, "
+                                                         "beyond the +-{:g} units vkphoton handles",
+                                                         v[k], m_nodeElement, p.x, p.y, p.z, kMaxCoordinate));
                 t.p[k] = glm::vec3(p);
                 t.uv[k] = uvs.empty() ? glm::vec2(0.0f) : uvs[v[k]];
             }
