@@ -22,8 +22,9 @@ struct GltfLimits {
     uint64_t maxMemoryBytes = UINT64_MAX;      // --max-memory, else the memory available
 };
 
-// Host memory the loader, the BVH build and the upload need per triangle at their peak
-// (measured: docs/scene-format.md), for the estimate against GltfLimits::maxMemoryBytes.
+// Host memory the loader, the BVH build and the upload need per triangle at their peak, for the
+// estimate against GltfLimits::maxMemoryBytes: 545 bytes measured (peak RSS less the 108 MB of
+// an empty run, 1.0 M and 1.67 M triangles on lavapipe), with a margin.
 constexpr uint64_t kHostBytesPerTriangle = 600;
 
 // The range of world-space coordinates the renderer's single-precision arithmetic handles
