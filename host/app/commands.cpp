@@ -223,13 +223,16 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
     if (output.extension() != ".png")
         throw InputError(fmt::format("-o {}: the guiding grid is written as .png", output.string()));
     checkWritable(output);
+    installInterruptHandler();
     vk::Context context({options.validate, options.device});
     const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB);
     const Camera camera = chooseCamera(scene, options.cameraIndex);
     const GpuScene gpuScene(context, scene);
     GuideSettings settings = options.guide;
     settings.cache = false;  // the per-vertex grid: the one the paper builds
-    const PathGuide guide(gpuScene, settings, options.seed);
+    RenderControl control;  // Ctrl-C: the grid of the photons traced so far
+    control.stop = &interruptRequested();
+    const PathGuide guide(gpuScene, settings, options.seed, &control);
     const GuideGridAtPixel grid = guideGridAtPixel(scene, gpuScene.arrays(), guide, settings, camera, options.width,
                                                    options.height, options.x, options.y);
     writePng(output, guideGridImage(grid));
@@ -250,7 +253,7 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
         fmt::print("wrote {}\n", printable(output.string()));
     }
     if (context.validationEnabled()) context.throwOnValidationMessages();
-    return kExitOk;
+    return interruptRequested().load() ? interruptExitCode() : kExitOk;
 }
 
 int runDevices() {
