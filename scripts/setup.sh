@@ -10,6 +10,7 @@ packages=(
   glslang-tools glslang-dev spirv-tools libspirv-cross-c-shared-dev
   libglm-dev libtinygltf-dev libopenexr-dev libstb-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev
+  clang-14 libclang-rt-14-dev  # the glTF loader fuzzer (fuzz/): libFuzzer, ASan, UBSan
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -29,3 +30,5 @@ if [ ! -f build/CMakeCache.txt ]; then
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
 cmake --build build -j "$jobs"
+# The fuzzer is a separate project (clang); the GltfLoaderFuzz test runs it.
+cmake --build build -j "$jobs" --target gltf_fuzz

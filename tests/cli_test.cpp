@@ -12,6 +12,13 @@
 #include <thread>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+#include <map>
+#include <regex>
+#include <set>
+
 #include "image/exr.h"
 #include "image/image.h"
 
@@ -220,7 +227,7 @@ TEST(Cli, InterruptWritesThePartialImage) {
     int status = 0;
     ASSERT_EQ(waitpid(pid, &status, 0), pid);
     ASSERT_TRUE(WIFEXITED(status));
-    EXPECT_EQ(WEXITSTATUS(status), 130);
+    EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
     ASSERT_TRUE(fs::exists(exr));
     ExrAttributes attributes;
     readExr(exr, &attributes);
@@ -394,6 +401,234 @@ TEST(Cli, InfoDescribesTheSceneWithoutAVulkanDevice) {
         EXPECT_NE(r.output.find(bad), std::string::npos) << r.output;
     }
     EXPECT_EQ(runVkphoton("info").exitCode, 2);
+}
+
+// --- issue 18: hostile command lines, signals -------------------------------------------------
+
+const std::string kTriangle = std::string(VKPHOTON_TEST_DATA) + "/good/triangle.gltf";
+
+std::map<std::string, std::string> exrAttributes(const fs::path& exr) {
+    ExrAttributes attributes;
+    readExr(exr, &attributes);
+    return {attributes.begin(), attributes.end()};
+}
+
+bool hasTemporaryFiles(const fs::path& dir) {
+    for (const auto& entry : fs::recursive_directory_iterator(dir))
+        if (entry.path().filename().string().find(".tmp-") != std::string::npos) return true;
+    return false;
+}
+
+// Every numeric flag of every subcommand, and how to reach a check of it (the integrator).
+const std::map<std::string, std::vector<std::string>> kNumericFlags = {
+    {"render", {"--spp", "--width", "--height", "--seed", "--max-depth", "--time-limit", "--camera",
+                "--area-light-samples", "--max-memory"}},
+    {"render --integrator photon", {"--photons", "--caustic-photons", "--gather-rays", "--gather-k", "--radiance-photons",
+                                    "--radius", "--alpha", "--q", "--importons", "--deposit-epsilon", "--density-accuracy",
+                                    "--density-rounds"}},
+    {"render --integrator guided", {"--guide-photons", "--guide-k", "--guide-adapt", "--guide-mix"}},
+    {"photons", {"--photons", "--max-deposits", "--seed", "--importons", "--deposit-epsilon", "--density-accuracy",
+                 "--density-rounds", "--width", "--height", "--camera", "--max-memory"}},
+    {"guide-grid --pixel 1 1", {"--width", "--height", "--camera", "--seed", "--guide-photons", "--guide-k", "--max-memory"}},
+};
+
+// The table above must list every option whose help gives a numeric type: a new flag fails here
+// until it is added (and so tested below).
+std::map<std::string, std::string> numericOptions(const std::string& command);
+
+TEST(CliHostile, TheNumericFlagTableCoversEveryNumericOption) {
+    for (const std::string command : {"render", "photons", "guide-grid"}) {
+        const auto types = numericOptions(command);
+        EXPECT_GT(types.size(), 5u) << command;  // the help was read
+        for (const auto& [flag, type] : types) {
+            if (flag == "--pixel") continue;  // GuideGridRefusesOverflowingGridsAndPixels
+            bool listed = false;
+            for (const auto& [prefix, flags] : kNumericFlags)
+                if (prefix.rfind(command, 0) == 0)
+                    listed = listed || std::find(flags.begin(), flags.end(), flag) != flags.end();
+            EXPECT_TRUE(listed) << command << " " << flag << " (" << type << ") is missing from kNumericFlags";
+        }
+    }
+}
+
+// The numeric type (UINT, INT, FLOAT) of every option of `command`, read from its --help.
+std::map<std::string, std::string> numericOptions(const std::string& command) {
+    const std::regex numeric(R"(^\s+(--[a-z-]+)\s+(UINT|INT|FLOAT))");
+    std::map<std::string, std::string> types;
+    std::istringstream lines(runVkphoton(command + " --help").output);
+    std::string line;
+    std::smatch m;
+    while (std::getline(lines, line))
+        if (std::regex_search(line, m, numeric)) types[m[1]] = m[2];
+    return types;
+}
+
+// NaN, infinities, numbers beyond double, negatives, trailing junk, empty values, and for
+// integers values beyond 64 and 32 bits: every numeric flag refuses them with exit 2, naming
+// itself, before any work (the small image settings keep a wrongly accepted value cheap).
+TEST(CliHostile, EveryNumericFlagRefusesNanInfinityAndOverflow) {
+    const fs::path dir = tempDir("numeric");
+    for (const auto& [command, flags] : kNumericFlags) {
+        const std::string verb = command.substr(0, command.find(' '));
+        const auto types = numericOptions(verb);
+        const std::map<std::string, std::string> cheap = {{"--spp", "1"}, {"--width", "4"}, {"--height", "4"},
+                                                          {"--photons", "100"}, {"--guide-photons", "100"}};
+        for (const std::string& flag : flags) {
+            ASSERT_TRUE(types.count(flag)) << verb << " has no numeric " << flag;
+            std::vector<std::string> values{"nan", "inf", "-inf", "1e400", "-1", "2x", "''"};
+            if (types.at(flag) != "FLOAT") values.insert(values.end(), {"99999999999999999999", "4294967296", "1.5"});
+            for (const std::string& value : values) {
+                const std::string rest = command.size() > verb.size() ? command.substr(verb.size()) : "";
+                std::string args = verb + " " + kTriangle + rest + " --quiet " + flag + " " + value;
+                for (const auto& [option, setting] : cheap)
+                    if (option != flag && types.count(option) && (option != "--photons" || rest.empty()) &&
+                        (option != "--guide-photons" || verb == "guide-grid"))
+                        args += " " + option + " " + setting;
+                args += " -o " + (dir / (verb == "photons" ? "x.ply" : verb == "render" ? "x.exr" : "x.png")).string();
+                const RunResult r = runVkphoton(args);
+                EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+                EXPECT_NE(r.output.find(flag), std::string::npos) << args << "\n" << r.output;
+            }
+        }
+    }
+    EXPECT_FALSE(fs::exists(dir / "x.exr"));
+    EXPECT_FALSE(fs::exists(dir / "x.ply"));
+}
+
+// Regression tests of the three guide-grid crashes and silent misreadings the probe found.
+TEST(CliHostile, GuideGridRefusesOverflowingGridsAndPixels) {
+    const fs::path png = tempDir("guide-hostile") / "g.png";
+    for (const std::string args : {"--pixel 1 1 --guide-grid 33554432x128", "--pixel 1 1 --guide-grid 4294967297x1",
+                                   "--pixel 1 1 --guide-grid -4x16", "--pixel 1 1 --guide-grid 4x16x",
+                                   "--pixel 99999999999999999999 0", "--pixel 1e3 5", "--pixel nan 1", "--pixel 1 1 1"}) {
+        const RunResult r = runVkphoton("guide-grid " + kBox + " --quiet --width 8 --height 8 " + args + " -o " + png.string());
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
+        EXPECT_TRUE(r.output.find("--guide-grid") != std::string::npos || r.output.find("--pixel") != std::string::npos)
+            << args << "\n" << r.output;
+    }
+    EXPECT_FALSE(fs::exists(png));
+}
+
+// Output paths are checked before loading and rendering: a render of 10^5 spp would take
+// minutes, so a quick refusal shows nothing was rendered.
+TEST(CliHostile, OutputPathsAreCheckedBeforeTheWork) {
+    const fs::path dir = tempDir("outputs");
+    fs::create_directories(dir / "folder.exr");
+    const std::string longName = (dir / (std::string(300, 'n') + ".exr")).string();
+    for (const auto& [args, code] : std::vector<std::pair<std::string, int>>{
+             {"-o " + (dir / "folder.exr").string(), 1},
+             {"-o /proc/vkphoton.exr", 1},
+             {"-o " + longName, 1},
+             {"-o " + (dir / "ok.exr").string() + " --stats-json /proc/vkphoton.json", 1},
+             {"-o ''", 2},
+             {"-o " + (dir / "ok.exr").string() + " --stats-json ''", 2}}) {
+        const auto start = std::chrono::steady_clock::now();
+        const RunResult r = runVkphoton("render " + kBox + " --quiet --spp 100000 --width 64 --height 64 " + args);
+        EXPECT_EQ(r.exitCode, code) << args << "\n" << r.output;
+        EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 20.0) << args;
+    }
+    EXPECT_FALSE(fs::exists(dir / "ok.exr"));
+    EXPECT_FALSE(hasTemporaryFiles(dir));
+}
+
+// Control characters in what a message echoes (a path, a URI) reach the terminal escaped.
+TEST(CliHostile, MessagesEscapeControlCharacters) {
+    const fs::path dir = tempDir("escape");
+    const std::string uri = "tri\x1b[2J\x07angle\n.bin";
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(kTriangle));
+    doc["buffers"][0]["uri"] = uri;
+    std::ofstream(dir / "scene.gltf") << doc.dump();
+    for (const std::string& scene : {(dir / "scene.gltf").string(), (dir / "sc\x1b]0;owned\x07.gltf").string()}) {
+        const RunResult r = runVkphoton("render '" + scene + "' --quiet -o " + (dir / "x.exr").string());
+        EXPECT_EQ(r.exitCode, 2) << r.output;
+        EXPECT_EQ(r.output.find('\x1b'), std::string::npos) << r.output;
+        EXPECT_EQ(r.output.find('\x07'), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("\\x1b"), std::string::npos) << r.output;
+    }
+}
+
+pid_t spawnVkphoton(std::vector<std::string> args) {
+    args.insert(args.begin(), VKPHOTON_BINARY);
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    return posix_spawn(&pid, VKPHOTON_BINARY, nullptr, nullptr, argv.data(), environ) == 0 ? pid : -1;
+}
+
+int waitExitCode(pid_t pid) {
+    int status = 0;
+    if (waitpid(pid, &status, 0) != pid) return -2;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// SIGTERM during the photon pass (once ignored for 24 s): the partial image is written within a
+// chunk or two, marked, exit 143, no temporary files.
+TEST(CliHostile, SigtermDuringThePhotonPassWritesThePartialImage) {
+    const fs::path dir = tempDir("sigterm");
+    const fs::path exr = dir / "box.exr";
+    const pid_t pid = spawnVkphoton({"render", kBox, "--quiet", "--integrator", "photon", "--photons", "50000000",
+                                     "--spp", "4", "--width", "16", "--height", "16", "-o", exr.string()});
+    ASSERT_GT(pid, 0);
+    std::this_thread::sleep_for(std::chrono::seconds(4));  // into the photon pass
+    const auto signalled = std::chrono::steady_clock::now();
+    kill(pid, SIGTERM);
+    EXPECT_EQ(waitExitCode(pid), 128 + SIGTERM);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - signalled).count(), 15.0);
+    ASSERT_TRUE(fs::exists(exr));
+    EXPECT_TRUE(fs::exists(dir / "box.png"));
+    const auto attributes = exrAttributes(exr);
+    EXPECT_EQ(attributes.at("vkphoton/partial"), "true");
+    EXPECT_EQ(attributes.at("vkphoton/stopReason"), "interrupted");
+    EXPECT_EQ(attributes.at("vkphoton/spp"), "1");  // one sample, always
+    EXPECT_FALSE(hasTemporaryFiles(dir));
+}
+
+// A second signal stops at once: nothing new is written, the previous run's EXR and PNG stay as
+// they were (both), no temporary files.
+TEST(CliHostile, SecondSignalLeavesThePreviousOutputsAndNoTemporaryFiles) {
+    const fs::path dir = tempDir("sigterm-twice");
+    const fs::path exr = dir / "box.exr";
+    std::ofstream(exr) << "previous exr";
+    std::ofstream(dir / "box.png") << "previous png";
+    const pid_t pid = spawnVkphoton({"render", kBox, "--quiet", "--spp", "1000000", "--width", "16", "--height", "16",
+                                     "-o", exr.string()});
+    ASSERT_GT(pid, 0);
+    std::this_thread::sleep_for(std::chrono::seconds(3));
+    kill(pid, SIGTERM);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    kill(pid, SIGHUP);
+    EXPECT_EQ(waitExitCode(pid), 128 + SIGTERM);
+    std::ifstream a(exr), b(dir / "box.png");
+    std::string exrText, pngText;
+    std::getline(a, exrText);
+    std::getline(b, pngText);
+    // Either both are the previous files or both are new (the renames hold signals): never mixed.
+    EXPECT_EQ(exrText == "previous exr", pngText == "previous png") << exrText << " / " << pngText;
+    EXPECT_FALSE(hasTemporaryFiles(dir));
+}
+
+// A render stopped during the photon pass equals a complete render of the paths it traced: the
+// photon power is normalised by those paths, not by --photons.
+TEST(CliHostile, AStoppedPhotonPassEqualsACompleteOneOfThePathsTraced) {
+    const fs::path dir = tempDir("stopped-photons");
+    const std::string common = "render " + kBox + " --quiet --integrator photon --caustic-photons 0 --spp 1 "
+                               "--width 16 --height 16 --deposit all ";
+    RunResult r = runVkphoton(common + "--photons 20000000 --time-limit 0.001 -o " + (dir / "a.exr").string() +
+                              " --stats-json " + (dir / "a.json").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json a = nlohmann::json::parse(std::ifstream(dir / "a.json"));
+    EXPECT_EQ(a["partial"], true);
+    EXPECT_EQ(a["stopReason"], "time limit");
+    const uint64_t traced = a["photons"]["pathsTraced"].get<uint64_t>();
+    EXPECT_LT(traced, 20000000u);
+    // The stopped render skipped the radiance photons: compare with per-hit estimates.
+    r = runVkphoton(common + "--photons " + std::to_string(traced) + " --radiance-photons 0 -o " + (dir / "b.exr").string() +
+                    " --stats-json " + (dir / "b.json").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json b = nlohmann::json::parse(std::ifstream(dir / "b.json"));
+    for (int c = 0; c < 3; ++c)
+        EXPECT_DOUBLE_EQ(a["meanRadiance"][c].get<double>(), b["meanRadiance"][c].get<double>()) << c;
 }
 
 }  // namespace

@@ -535,11 +535,63 @@ TEST_F(GltfLoader, NonTrianglePrimitivesAreSkippedAndTheDefaultMaterialAddedOnly
     doc["materials"].push_back({{"name", "unused"}});
     json plain = doc["meshes"][0]["primitives"][0];
     plain.erase("material");
-    doc["meshes"][0]["primitives"].push_back(plain);
+    // Elsewhere: the same triangle at the same place would be dropped as a duplicate.
+    doc["meshes"].push_back({{"primitives", {plain}}});
+    doc["nodes"].push_back({{"mesh", 1}, {"translation", {2, 0, 0}}});
+    doc["scenes"][0]["nodes"].push_back(1);
     s = loadGltf(write(doc));
     ASSERT_EQ(s.materials.size(), 3u);
     EXPECT_EQ(s.materials[2].name, "default");
     EXPECT_EQ(s.triangles.at(1).material, 2u);
+}
+
+// Issue 18: a million nodes of one triangle made rays run out of the device's loop budget; exact
+// copies (also listed from another vertex) are dropped and counted, moved copies are kept.
+TEST_F(GltfLoader, DuplicateTrianglesAreDroppedAndCounted) {
+    json doc = triangleDoc(true, false);
+    doc["nodes"] = json::array();
+    for (int i = 0; i < 1000; ++i) doc["nodes"].push_back({{"mesh", 0}});
+    doc["nodes"].push_back({{"mesh", 0}, {"translation", {0, 0, 1}}});
+    doc["nodes"].push_back({{"mesh", 0}, {"rotation", {0, 0, 0, 1}}});  // identity: a copy
+    json roots = json::array();
+    for (int i = 0; i < 1002; ++i) roots.push_back(i);
+    doc["scenes"][0]["nodes"] = roots;
+    Scene s = loadGltf(write(doc));
+    EXPECT_EQ(s.triangles.size(), 2u);
+    EXPECT_EQ(s.droppedDuplicateTriangles, 1000u);
+
+    // The same vertices in another rotation of the index order are the same triangle.
+    json rotated = triangleDoc(true, false);
+    rotated["meshes"][0]["primitives"].push_back(rotated["meshes"][0]["primitives"][0]);
+    s = loadGltf(write(rotated));
+    EXPECT_EQ(s.droppedDuplicateTriangles, 1u);
+}
+
+// Issue 18: device and memory limits are checked from the accessors' counts before anything is
+// decoded, every mesh reference counted, and refused as RuntimeError (exit 1), not bad input.
+TEST_F(GltfLoader, DeviceAndMemoryLimitsAreCheckedBeforeDecoding) {
+    json doc = triangleDoc(false, false);
+    doc["accessors"].push_back({{"componentType", 5126}, {"count", 3 << 20}, {"type", "VEC3"}});  // zeros: no data
+    doc["meshes"][0]["primitives"] = json::array();
+    for (int i = 0; i < 16; ++i) doc["meshes"][0]["primitives"].push_back({{"attributes", {{"POSITION", 1}}}, {"material", 0}});
+    const fs::path path = write(doc);
+    GltfLimits device;
+    device.deviceMaxTriangles = 1u << 20;
+    try {
+        loadGltf(path, device);
+        ADD_FAILURE() << "not refused";
+    } catch (const RuntimeError& e) {
+        EXPECT_NE(std::string(e.what()).find("scenes[0]: 16777216 triangles (counting every mesh reference) exceed what the "
+                                             "device holds (1048576"), std::string::npos) << e.what();
+    }
+    GltfLimits memory;
+    memory.maxMemoryBytes = uint64_t(1) << 30;
+    try {
+        loadGltf(path, memory);
+        ADD_FAILURE() << "not refused";
+    } catch (const RuntimeError& e) {
+        EXPECT_NE(std::string(e.what()).find("GiB of memory; 1.0 GiB are allowed"), std::string::npos) << e.what();
+    }
 }
 
 TEST_F(GltfLoader, CamerasAreOrthonormalAndOrthographicOnesSkipped) {
@@ -575,7 +627,7 @@ TEST_F(GltfLoader, LimitsAreEnforced) {
             EXPECT_NE(std::string(e.what()).find(substring), std::string::npos) << e.what();
         }
     };
-    expectRefused([](GltfLimits& l) { l.maxTriangles = 0; }, "meshes[0].primitives[0]: the scene exceeds the limit of 0 triangles");
+    expectRefused([](GltfLimits& l) { l.maxTriangles = 0; }, "scenes[0]: 1 triangles (counting every mesh reference) exceed the limit of 0");
     expectRefused([](GltfLimits& l) { l.maxImageDimension = 1; }, "images[0]: 2x1 pixels exceeds the image size limit");
     expectRefused([](GltfLimits& l) { l.maxImagePixels = 1; }, "images[0]: 2x1 pixels exceeds the image size limit");
     expectRefused([](GltfLimits& l) { l.maxTotalImagePixels = 1; }, "images[0]: the file's images add up to more than");

@@ -268,6 +268,33 @@ TEST(AtomicFile, AFailingWriterKeepsTheOldFileAndLeavesNoTemporary) {
     EXPECT_EQ(listing(dir), std::vector<std::string>{"out.txt"});
 }
 
+// Issue 18: an EXR and its PNG are replaced together or not at all.
+TEST(AtomicFile, FilesWrittenTogetherAreReplacedTogetherOrNotAtAll) {
+    const fs::path dir = tempDir("atomic-together");
+    writeFilesTogether({{dir / "a.exr", "exr 1"}, {dir / "a.png", "png 1"}});
+    writeFilesTogether({{dir / "a.exr", "exr 2"}, {dir / "a.png", "png 2"}});
+    EXPECT_EQ(readFile(dir / "a.exr"), "exr 2");
+    EXPECT_EQ(readFile(dir / "a.png"), "png 2");
+    fs::create_directories(dir / "b.png");  // the second target cannot be written
+    writeTextAtomically(dir / "b.exr", "old");
+    EXPECT_THROW(writeFilesTogether({{dir / "b.exr", "new"}, {dir / "b.png", "new"}}), RuntimeError);
+    EXPECT_EQ(readFile(dir / "b.exr"), "old");
+    EXPECT_FALSE(hasTemporaryFiles(dir));
+}
+
+// Issue 18: outputs are checked before the work; the check leaves nothing behind.
+TEST(AtomicFile, CheckWritableRefusesWhatCannotBeWritten) {
+    const fs::path dir = tempDir("atomic-check");
+    EXPECT_NO_THROW(checkWritable(dir / "new" / "x.exr"));
+    EXPECT_TRUE(fs::is_directory(dir / "new"));
+    EXPECT_THROW(checkWritable(dir), RuntimeError);                          // a directory
+    EXPECT_THROW(checkWritable(dir / (std::string(300, 'a') + ".exr")), RuntimeError);  // name too long
+    EXPECT_THROW(checkWritable("/proc/vkphoton-test.exr"), RuntimeError);    // cannot create files there
+    std::ofstream(dir / "file") << "x";
+    EXPECT_THROW(checkWritable(dir / "file" / "x.exr"), RuntimeError);      // under a regular file
+    EXPECT_FALSE(hasTemporaryFiles(dir));
+}
+
 TEST(AtomicFile, RefusesToReplaceSpecialFiles) {
     const fs::path dir = tempDir("atomic-fifo");
     ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0600), 0);

@@ -12,7 +12,9 @@
 #include "app/commands.h"
 #include "app/info_command.h"
 #include "util/cli_choice.h"
+#include "util/check_range.h"
 #include "util/errors.h"
+#include "util/printable.h"
 
 namespace vkp {
 namespace {
@@ -39,7 +41,8 @@ void addFrameOptions(CLI::App& cmd, FrameSettings& frame, bool& bsdfOnly) {
     cmd.add_option("--time-limit", frame.timeLimitSeconds,
                    "Stop after this many seconds (0: no limit); the image is marked partial");
     cmd.add_option("--camera", frame.cameraIndex,
-                   "Index of the scene camera to render from [default: first, or a framing of the scene]");
+                   "Index of the scene camera to render from [default: first, or a framing of the scene]")
+        ->check(CLI::NonNegativeNumber);
     cmd.add_flag("--no-nee", bsdfOnly, "Disable next-event estimation (BSDF sampling only; a reference)");
     const std::vector<std::pair<std::string, DirectLight>> direct{{"traced", DirectLight::Traced},
                                                                   {"raster", DirectLight::Raster}};
@@ -96,9 +99,28 @@ void addViewOptions(CLI::App& cmd, ViewOverride& view) {
         ->type_name("DEG");
 }
 
-void addDeviceOptions(CLI::App& cmd, std::string& device, bool& validate) {
+void addDeviceOptions(CLI::App& cmd, std::string& device, bool& validate, double& maxMemoryGiB) {
     cmd.add_option("--device", device, "Vulkan device: index or name substring (see `vkphoton devices`)");
     cmd.add_flag("--validate", validate, "Enable the Khronos validation layer; any message is an error");
+    cmd.add_option("--max-memory", maxMemoryGiB,
+                   "Memory the scene may take, in GiB, estimated from its triangle count before loading "
+                   "(0: the memory available)")
+        ->capture_default_str();
+}
+
+// An option given an empty value (`--q ''`) is a mistake: CLI11 would leave the default.
+void refuseEmptyValues(CLI::App& app) {
+    for (const CLI::Option* option : app.get_options())
+        for (const std::string& value : option->results())
+            if (value.empty() && option->get_expected_min() > 0)
+                throw InputError(fmt::format("{} '': the value is empty", option->get_name()));
+    for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) refuseEmptyValues(*sub);
+}
+
+// A path option that was given must not be empty: `-o ''` is a mistake, not "the default".
+void requireNonEmpty(const CLI::App& cmd, const char* name, const std::filesystem::path& value) {
+    if (cmd.get_option(name)->count() > 0 && value.empty())
+        throw InputError(fmt::format("{} '': the path is empty", name));
 }
 
 }  // namespace
@@ -118,7 +140,7 @@ int runCommandLine(int argc, const char* const* argv) {
                           "Output EXR path; a PNG is written beside it [default: out/SCENE.exr]");
     addFrameOptions(*renderCmd, render.frame, bsdfOnly);
     addViewOptions(*renderCmd, render.frame.view);
-    addDeviceOptions(*renderCmd, render.device, render.validate);
+    addDeviceOptions(*renderCmd, render.device, render.validate, render.maxMemoryGiB);
     renderCmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
     renderCmd->add_flag("--quiet", render.quiet, "No progress output");
     const auto views = viewTransformChoices();
@@ -157,9 +179,9 @@ int runCommandLine(int argc, const char* const* argv) {
     photonsCmd->add_option("--width", photons.width, "Width of the image the importons' camera looks at")
         ->capture_default_str();
     photonsCmd->add_option("--height", photons.height, "Height of that image")->capture_default_str();
-    photonsCmd->add_option("--camera", photons.cameraIndex, "Scene camera index for the importons");
+    photonsCmd->add_option("--camera", photons.cameraIndex, "Scene camera index for the importons")->check(CLI::NonNegativeNumber);
     addViewOptions(*photonsCmd, photons.view);
-    addDeviceOptions(*photonsCmd, photons.device, photons.validate);
+    addDeviceOptions(*photonsCmd, photons.device, photons.validate, photons.maxMemoryGiB);
     photonsCmd->add_flag("--quiet", photons.quiet, "No summary output");
 
     GuideGridCommandOptions guideGrid;
@@ -171,11 +193,11 @@ int runCommandLine(int argc, const char* const* argv) {
     guideCmd->add_option("-o,--output", guideGrid.output, "Output .png [default: out/SCENE-guide-X-Y.png]");
     guideCmd->add_option("--width", guideGrid.width, "Image width the pixel belongs to")->capture_default_str();
     guideCmd->add_option("--height", guideGrid.height, "Image height the pixel belongs to")->capture_default_str();
-    guideCmd->add_option("--camera", guideGrid.cameraIndex, "Scene camera index");
+    guideCmd->add_option("--camera", guideGrid.cameraIndex, "Scene camera index")->check(CLI::NonNegativeNumber);
     addViewOptions(*guideCmd, guideGrid.view);
     guideCmd->add_option("--seed", guideGrid.seed, "Random seed")->capture_default_str();
     guideGrid.guide.addOptions(*guideCmd, false);
-    addDeviceOptions(*guideCmd, guideGrid.device, guideGrid.validate);
+    addDeviceOptions(*guideCmd, guideGrid.device, guideGrid.validate, guideGrid.maxMemoryGiB);
     guideCmd->add_flag("--quiet", guideGrid.quiet, "No output but the file");
 
     InfoCommandOptions info;
@@ -188,13 +210,25 @@ int runCommandLine(int argc, const char* const* argv) {
 
     try {
         app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e) == 0 ? kExitOk : kExitBadInput;
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e) == 0 ? kExitOk : kExitBadInput;
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e) == 0 ? kExitOk : kExitBadInput;
     } catch (const CLI::ParseError& e) {
-        const int code = app.exit(e);
-        return code == 0 ? kExitOk : kExitBadInput;
+        // CLI11 quotes the arguments: escape them (a value may hold terminal escapes).
+        if (e.get_exit_code() == 0) return kExitOk;
+        fmt::print(stderr, "error: {}\nRun with --help for more information.\n", printable(e.what()));
+        return kExitBadInput;
     }
 
     try {
+        refuseEmptyValues(app);
         if (renderCmd->parsed()) {
+            requireNonEmpty(*renderCmd, "--output", render.output);
+            requireNonEmpty(*renderCmd, "--stats-json", render.statsJson);
+            checkRange("--max-memory", render.maxMemoryGiB, 0.0, 1.0e6);
             render.frame.nextEventEstimation = !bsdfOnly;
             render.frame.check();
             render.display.check();
@@ -203,10 +237,12 @@ int runCommandLine(int argc, const char* const* argv) {
             return runRender(render, config);
         }
         if (photonsCmd->parsed()) {
+            requireNonEmpty(*photonsCmd, "--output", photons.output);
             photons.check();
             return runPhotons(photons);
         }
         if (guideCmd->parsed()) {
+            requireNonEmpty(*guideCmd, "--output", guideGrid.output);
             guideGrid.x = pixel.at(0);
             guideGrid.y = pixel.at(1);
             guideGrid.check();
@@ -215,10 +251,10 @@ int runCommandLine(int argc, const char* const* argv) {
         if (infoCmd->parsed()) return runInfo(info);
         return runDevices();
     } catch (const InputError& e) {
-        fmt::print(stderr, "error: {}\n", e.what());
+        fmt::print(stderr, "error: {}\n", printable(e.what()));
         return kExitBadInput;
     } catch (const std::exception& e) {
-        fmt::print(stderr, "error: {}\n", e.what());
+        fmt::print(stderr, "error: {}\n", printable(e.what()));
         return kExitRuntimeFailure;
     }
 }

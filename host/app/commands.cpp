@@ -2,6 +2,8 @@
 
 #include <array>
 #include <chrono>
+#include <fstream>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -18,21 +20,54 @@
 #include "render/photon_export.h"
 #include "render/photon_map.h"
 #include "render/renderer.h"
+#include "gpu_scene/scene_buffers.h"
 #include "scene/gltf_loader.h"
 #include "util/check_range.h"
 #include "util/errors.h"
+#include "util/printable.h"
 #include "vk/context.h"
 
 namespace vkp {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 std::filesystem::path defaultOutput(const std::filesystem::path& scene) {
     return std::filesystem::path("out") / (scene.stem().string() + ".exr");
 }
 
+// MemAvailable of /proc/meminfo in bytes (0 when it cannot be read).
+uint64_t memoryAvailable() {
+    std::ifstream in("/proc/meminfo");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("MemAvailable:", 0) == 0) {
+            std::istringstream fields(line.substr(13));
+            uint64_t kib = 0;
+            fields >> kib;
+            return kib * 1024;
+        }
+    return 0;
+}
+
+Scene loadScene(const std::filesystem::path& path, const vk::Context& context, double maxMemoryGiB) {
+    Scene scene = loadGltf(path, deviceSceneLimits(context, maxMemoryGiB));
+    if (scene.droppedDegenerateTriangles > 0)
+        fmt::print(stderr, "warning: {}: dropped {} degenerate triangle(s)\n", printable(path.string()),
+                   scene.droppedDegenerateTriangles);
+    if (scene.droppedDuplicateTriangles > 0)
+        fmt::print(stderr, "warning: {}: dropped {} triangle(s) identical to an earlier one\n", printable(path.string()),
+                   scene.droppedDuplicateTriangles);
+    return scene;
+}
+
 }  // namespace
+
+GltfLimits deviceSceneLimits(const vk::Context& context, double maxMemoryGiB) {
+    GltfLimits limits;
+    limits.deviceMaxTriangles = deviceTriangleLimit(context.properties().limits.maxStorageBufferRange);
+    if (maxMemoryGiB > 0.0) limits.maxMemoryBytes = static_cast<uint64_t>(maxMemoryGiB * double(1ull << 30));
+    else if (const uint64_t available = memoryAvailable(); available > 0) limits.maxMemoryBytes = available;
+    return limits;
+}
 
 void PhotonsCommandOptions::check() const {
     checkRange("--photons", photons, 1u, 1u << 26);
@@ -40,6 +75,7 @@ void PhotonsCommandOptions::check() const {
     checkRange("--width", width, 1u, 16384u);
     checkRange("--height", height, 1u, 16384u);
     view.check();
+    checkRange("--max-memory", maxMemoryGiB, 0.0, 1.0e6);
     deposit.check();
 }
 
@@ -47,6 +83,9 @@ void GuideGridCommandOptions::check() const {
     checkRange("--width", width, 1u, 16384u);
     checkRange("--height", height, 1u, 16384u);
     view.check();
+    checkRange("--max-memory", maxMemoryGiB, 0.0, 1.0e6);
+    if (x >= width || y >= height)
+        throw InputError(fmt::format("--pixel {} {}: outside the {}x{} image", x, y, width, height));
     guide.check();
 }
 
@@ -57,33 +96,38 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
         throw InputError(fmt::format("-o {}: the output must end in .exr (a .png is written beside it)", exrPath.string()));
     std::filesystem::path pngPath = exrPath;
     pngPath.replace_extension(".png");
+    // Every output is checked before any work: a bad path must not cost a render.
+    checkWritable(exrPath);
+    checkWritable(pngPath);
+    if (!options.statsJson.empty()) checkWritable(options.statsJson);
+    // Signals from here on stop the work and write what there is (app/interrupt.h).
+    installInterruptHandler();
 
-    const Scene scene = loadGltf(options.scene);
-    const double loadSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-    if (scene.droppedDegenerateTriangles > 0)
-        fmt::print(stderr, "warning: {}: dropped {} degenerate triangle(s)\n", options.scene.string(),
-                   scene.droppedDegenerateTriangles);
+    // The device first: its limits bound the scene before it is decoded.
+    vk::Context context({options.validate, options.device});
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB);
+    const double loadSeconds = secondsSince(start);
     // Validate the camera choice before the expensive set-up.
     chooseCamera(scene, options.frame.cameraIndex, float(options.frame.width) / float(options.frame.height),
                  options.frame.view);
 
-    vk::Context context({options.validate, options.device});
     if (!options.quiet)
-        fmt::print(stderr, "vkphoton: {} ({} triangles) on {}{}\n", options.scene.string(),
+        fmt::print(stderr, "vkphoton: {} ({} triangles) on {}{}\n", printable(options.scene.string()),
                    scene.triangles.size(), context.deviceName(), context.validationEnabled() ? " with validation" : "");
-    installInterruptHandler();
     Renderer renderer(context, scene);
+    FrameSettings frameSettings = options.frame;
+    frameSettings.timeLimitFrom = start;  // --time-limit counts from the start of the command
     const std::unique_ptr<Integrator> integrator = config.create(renderer.gpuScene());
     if (const std::string message = config.startMessage(options.frame); !options.quiet && !message.empty())
         fmt::print(stderr, "{}\n", message);
     ProgressReporter progress("render", options.quiet);
     RenderResult result = renderer.render(
-        options.frame, *integrator,
+        frameSettings, *integrator,
         [&](const RenderProgress& p) { progress.update(p.samplesDone, p.samplesTotal, p.elapsedSeconds); },
         &interruptRequested());
     progress.finish();
     Stats& stats = result.stats;
-    const double totalSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const double totalSeconds = secondsSince(start);
     stats.set("scene", options.scene.string());
     stats.set("timings.loadSeconds", loadSeconds);
     stats.set("timings.totalSeconds", totalSeconds);
@@ -109,8 +153,9 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
         {"vkphoton/exposure", fmt::format("{}", options.display.exposureEv)},
         {"vkphoton/tonemap", viewTransformName(options.display.view)},
     };
-    writeExr(exrPath, result.image, attributes);
-    writePng(pngPath, result.image, options.display);
+    // Both or neither: a signal or a failure never leaves a new EXR beside an old PNG.
+    writeFilesTogether({{exrPath, exrBytes(exrPath, result.image, attributes)},
+                        {pngPath, pngBytes(pngPath, result.image, options.display)}});
     if (!options.statsJson.empty()) {
         nlohmann::json json = stats.toJson();
         json["meanRadiance"] = meanRadiance(result.image);
@@ -119,12 +164,12 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     for (const std::string& warning : stats.warnings()) fmt::print(stderr, "warning: {}\n", warning);
     if (!options.quiet) {
         for (const std::string& note : stats.notes()) fmt::print(stderr, "{}\n", note);
-        fmt::print(stderr, "wrote {} and {} ({} spp{}, {:.2f} s rendering, {:.2f} Mpaths/s)\n", exrPath.string(),
-                   pngPath.string(), spp, partial ? ", partial: " + stopReason : "", renderSeconds,
+        fmt::print(stderr, "wrote {} and {} ({} spp{}, {:.2f} s rendering, {:.2f} Mpaths/s)\n", printable(exrPath.string()),
+                   printable(pngPath.string()), spp, partial ? ", partial: " + stopReason : "", renderSeconds,
                    stats.get<double>("counters.pathsPerSecond") / 1e6);
     }
     if (context.validationEnabled()) context.throwOnValidationMessages();
-    return interruptRequested().load() ? 130 : kExitOk;
+    return interruptRequested().load() ? interruptExitCode() : kExitOk;
 }
 
 int runPhotons(const PhotonsCommandOptions& options) {
@@ -133,7 +178,10 @@ int runPhotons(const PhotonsCommandOptions& options) {
         : options.output;
     if (output.extension() != ".ply")
         throw InputError(fmt::format("-o {}: the photon map is written as .ply", output.string()));
-    const Scene scene = loadGltf(options.scene);
+    checkWritable(output);
+    installInterruptHandler();
+    vk::Context context({options.validate, options.device});
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB);
     FrameSettings frameSettings;  // what the importons see: camera, image, seed
     frameSettings.width = options.width;
     frameSettings.height = options.height;
@@ -141,13 +189,15 @@ int runPhotons(const PhotonsCommandOptions& options) {
     frameSettings.view = options.view;
     frameSettings.seed = options.seed;
     const Frame frame = makeFrame(scene, frameSettings);
-    vk::Context context({options.validate, options.device});
     const GpuScene gpuScene(context, scene);
     const std::unique_ptr<ImportonMap> importons = makeImportonMap(gpuScene, frame, options.deposit);
     PhotonMapSettings settings;  // every stored photon, in chunks: maps of millions fit
     settings.paths = options.photons;
     settings.maxDeposits = options.maxDeposits;
     settings.seed = options.seed;
+    RenderControl control;  // Ctrl-C keeps the chunks traced so far
+    control.stop = &interruptRequested();
+    settings.control = &control;
     settings.deposit = depositSettings(options.deposit, options.deposit.mode, importons.get());
     if (options.deposit.mode == DepositMode::Density)
         settings.cellSize = densityCellSize(options.deposit, PhotonIntegratorSettings().gatherK, *importons);
@@ -164,14 +214,14 @@ int runPhotons(const PhotonsCommandOptions& options) {
                    "traced {} photon paths in {:.2f} s on {}: stored {} caustic, {} global, {} primary; "
                    "absorbed {}, lost {}, truncated {}; wrote {}\n",
                    c.emitted, seconds, context.deviceName(), c.storedCaustic, c.storedGlobal, c.storedPrimary,
-                   c.absorbed, c.lost, c.truncated, output.string());
+                   c.absorbed, c.lost, c.truncated, printable(output.string()));
     if (!options.quiet && importons)
         fmt::print(stderr, "deposit {}: kept {} of {} photons ({:.1f} %, {:.1f} MB); {} importons, f = {:.4g}\n",
                    depositModeName(options.deposit.mode), stats.stored, stats.candidates,
                    stats.candidates ? 100.0 * stats.stored / stats.candidates : 0.0, map.bytes() / 1048576.0,
                    importons->stats().stored, importons->stats().importanceScale);
     if (context.validationEnabled()) context.throwOnValidationMessages();
-    return kExitOk;
+    return interruptRequested().load() ? interruptExitCode() : kExitOk;
 }
 
 int runGuideGrid(const GuideGridCommandOptions& options) {
@@ -180,14 +230,18 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
         : options.output;
     if (output.extension() != ".png")
         throw InputError(fmt::format("-o {}: the guiding grid is written as .png", output.string()));
-    const Scene scene = loadGltf(options.scene);
+    checkWritable(output);
+    installInterruptHandler();
+    vk::Context context({options.validate, options.device});
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB);
     const Camera camera =
         chooseCamera(scene, options.cameraIndex, float(options.width) / float(options.height), options.view);
-    vk::Context context({options.validate, options.device});
     const GpuScene gpuScene(context, scene);
     GuideSettings settings = options.guide;
     settings.cache = false;  // the per-vertex grid: the one the paper builds
-    const PathGuide guide(gpuScene, settings, options.seed);
+    RenderControl control;  // Ctrl-C: the grid of the photons traced so far
+    control.stop = &interruptRequested();
+    const PathGuide guide(gpuScene, settings, options.seed, &control);
     const GuideGridAtPixel grid = guideGridAtPixel(scene, gpuScene.arrays(), guide, settings, camera, options.width,
                                                    options.height, options.x, options.y);
     writePng(output, guideGridImage(grid), DisplaySettings{ViewTransform::Clamp});  // densities scaled to [0, 1]
@@ -205,10 +259,10 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
             }
             fmt::print("band {} (probability {:.3f}):{}\n", i, band, row);
         }
-        fmt::print("wrote {}\n", output.string());
+        fmt::print("wrote {}\n", printable(output.string()));
     }
     if (context.validationEnabled()) context.throwOnValidationMessages();
-    return kExitOk;
+    return interruptRequested().load() ? interruptExitCode() : kExitOk;
 }
 
 int runDevices() {

@@ -18,6 +18,7 @@ struct RenderCommandOptions {
     std::filesystem::path statsJson;    // empty: none
     FrameSettings frame;
     DisplaySettings display;            // the PNG's exposure and view transform
+    double maxMemoryGiB = 0.0;          // --max-memory: 0 = the memory available
     std::string device;
     bool validate = false;
     bool quiet = false;
@@ -38,6 +39,7 @@ struct PhotonsCommandOptions {
     uint32_t width = 512, height = 512; // the image the importons' camera looks at
     int cameraIndex = -1;
     ViewOverride view;
+    double maxMemoryGiB = 0.0;
     std::string device;
     bool validate = false;
     bool quiet = false;
@@ -54,12 +56,19 @@ struct GuideGridCommandOptions {
     ViewOverride view;
     uint32_t seed = 0;
     GuideSettings guide;
+    double maxMemoryGiB = 0.0;
     std::string device;
     bool validate = false;
     bool quiet = false;
 
     void check() const;
 };
+
+// Limits of the loader for a scene rendered on `context`'s device: its triangle capacity and the
+// memory allowed (`maxMemoryGiB`, 0: what /proc/meminfo says is available).
+struct GltfLimits;
+namespace vk { class Context; }
+GltfLimits deviceSceneLimits(const vk::Context& context, double maxMemoryGiB);
 
 // Renders with the integrator `config` builds (its settings checked already).
 int runRender(const RenderCommandOptions& options, const IntegratorConfig& config);

@@ -3,6 +3,7 @@
 // (0..7) of every kernel that reads the scene (shaders/scene_access.glsl declares them).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -32,6 +33,12 @@ struct SceneArrays {
 // point/spot: 4 pi * luminance(I); directional: luminance(E) * pi * r^2 of the scene's bounding
 // sphere).
 SceneArrays buildSceneArrays(const Scene& scene);
+
+// The most triangles a device can hold: its largest per-triangle buffer (the shading
+// attributes) within maxStorageBufferRange; the BVH needs fewer bytes per triangle.
+inline uint64_t deviceTriangleLimit(uint64_t maxStorageBufferRange) {
+    return maxStorageBufferRange / std::max(sizeof(gpu::GpuTriangle), sizeof(gpu::GpuTriangleShading));
+}
 
 gpu::GpuCamera makeGpuCamera(const Camera& camera, uint32_t width, uint32_t height);
 

@@ -1,15 +1,20 @@
 #include "image/atomic_file.h"
 
 #include <atomic>
+#include <memory>
 #include <cerrno>
 #include <stdexcept>
 #include <system_error>
+
+#include <csignal>
+#include <climits>
 
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include "util/errors.h"
+#include "util/temp_files.h"
 
 namespace vkp {
 namespace {
@@ -93,15 +98,35 @@ void syncToDisk(const fs::path& file) {
         throw std::runtime_error(fmt::format("cannot sync to disk: {}", errnoText(error)));
 }
 
+// SIGINT, SIGTERM and SIGHUP wait while renames run (app/interrupt.h), so that a set of files is
+// replaced together or not at all, whatever the moment of the signal.
+class SignalsHeld {
+public:
+    SignalsHeld() {
+        sigset_t set;
+        sigemptyset(&set);
+        for (const int s : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&set, s);
+        pthread_sigmask(SIG_BLOCK, &set, &m_previous);
+    }
+    ~SignalsHeld() { pthread_sigmask(SIG_SETMASK, &m_previous, nullptr); }
+
+private:
+    sigset_t m_previous;
+};
+
 void commit(const fs::path& path, const std::function<void(const fs::path&)>& write) {
     const fs::path dir = prepareFolder(path);
     const fs::path temp = temporaryPath(dir, path);
+    const TempFileGuard guard(temp);  // a second signal removes it
     std::string reason;
     try {
         write(temp);
         syncToDisk(temp);
         std::error_code ec;
-        fs::rename(temp, path, ec);
+        {
+            const SignalsHeld held;
+            fs::rename(temp, path, ec);
+        }
         if (!ec) return;
         reason = ec.message();
     } catch (const std::exception& e) {
@@ -115,6 +140,81 @@ void commit(const fs::path& path, const std::function<void(const fs::path&)>& wr
 }
 
 }  // namespace
+
+void checkWritable(const std::filesystem::path& path) {
+    if (path.filename().string().size() > NAME_MAX)
+        fail(path, fmt::format("the file name is {} bytes long, more than the {} a name may have",
+                               path.filename().string().size(), NAME_MAX));
+    const fs::path dir = prepareFolder(path);
+    const fs::path probe = temporaryPath(dir, path);
+    const TempFileGuard guard(probe);
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) fail(path, fmt::format("cannot create a file in {}: {}", dir.string(), errnoText(errno)));
+    ::close(fd);
+    ::unlink(probe.c_str());
+}
+
+void writeFilesTogether(const std::vector<std::pair<std::filesystem::path, std::string>>& files) {
+    struct Pending {
+        fs::path path, temp, backup;
+        std::unique_ptr<TempFileGuard> guard;
+        bool replaced = false;
+    };
+    std::vector<Pending> pending;
+    const auto cleanUp = [&] {
+        for (Pending& p : pending) {
+            std::error_code ignored;
+            fs::remove(p.temp, ignored);
+            if (!p.backup.empty()) fs::remove(p.backup, ignored);
+        }
+    };
+    std::string reason;
+    fs::path failed;
+    try {
+        for (const auto& [path, bytes] : files) {
+            failed = path;
+            Pending p;
+            p.path = path;
+            p.temp = temporaryPath(prepareFolder(path), path);
+            p.guard = std::make_unique<TempFileGuard>(p.temp);
+            pending.push_back(std::move(p));
+            writeWholeFile(pending.back().temp, bytes);
+            syncToDisk(pending.back().temp);
+        }
+    } catch (const std::exception& e) {
+        reason = e.what();
+    }
+    if (reason.empty()) {
+        const SignalsHeld held;
+        // Keep the previous files (hard links) until every new one is in place, to put them back
+        // should a rename fail half-way.
+        for (Pending& p : pending) {
+            p.backup = p.temp;
+            p.backup += ".previous";
+            if (::link(p.path.c_str(), p.backup.c_str()) != 0) p.backup.clear();
+        }
+        for (Pending& p : pending) {
+            std::error_code ec;
+            fs::rename(p.temp, p.path, ec);
+            if (ec) {
+                reason = ec.message();
+                failed = p.path;
+                break;
+            }
+            p.replaced = true;
+        }
+        if (!reason.empty())
+            for (Pending& p : pending) {
+                if (!p.replaced) continue;
+                std::error_code ignored;
+                if (!p.backup.empty()) fs::rename(p.backup, p.path, ignored);
+                else fs::remove(p.path, ignored);
+                p.backup.clear();
+            }
+    }
+    cleanUp();
+    if (!reason.empty()) fail(failed, reason);
+}
 
 void writeBytesAtomically(const std::filesystem::path& path, std::string_view bytes) {
     commit(path, [&](const fs::path& temp) { writeWholeFile(temp, bytes); });

@@ -73,6 +73,10 @@ std::string encodeExr(const std::filesystem::path& path, const ImageRgb& image, 
 }  // namespace
 
 void writeExr(const std::filesystem::path& path, const ImageRgb& image, const ExrAttributes& attributes) {
+    writeBytesAtomically(path, exrBytes(path, image, attributes));
+}
+
+std::string exrBytes(const std::filesystem::path& path, const ImageRgb& image, const ExrAttributes& attributes) {
     if (!isWellFormed(image))
         throw RuntimeError(fmt::format("cannot write {}: the image is empty or has {} values for {}x{} pixels",
                                        path.string(), image.pixels.size(), image.width, image.height));
@@ -85,7 +89,7 @@ void writeExr(const std::filesystem::path& path, const ImageRgb& image, const Ex
     } catch (const std::exception& e) {
         throw RuntimeError(fmt::format("cannot write {}: {}", path.string(), e.what()));
     }
-    writeBytesAtomically(path, bytes);
+    return bytes;
 }
 
 ImageRgb readExr(const std::filesystem::path& path, ExrAttributes* attributes) {

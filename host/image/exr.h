@@ -16,6 +16,8 @@ using ExrAttributes = std::vector<std::pair<std::string, std::string>>;
 // attribute (a later duplicate name wins). Writes atomically (see atomic_file.h); throws
 // RuntimeError naming the path on failure, including an image that is not well-formed or an
 // attribute name that OpenEXR rejects (empty, too long, or a standard non-string attribute).
+// The bytes writeExr would write (RuntimeError naming `path` when the image cannot be encoded).
+std::string exrBytes(const std::filesystem::path& path, const ImageRgb& image, const ExrAttributes& attributes = {});
 void writeExr(const std::filesystem::path& path, const ImageRgb& image, const ExrAttributes& attributes = {});
 
 // Reads the R, G, B channels (half, float or uint, converted to float; alpha and other channels

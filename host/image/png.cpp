@@ -30,6 +30,10 @@ void appendBytes(void* context, void* data, int size) {
 }  // namespace
 
 void writePng(const std::filesystem::path& path, const ImageRgb& image, const DisplaySettings& display) {
+    writeBytesAtomically(path, pngBytes(path, image, display));
+}
+
+std::string pngBytes(const std::filesystem::path& path, const ImageRgb& image, const DisplaySettings& display) {
     display.check();
     if (!isWellFormed(image))
         throw RuntimeError(fmt::format("cannot write {}: the image is empty or has {} values for {}x{} pixels",
@@ -56,7 +60,7 @@ void writePng(const std::filesystem::path& path, const ImageRgb& image, const Di
     if (!stbi_write_png_to_func(appendBytes, &encoded, static_cast<int>(image.width), static_cast<int>(image.height),
                                 3, bytes.data(), static_cast<int>(image.width * 3)))
         throw RuntimeError(fmt::format("cannot write {}: the PNG encoder failed", path.string()));
-    writeBytesAtomically(path, encoded);
+    return encoded;
 }
 
 }  // namespace vkp

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "image/image.h"
 #include "image/view_transform.h"
@@ -12,5 +13,7 @@ namespace vkp {
 // atomic_file.h). Throws InputError when the display settings fail their check, RuntimeError
 // naming the path on any other failure (including an image that is not well-formed).
 void writePng(const std::filesystem::path& path, const ImageRgb& image, const DisplaySettings& display = {});
+// The bytes writePng would write (`path` only names it in messages).
+std::string pngBytes(const std::filesystem::path& path, const ImageRgb& image, const DisplaySettings& display = {});
 
 }  // namespace vkp

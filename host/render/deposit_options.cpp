@@ -16,7 +16,8 @@ const char* depositModeName(DepositMode mode) {
 }
 
 void DepositOptions::check() const {
-    checkRange("--importons", importonPaths, 1u, 1u << 24);
+    // One dispatch (the importon pass is not chunked): 4 M paths take seconds on lavapipe.
+    checkRange("--importons", importonPaths, 1u, 1u << 22);
     checkRange("--deposit-epsilon", epsilon, 1.0e-6f, 1.0f);
     checkPositive("--density-accuracy", densityAccuracy);
     checkRange("--density-rounds", densityRounds, 1u, 256u);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "render/render_control.h"
 #include "scene/scene.h"
 #include "shared/gpu_types.glsl"
 
@@ -46,6 +47,9 @@ struct FrameSettings {
     uint32_t areaLightSamples = 16;   // --area-light-samples: point samples per emissive triangle
                                       // for --direct raster (0: emissive triangles stay traced)
     bool pixelCentres = false;        // camera rays through pixel centres, no jitter (tests)
+    // When --time-limit starts counting: the command's start (so loading and the photon passes
+    // count); unset, the call to Renderer::render.
+    std::optional<Clock::time_point> timeLimitFrom;
 
     // Throws InputError naming the flag of a value out of range.
     void check() const;
@@ -81,6 +85,7 @@ struct Frame {
     const vk::Buffer* rasterDirect = nullptr;
     uint32_t rasterFlags = 0;
     bool pixelCentres = false;
+    RenderControl control;  // the stop flag and the deadline: long phases check it between chunks
 
     uint64_t pixels() const { return uint64_t(width) * height; }
     // The kPathFlag* bits every camera-path shader takes: raster coverage and pixel centres.

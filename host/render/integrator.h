@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include <vulkan/vulkan.h>
@@ -43,6 +44,9 @@ public:
         (void)image;
         (void)samplesDone;
     }
+    // Why prepare() (or a later photon pass) stopped before finishing ("interrupted", "time
+    // limit"), when it did: the frame's control was set and the phase kept what it had.
+    virtual std::optional<std::string> stoppedEarly() const { return std::nullopt; }
     // Statistics under the keys of docs/usage (e.g. "photons.globalStored", "settings.photon.radius").
     virtual void report(Stats& stats) const = 0;
 };

@@ -1,6 +1,8 @@
 #include "render/path_guide.h"
 
 #include <algorithm>
+#include <charconv>
+#include <string_view>
 
 #include <cstdio>
 
@@ -42,12 +44,18 @@ void GuideSettings::addOptions(CLI::App& group, bool sampling) {
     group.add_option_function<std::string>(
              "--guide-grid",
              [this](const std::string& value) {
-                 unsigned m = 0, n = 0;
-                 char x = 0, extra = 0;
-                 if (std::sscanf(value.c_str(), "%u%c%u%c", &m, &x, &n, &extra) != 3 || x != 'x')
-                     throw CLI::ValidationError("--guide-grid", "expected MxN, e.g. 4x16");
-                 gridU = m;
-                 gridV = n;
+                 // Digits only, each factor read whole: sscanf's %u wraps 4294967297 to 1.
+                 const auto factor = [&](std::string_view digits) {
+                     uint64_t v = 0;
+                     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+                     if (digits.empty() || ec != std::errc() || end != digits.data() + digits.size() || v > 0xffffffffu)
+                         throw CLI::ValidationError("--guide-grid", "expected MxN with M, N from 1 to 64, e.g. 4x16");
+                     return static_cast<uint32_t>(v);
+                 };
+                 const size_t x = value.find('x');
+                 if (x == std::string::npos) throw CLI::ValidationError("--guide-grid", "expected MxN, e.g. 4x16");
+                 gridU = factor(std::string_view(value).substr(0, x));
+                 gridV = factor(std::string_view(value).substr(x + 1));
              },
              "Guiding grid MxN over the unit square (theta bands x phi sectors, M*N <= 64)")
         ->default_str(fmt::format("{}x{}", gridU, gridV));
@@ -82,7 +90,7 @@ void GuideSettings::report(Stats& stats) const {
     stats.set("settings.guide.adapt", adaptPhotons);
 }
 
-PathGuide::PathGuide(const GpuScene& scene, const GuideSettings& g, uint32_t seed) {
+PathGuide::PathGuide(const GpuScene& scene, const GuideSettings& g, uint32_t seed, const RenderControl* control) {
     g.check();
     vk::Context& context = scene.context();
     const SceneArrays& arrays = scene.arrays();
@@ -91,6 +99,7 @@ PathGuide::PathGuide(const GpuScene& scene, const GuideSettings& g, uint32_t see
     mapSettings.paths = g.photons;
     mapSettings.seed = seed;
     mapSettings.rejectedFlags = gpu::kPhotonPrimary;
+    mapSettings.control = control;
     const double area = sceneSurfaceArea(arrays);
     mapSettings.cellSizeFor = [&](uint64_t stored) { return evenSpreadRadius(g.k, stored, area); };
     m_map = std::make_unique<PhotonMap>(context, scene.scene(), arrays, scene.buffers(), mapSettings);

@@ -40,7 +40,9 @@ struct GuideSettings {
 class PathGuide {
 public:
     // Traces the guiding map (and builds the cache) for runs of `seed`.
-    PathGuide(const GpuScene& scene, const GuideSettings& settings, uint32_t seed);
+    // `control` (may be null) stops the guiding map's tracing between chunks (render_control.h).
+    PathGuide(const GpuScene& scene, const GuideSettings& settings, uint32_t seed, const RenderControl* control = nullptr);
+    const std::string& stopReason() const { return m_mapStats.stopReason; }
 
     const std::string& shader() const { return m_shader; }
     std::vector<const vk::Buffer*> buffers() const;

@@ -14,6 +14,12 @@ namespace vkp {
 namespace {
 
 constexpr uint64_t kChunkSlots = 1u << 21;  // 64 MiB of photon slots per traced chunk
+// Paths per chunk (outside density control, whose rounds are its chunks): about 2 s on
+// lavapipe, so Ctrl-C and --time-limit are honoured that promptly. Chunking does not change the
+// map (a path's photons depend on its Halton index only).
+constexpr uint64_t kMaxChunkPaths = 1u << 16;
+// A build stopped before it began still traces this many paths, so the map is not empty.
+constexpr uint32_t kStoppedChunkPaths = 4096;
 // Density control's current-density estimates search one cell (one ring of cells).
 constexpr float kDensityRadiusCells = 1.0f;
 
@@ -42,7 +48,8 @@ float evenSpreadRadius(uint32_t k, uint64_t photons, double area) {
 
 PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers,
                      const PhotonMapSettings& settings)
-    : m_context(context), m_buffers(buffers), m_settings(settings), m_tracer(context, scene, arrays, buffers) {
+    : m_totalPower(arrays.totalLightPower), m_context(context), m_buffers(buffers), m_settings(settings),
+      m_tracer(context, scene, arrays, buffers) {
     if (settings.paths == 0 || settings.maxDeposits == 0)
         throw InputError("a photon map needs at least one path and one deposit per path");
     const DepositSettings& deposit = settings.deposit;
@@ -55,9 +62,17 @@ PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays
         if (deposit.mode == gpu::kDepositDensity && !(deposit.densityAccuracy > 0.0f))
             throw InputError(fmt::format("--density-accuracy {}: must be positive", deposit.densityAccuracy));
     }
-    const uint64_t maxPhotons = context.properties().limits.maxStorageBufferRange / sizeof(gpu::GpuPhoton);
-    uint64_t chunk = settings.chunkPaths ? settings.chunkPaths : std::max<uint64_t>(1, kChunkSlots / settings.maxDeposits);
+    // The map's buffer within the storage-buffer range, and its grid passes (one invocation per
+    // photon, 64 per workgroup) within one dispatch: 4 M photons on lavapipe either way, where a
+    // capacity of 2^22 once asked for 65536 workgroups (the limit is 65535).
+    const VkPhysicalDeviceLimits& limits = context.properties().limits;
+    const uint64_t maxPhotons = std::min<uint64_t>(limits.maxStorageBufferRange / sizeof(gpu::GpuPhoton),
+                                                   uint64_t(limits.maxComputeWorkGroupCount[0]) * 64);
+    uint64_t chunk = settings.chunkPaths ? settings.chunkPaths
+                                         : std::clamp<uint64_t>(kChunkSlots / settings.maxDeposits, 1, kMaxChunkPaths);
     // Density control decides each round against the photons stored by the rounds before.
+    if (deposit.mode == gpu::kDepositDensity && !settings.chunkPaths)
+        chunk = std::max<uint64_t>(1, kChunkSlots / settings.maxDeposits);
     if (deposit.mode == gpu::kDepositDensity) chunk = std::min<uint64_t>(chunk, (settings.paths + deposit.rounds - 1) / deposit.rounds);
     m_chunkPaths = static_cast<uint32_t>(std::min<uint64_t>({chunk, settings.paths, maxPhotons / settings.maxDeposits}));
     if (m_chunkPaths == 0)
@@ -72,6 +87,8 @@ PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays
     grid.requiredFlags = settings.requiredFlags;
     grid.rejectedFlags = settings.rejectedFlags;
     m_grid = std::make_unique<PhotonGrid>(context, m_map, m_capacity, grid);
+    // A shorter (stopped) chunk must not reallocate the slots the passes below are bound to.
+    m_tracer.reserve(m_chunkPaths, settings.maxDeposits);
 }
 
 PhotonMap::~PhotonMap() = default;
@@ -111,9 +128,16 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
     const bool densityControl = m_settings.deposit.mode == gpu::kDepositDensity;
     const bool redistribute = densityControl && m_settings.deposit.redistribute;
     uint32_t storedSoFar = 0;  // photons in the grid the next round reads
-    for (uint32_t done = 0; done < m_settings.paths; done += m_chunkPaths) {
+    uint32_t done = 0;
+    for (; done < m_settings.paths; done += m_chunkPaths) {
         PhotonSettings chunk;
         chunk.paths = std::min(m_chunkPaths, m_settings.paths - done);
+        if (m_settings.control)
+            if (std::string reason = m_settings.control->stopReason(); !reason.empty()) {
+                stats.stopReason = std::move(reason);
+                if (done > 0) break;
+                chunk.paths = std::min(chunk.paths, kStoppedChunkPaths);  // one small chunk: a map, not nothing
+            }
         chunk.firstPath = firstPath + done;
         chunk.maxDeposits = m_settings.maxDeposits;
         chunk.seed = m_settings.seed;
@@ -158,7 +182,13 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
         // redistribution dispatch.
         if (redistribute) m_state.download(&storedSoFar, sizeof(storedSoFar), gpu::kPhotonMapStateCount * sizeof(uint32_t));
         stats.chunks += 1;
+        if (!stats.stopReason.empty()) {
+            done += chunk.paths;
+            break;
+        }
     }
+    // Each photon carries total power / paths: the paths traced, when the build stopped early.
+    m_photonPower = static_cast<float>(m_totalPower / std::min(done, m_settings.paths));
     stats.candidates = candidateCount(stats.traced, m_settings.requiredFlags, m_settings.rejectedFlags);
     // Read-back (docs/architecture.md): the map's photon count, which sets the grid's cell size
     // (cellSizeFor) before the grid is built, and the statistics.

@@ -14,6 +14,7 @@
 #include "passes/photon_grid.h"
 #include "render/importon_map.h"
 #include "render/photon_tracer.h"
+#include "render/render_control.h"
 
 namespace vkp {
 
@@ -43,8 +44,11 @@ struct PhotonMapSettings {
     // When set, chooses the grid's cell size from the number of photons stored by each build
     // (with importance deposition: deposited before the decision, the density where p = 1).
     std::function<float(uint64_t photons)> cellSizeFor;
-    uint32_t chunkPaths = 0;      // paths per traced chunk; 0: a chunk of about 2 M slots
+    uint32_t chunkPaths = 0;      // paths per traced chunk; 0: at most kMaxChunkPaths and 2 M slots
     DepositSettings deposit;
+    // Checked between chunks (may be null): a stopped build keeps the chunks traced so far, with
+    // the photon power normalised by the paths actually traced (at least one small chunk).
+    const RenderControl* control = nullptr;
 };
 
 struct PhotonMapStats {
@@ -56,6 +60,7 @@ struct PhotonMapStats {
     float cellSize = 0.0f;
     double traceSeconds = 0.0;    // tracing and compaction
     double gridSeconds = 0.0;
+    std::string stopReason;       // non-empty when the control stopped the build early
 };
 
 // Total area of the scene's triangles (square world units).
@@ -86,6 +91,7 @@ public:
     std::vector<gpu::GpuPhoton> downloadPhotons() const;
 
 private:
+    double m_totalPower;
     gpu::PhotonDepositParams depositParams(uint32_t firstPath, uint32_t paths, uint32_t round) const;
 
     vk::Context& m_context;

@@ -16,6 +16,14 @@ PhotonTracer::PhotonTracer(vk::Context& context, const Scene& scene, const Scene
     if (!(m_totalPower > 0.0)) throw InputError("the scene's lights emit no power: no photons to trace");
 }
 
+void PhotonTracer::reserve(uint32_t paths, uint32_t maxDeposits) {
+    const VkDeviceSize bytes = uint64_t(paths) * maxDeposits * sizeof(gpu::GpuPhoton);
+    if (m_photons && m_photons.size() >= bytes) return;
+    m_pass.reset();
+    m_photons = vk::Buffer(m_context, "photon slots", bytes, vk::kStorageUsage);
+    m_pass = std::make_unique<PhotonTracePass>(m_context, m_buffers, m_photons, m_counters);
+}
+
 PhotonCounters PhotonTracer::trace(const PhotonSettings& settings) {
     if (settings.paths == 0 || settings.maxDeposits == 0)
         throw InputError("photon tracing needs at least one path and one deposit per path");

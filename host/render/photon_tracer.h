@@ -51,6 +51,9 @@ public:
     // storage-buffer range.
     PhotonCounters trace(const PhotonSettings& settings);
 
+    // Allocates the slots of `paths` paths now, so traces of up to that many never reallocate.
+    void reserve(uint32_t paths, uint32_t maxDeposits);
+
     const vk::Buffer& photons() const { return m_photons; }
     // Watts carried by a photon of relative power 1: total light power / paths.
     double nominalPhotonPower() const { return m_nominalPower; }

@@ -19,6 +19,10 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     const auto start = Clock::now();
 
     Frame frame = makeFrame(m_scene.scene(), settings);
+    frame.control.stop = stop;
+    if (settings.timeLimitSeconds > 0.0)
+        frame.control.deadline = settings.timeLimitFrom.value_or(start) +
+                                 std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(settings.timeLimitSeconds));
     const RasterDirectLight raster(m_scene, settings, frame.gpuCamera);
     frame.rasterDirect = &raster.direct();
     frame.rasterFlags = raster.pathFlags();
@@ -27,8 +31,8 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     context.submitAndWait([&](VkCommandBuffer cmd) { film.recordClear(cmd); });
     integrator.prepare(frame, film);
     const SampleLoopResult loop =
-        runSampleLoop(settings.samplesPerPixel, settings.timeLimitSeconds, integrator.maxSamplesPerBatch(), progress,
-                      stop, [&](uint32_t first, uint32_t count) {
+        runSampleLoop(settings.samplesPerPixel, frame.control, integrator.maxSamplesPerBatch(), progress,
+                      [&](uint32_t first, uint32_t count) {
                           integrator.beginSamples(first, count);
                           context.submitAndWait([&](VkCommandBuffer cmd) {
                               integrator.recordSamples(cmd, first, count);
@@ -65,8 +69,11 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     stats.set("counters.nonFiniteSamples", counters.nonFiniteSamples);
     stats.set("counters.pathSegments", counters.segments);
     stats.set("counters.pathsPerSecond", renderSeconds > 0.0 ? double(cameraPaths) / renderSeconds : 0.0);
-    stats.set("partial", loop.samplesDone < settings.samplesPerPixel);
-    stats.set("stopReason", loop.stopReason);
+    // A phase before the samples (a photon map, the guide) may have stopped early too.
+    const bool preparedFully = !integrator.stoppedEarly();
+    stats.set("partial", loop.samplesDone < settings.samplesPerPixel || !preparedFully);
+    stats.set("stopReason", loop.stopReason == "complete" && !preparedFully ? integrator.stoppedEarly().value()
+                                                                           : loop.stopReason);
     integrator.report(stats);
     if (counters.nonFiniteSamples > 0)
         stats.warn(fmt::format("{} sample(s) were NaN or infinite and were dropped", counters.nonFiniteSamples));

@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 
+#include "render/render_control.h"
 #include "render/renderer.h"
 
 namespace vkp {
@@ -17,10 +18,11 @@ struct SampleLoopResult {
     double seconds = 0.0;
 };
 
-// Calls runBatch(firstSample, count) with count <= maxBatch until `samples` samples are done,
-// `timeLimitSeconds` (0: none) has passed or `stop` is set.
-SampleLoopResult runSampleLoop(uint32_t samples, double timeLimitSeconds, uint32_t maxBatch,
-                               const ProgressCallback& progress, const std::atomic<bool>* stop,
+// Calls runBatch(firstSample, count) with count <= maxBatch until `samples` samples are done or
+// `control` says stop. The first sample is always rendered, so an image stopped before the
+// loop (during the photon passes, say) still has one sample in every pixel.
+SampleLoopResult runSampleLoop(uint32_t samples, const RenderControl& control, uint32_t maxBatch,
+                               const ProgressCallback& progress,
                                const std::function<void(uint32_t firstSample, uint32_t count)>& runBatch);
 
 }  // namespace vkp

@@ -8,9 +8,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <new>
 #include <optional>
 #include <string_view>
+#include <unordered_set>
 
 #include <fmt/format.h>
 #include <glm/gtc/quaternion.hpp>
@@ -22,6 +24,7 @@
 #include "scene/gltf_materials.h"
 #include "scene/gltf_preflight.h"
 #include "util/errors.h"
+#include "util/printable.h"
 
 namespace vkp {
 namespace {
@@ -94,18 +97,92 @@ public:
         const std::string sceneName = fmt::format("scenes[{}]", sceneIndex);
         if (m_model.scenes.empty()) fail("scenes", "the file has no scene, so no triangle geometry to render");
         if (static_cast<size_t>(sceneIndex) >= m_model.scenes.size()) fail(sceneName, "does not exist");
+        checkSize(m_model.scenes[sceneIndex].nodes, sceneName);
         walk(m_model.scenes[sceneIndex].nodes);
         if (m_scene.triangles.empty())
             fail(sceneName, m_skippedPrimitives ? "no triangle geometry to render (primitives of other modes are skipped)"
                                                 : "no triangle geometry to render");
         if (m_scene.lights.empty() && !anyEmissiveTriangle())
             fail(sceneName, "no lights: add a KHR_lights_punctual light or give a material an emissiveFactor");
+        checkScale(sceneName);
         return std::move(m_scene);
     }
 
 private:
+    // Triangles the scene will have, from the accessors' counts alone (every node that references
+    // a mesh counts it again), against the limits before any vertex is decoded: a small file can
+    // list a large primitive many times.
+    void checkSize(const std::vector<int>& roots, const std::string& sceneName) const {
+        uint64_t triangles = 0;
+        std::vector<int> stack(roots.rbegin(), roots.rend());
+        std::vector<bool> seen(m_model.nodes.size(), false);
+        while (!stack.empty()) {
+            const int index = stack.back();
+            stack.pop_back();
+            if (index < 0 || size_t(index) >= m_model.nodes.size() || seen[index]) continue;  // walk() names it
+            seen[index] = true;
+            const tinygltf::Node& node = m_model.nodes[index];
+            if (node.mesh >= 0 && size_t(node.mesh) < m_model.meshes.size())
+                for (const tinygltf::Primitive& primitive : m_model.meshes[node.mesh].primitives) {
+                    if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != -1) continue;
+                    const auto position = primitive.attributes.find("POSITION");
+                    const int accessor = primitive.indices >= 0 ? primitive.indices
+                                         : position != primitive.attributes.end() ? position->second : -1;
+                    if (accessor >= 0 && size_t(accessor) < m_model.accessors.size())
+                        triangles += m_model.accessors[accessor].count / 3;
+                }
+            stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
+        }
+        if (triangles > m_limits.maxTriangles)
+            fail(sceneName, fmt::format("{} triangles (counting every mesh reference) exceed the limit of {}", triangles,
+                                        m_limits.maxTriangles));
+        if (triangles > m_limits.deviceMaxTriangles)
+            throw RuntimeError(fmt::format("{}: {} triangles (counting every mesh reference) exceed what the device holds "
+                                           "({} triangles: its storage-buffer range)",
+                                           sceneName, triangles, m_limits.deviceMaxTriangles));
+        const uint64_t bytes = triangles * kHostBytesPerTriangle;
+        if (bytes > m_limits.maxMemoryBytes)
+            throw RuntimeError(fmt::format("{}: {} triangles need about {:.1f} GiB of memory; {:.1f} GiB are allowed "
+                                           "(--max-memory, default: the memory available)",
+                                           sceneName, triangles, bytes / double(1ull << 30),
+                                           m_limits.maxMemoryBytes / double(1ull << 30)));
+    }
+
+    // What single-precision rendering can handle (docs/scene-format.md, "Scale"): a scene too small
+    // for the ray offsets, too far from the origin for its size, or lights too strong for floats.
+    void checkScale(const std::string& sceneName) const {
+        const glm::dvec3 lo(m_scene.bounds.min), hi(m_scene.bounds.max);
+        const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+        const double reach = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
+                                       std::abs(hi.z)});
+        if (!(extent >= kMinSceneExtent))
+            fail(sceneName, fmt::format("the geometry spans only {:.3g} units; vkphoton needs at least {:g} (its ray offsets "
+                                        "are 1e-4 units at least): scale the scene up with a node scale",
+                                        extent, kMinSceneExtent));
+        if (reach > kMaxOffsetPerExtent * extent)
+            fail(sceneName, fmt::format("the geometry spans {:.3g} units but lies {:.3g} units from the origin: more than "
+                                        "{:g} times its size loses single precision; move it towards the origin",
+                                        extent, reach, kMaxOffsetPerExtent));
+        double power = 0.0;
+        for (const Triangle& t : m_scene.triangles) {
+            const Material& m = m_scene.materials[t.material];
+            const double luminance = 0.2126 * m.emissive.x + 0.7152 * m.emissive.y + 0.0722 * m.emissive.z;
+            if (luminance > 0.0)
+                power += kPi * luminance * 0.5 * glm::length(glm::cross(glm::dvec3(t.p[1] - t.p[0]), glm::dvec3(t.p[2] - t.p[0])));
+        }
+        // Punctual lights: 4 pi I for point and spot lights, E times the scene's cross-section for
+        // directional ones (what the photon tracer emits over).
+        for (const PunctualLight& light : m_scene.lights)
+            power += double(glm::length(light.intensity)) *
+                     (light.type == LightType::Directional ? kPi * extent * extent : 4.0 * kPi);
+        if (!(power <= kMaxTotalPower))
+            fail(sceneName, fmt::format("the lights emit about {:.3g} W, beyond the {:g} W single-precision photon powers "
+                                        "can carry",
+                                        power, kMaxTotalPower));
+    }
+
     void warn(const std::string& message) const {
-        fmt::print(stderr, "warning: {}: {}\n", m_path.string(), message);
+        fmt::print(stderr, "warning: {}\n", printable(m_path.string() + ": " + message));
     }
 
     void parse() {
@@ -186,22 +263,33 @@ private:
     }
 
     void visit(const tinygltf::Node& node, const glm::dmat4& world, const std::string& element) {
-        if (node.mesh >= 0) addMesh(node.mesh, world);
-        if (node.camera >= 0) addCamera(node.camera, world);
+        if (node.mesh >= 0) addMesh(node.mesh, world, element);
+        if (node.camera >= 0) addCamera(node.camera, world, element);
         if (const auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end()) {
             const tinygltf::Value& light = it->second.Get("light");
             if (!light.IsInt()) fail(element + ".extensions.KHR_lights_punctual.light", "not an integer");
-            addLight(light.Get<int>(), world);
+            addLight(light.Get<int>(), world, element);
         }
     }
 
-    void addMesh(int meshIndex, const glm::dmat4& world) {
+    // A light's or camera's position: within the coordinates single precision handles.
+    glm::vec3 position(const glm::dmat4& world, const std::string& nodeElement, const char* what) const {
+        const glm::dvec3 p(world[3]);
+        const double reach = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+        if (!(reach <= kMaxCoordinate))
+            fail(nodeElement, fmt::format("the {} lies at ({:.3g}, {:.3g}, {:.3g}), beyond the +-{:g} units vkphoton handles",
+                                          what, p.x, p.y, p.z, kMaxCoordinate));
+        return glm::vec3(p);
+    }
+
+    void addMesh(int meshIndex, const glm::dmat4& world, const std::string& nodeElement) {
         if (static_cast<size_t>(meshIndex) >= m_model.meshes.size())
             fail(fmt::format("meshes[{}]", meshIndex), "does not exist");
         const tinygltf::Mesh& mesh = m_model.meshes[meshIndex];
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
             const std::string element = fmt::format("meshes[{}].primitives[{}]", meshIndex, p);
             try {
+                m_nodeElement = nodeElement;
                 addPrimitive(mesh.primitives[p], world, element);
             } catch (const InputError& e) {
                 // Accessor errors name only the accessor; say which primitive read it.
@@ -218,7 +306,19 @@ private:
         return static_cast<uint32_t>(primitive.material);
     }
 
+    // The three positions, in a rotation-independent order (a triangle listed again from another
+    // vertex is the same triangle), as 36 bytes.
+    static std::string triangleKey(const Triangle& t) {
+        int first = 0;
+        for (int k = 1; k < 3; ++k)
+            if (std::memcmp(&t.p[k], &t.p[first], sizeof(glm::vec3)) < 0) first = k;
+        std::string key(36, '\0');
+        for (int k = 0; k < 3; ++k) std::memcpy(key.data() + 12 * k, &t.p[(first + k) % 3], 12);
+        return key;
+    }
+
     void addPrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& world, const std::string& element) {
+        m_primitiveElement = element;
         if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != -1) {
             ++m_skippedPrimitives;
             warn(fmt::format("{}: mode {} is not TRIANGLES (4); skipped", element, primitive.mode));
@@ -264,7 +364,6 @@ private:
     void emitTriangles(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
                        const std::vector<glm::vec2>& uvs, const std::vector<uint32_t>& indices,
                        const glm::dmat4& world, uint32_t material) {
-        const glm::mat4 toWorld(world);
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
         const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
         // Unit length or nothing: double precision so that neither huge nor tiny (but finite)
@@ -279,7 +378,14 @@ private:
             if (mirrored) std::swap(v[1], v[2]);
             Triangle t;
             for (int k = 0; k < 3; ++k) {
-                t.p[k] = glm::vec3(toWorld * glm::vec4(positions[v[k]], 1.0f));
+                // In double, then checked: a float matrix would turn 1e20 x 1e20 into infinity.
+                const glm::dvec3 p(world * glm::dvec4(glm::dvec3(positions[v[k]]), 1.0));
+                const double reach = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+                if (!(reach <= kMaxCoordinate))
+                    fail(m_primitiveElement, fmt::format("vertex {} of {} lies at ({:.3g}, {:.3g}, {:.3g}) in world space, "
+                                                         "beyond the +-{:g} units vkphoton handles",
+                                                         v[k], m_nodeElement, p.x, p.y, p.z, kMaxCoordinate));
+                t.p[k] = glm::vec3(p);
                 t.uv[k] = uvs.empty() ? glm::vec2(0.0f) : uvs[v[k]];
             }
             glm::vec3 face;
@@ -293,13 +399,19 @@ private:
                 ++m_scene.droppedDegenerateTriangles;
                 continue;
             }
+            // An exact copy of an earlier triangle adds nothing to the image, but a million of them
+            // overlap in every BVH leaf and make rays too long for the device's loop limit.
+            if (!m_triangleKeys.insert(triangleKey(t)).second) {
+                ++m_scene.droppedDuplicateTriangles;
+                continue;
+            }
             t.material = material;
             for (const glm::vec3& p : t.p) m_scene.bounds.grow(p);
             m_scene.triangles.push_back(t);
         }
     }
 
-    void addCamera(int index, const glm::dmat4& world) {
+    void addCamera(int index, const glm::dmat4& world, const std::string& nodeElement) {
         const std::string element = fmt::format("cameras[{}]", index);
         if (static_cast<size_t>(index) >= m_model.cameras.size()) fail(element, "does not exist");
         const tinygltf::Camera& source = m_model.cameras[index];
@@ -318,7 +430,7 @@ private:
             fail(element, "the node's transform is degenerate (no view direction)");
         Camera camera;
         camera.name = source.name.empty() ? element : source.name;
-        camera.position = glm::vec3(world[3]);
+        camera.position = position(world, nodeElement, "camera");
         camera.forward = glm::vec3(forward);
         camera.up = glm::vec3(up);
         camera.yfov = static_cast<float>(yfov);
@@ -326,7 +438,7 @@ private:
         m_scene.cameras.push_back(camera);
     }
 
-    void addLight(int index, const glm::dmat4& world) {
+    void addLight(int index, const glm::dmat4& world, const std::string& nodeElement) {
         const std::string element = fmt::format("extensions.KHR_lights_punctual.lights[{}]", index);
         if (index < 0 || static_cast<size_t>(index) >= m_model.lights.size()) fail(element, "does not exist");
         const tinygltf::Light& source = m_model.lights[index];
@@ -338,10 +450,15 @@ private:
         else fail(element + ".type", fmt::format("unknown light type \"{}\"", source.type));
         if (!source.color.empty() && source.color.size() != 3) fail(element + ".color", "needs 3 numbers");
         const glm::dvec3 color = source.color.empty() ? glm::dvec3(1.0) : glm::dvec3(source.color[0], source.color[1], source.color[2]);
-        const glm::dvec3 intensity = color * source.intensity / double(kLumensPerWatt);
-        if (!std::isfinite(intensity.x + intensity.y + intensity.z) || glm::any(glm::lessThan(intensity, glm::dvec3(0.0))))
+        // In the float the renderer uses, and bounded so that photon powers and film sums stay finite.
+        const glm::vec3 intensity = glm::vec3(color * source.intensity / double(kLumensPerWatt));
+        if (!std::isfinite(intensity.x + intensity.y + intensity.z) || glm::any(glm::lessThan(intensity, glm::vec3(0.0f))))
             fail(element, "intensity and color must be finite and non-negative");
-        light.intensity = glm::vec3(intensity);
+        if (glm::any(glm::greaterThan(glm::dvec3(intensity), glm::dvec3(kMaxRadiometric))))
+            fail(element + ".intensity", fmt::format("{:g} makes {:.3g} W/sr or W/m^2, beyond the {:g} vkphoton handles",
+                                                     source.intensity, std::max({intensity.x, intensity.y, intensity.z}),
+                                                     kMaxRadiometric));
+        light.intensity = intensity;
         if (light.type == LightType::Spot) {
             const double inner = source.spot.innerConeAngle, outer = source.spot.outerConeAngle;
             if (!(inner >= 0.0 && inner <= outer && outer > 0.0 && outer <= kHalfPi))
@@ -353,7 +470,7 @@ private:
         const glm::dvec3 direction = glm::normalize(-glm::dvec3(world[2]));
         if (!std::isfinite(direction.x + direction.y + direction.z))
             fail(element, "its node's transform is degenerate (no direction)");
-        light.position = glm::vec3(world[3]);
+        light.position = position(world, nodeElement, "light");
         light.direction = glm::vec3(direction);
         m_scene.lights.push_back(light);
     }
@@ -366,6 +483,8 @@ private:
     Scene m_scene;
     std::optional<GltfMaterials> m_materials;  // made once the model is parsed
     size_t m_skippedPrimitives = 0;
+    std::unordered_set<std::string> m_triangleKeys;
+    std::string m_nodeElement, m_primitiveElement;  // what emitTriangles names
 };
 
 }  // namespace
@@ -376,6 +495,8 @@ Scene loadGltf(const std::filesystem::path& path, const GltfLimits& limits) {
         return Loader(path, limits).load();
     } catch (const InputError& e) {
         throw InputError(fmt::format("{}: {}", path.string(), e.what()));
+    } catch (const RuntimeError& e) {
+        throw RuntimeError(fmt::format("{}: {}", path.string(), e.what()));
     } catch (const std::bad_alloc&) {
         throw InputError(fmt::format("{}: out of memory while loading (is the file hostile?)", path.string()));
     } catch (const std::exception& e) {

@@ -15,7 +15,27 @@ struct GltfLimits {
     uint64_t maxImagePixels = 64ull << 20;    // width * height of any texture
     uint64_t maxTotalImagePixels = 256ull << 20;  // all images of the file together (1 GiB as RGBA8)
     uint64_t maxTriangles = 1ull << 26;
+    // What the device and the machine can take, checked before any vertex data is decoded
+    // (counted from the accessors' counts, every reference of a mesh included). Exceeding them
+    // is a RuntimeError (exit 1): the file is fine, the machine is too small.
+    uint64_t deviceMaxTriangles = UINT64_MAX;  // deviceTriangleLimit() of the render's device
+    uint64_t maxMemoryBytes = UINT64_MAX;      // --max-memory, else the memory available
 };
+
+// Host memory the loader, the BVH build and the upload need per triangle at their peak, for the
+// estimate against GltfLimits::maxMemoryBytes: 545 bytes measured (peak RSS less the 108 MB of
+// an empty run, 1.0 M and 1.67 M triangles on lavapipe), with a margin.
+constexpr uint64_t kHostBytesPerTriangle = 600;
+
+// The range of world-space coordinates the renderer's single-precision arithmetic handles
+// (docs/scene-format.md, "Scale"): every vertex, light and camera within +-kMaxCoordinate, a
+// scene at least kMinSceneExtent across and no farther from the origin than
+// kMaxOffsetPerExtent times its extent; radiometric intensities up to kMaxRadiometric.
+constexpr double kMaxCoordinate = 1.0e8;
+constexpr double kMinSceneExtent = 1.0e-2;
+constexpr double kMaxOffsetPerExtent = 1.0e2;
+constexpr double kMaxRadiometric = 1.0e20;
+constexpr double kMaxTotalPower = 1.0e30;
 
 // Loads the default scene (or scene 0) of a glTF file. Throws vkp::InputError with a message of
 // the form "FILE: ELEMENT: what is wrong" (e.g. "box.gltf: meshes[2].primitives[0]: ...") for

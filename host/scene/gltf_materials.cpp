@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "scene/gltf_loader.h"
 #include "util/errors.h"
 
 namespace vkp {
@@ -117,6 +118,9 @@ void GltfMaterials::validate(const std::string& element, Material& m) {
                             m.attenuationColor.x, m.attenuationColor.y, m.attenuationColor.z};
     for (const float v : values)
         if (!std::isfinite(v) || v < 0.0f) fail(element, "material factors must be finite and non-negative");
+    if (glm::any(glm::greaterThan(m.emissive, glm::vec3(float(kMaxRadiometric)))))
+        fail(element, fmt::format("emission {:.3g} W/m^2/sr (emissiveFactor x emissiveStrength) is beyond the {:g} vkphoton handles",
+                                  std::max({m.emissive.x, m.emissive.y, m.emissive.z}), kMaxRadiometric));
     if (!(m.attenuationDistance > 0.0f)) fail(element + ".extensions.KHR_materials_volume.attenuationDistance", "must be positive");
     if (m.ior != 0.0f && m.ior < 1.0f) fail(element + ".extensions.KHR_materials_ior.ior", fmt::format("{} is below 1", m.ior));
     if (m.ior == 0.0f) m.ior = 1.0f;  // KHR_materials_ior allows 0, read as "no refraction boundary": ior 1

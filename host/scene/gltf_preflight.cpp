@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/gltf_extensions.h"
+#include "scene/gltf_schema.h"
 #include "scene/gltf_uri_policy.h"
 #include "util/errors.h"
 
@@ -154,11 +155,13 @@ JsonSpan glbJson(const std::vector<unsigned char>& bytes) {
     return span;
 }
 
+// Also refuses NUL bytes: tinygltf stops reading at one, so text after it would be ignored.
 void checkNesting(const unsigned char* text, size_t length) {
     int depth = 0;
     bool inString = false, escaped = false;
     for (size_t i = 0; i < length; ++i) {
         const char c = static_cast<char>(text[i]);
+        if (c == '\0') fail("", fmt::format("the JSON text holds a NUL byte at byte {}", i));
         if (inString) {
             if (escaped) escaped = false;
             else if (c == '\\') escaped = true;
@@ -228,6 +231,7 @@ public:
 
     void check(const Json& root, const JsonSpan& span, bool binary) {
         checkAsset(root);
+        validateGltfSchema(root);
         countElements(root);
         checkBuffers(root, span, binary);
         checkBufferViews(root);
@@ -238,7 +242,7 @@ public:
 private:
     void countElements(const Json& root) {
         for (const char* key : {"scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers", "images",
-                                "textures", "materials", "cameras"})
+                                "textures", "materials", "cameras", "samplers", "skins", "animations"})
             m_count[key] = arrayField(root, key, "").size();
         const Json* lights = find(root, "extensions");
         lights = lights ? find(*lights, "KHR_lights_punctual") : nullptr;
@@ -340,6 +344,7 @@ private:
         forEachObject(root, "meshes", [&](const Json& mesh, const std::string& element, size_t) { checkMesh(mesh, element); });
         forEachObject(root, "accessors", [&](const Json& accessor, const std::string& element, size_t) {
             checkRef(accessor, "bufferView", element, "bufferViews", m_count["bufferViews"]);
+            checkAccessor(accessor, element);
             const Json* sparse = find(accessor, "sparse");
             if (!sparse) return;
             for (const char* part : {"indices", "values"}) {
@@ -351,14 +356,74 @@ private:
         });
         forEachObject(root, "textures", [&](const Json& texture, const std::string& element, size_t) {
             checkRef(texture, "source", element, "images", m_count["images"]);
+            checkRef(texture, "sampler", element, "samplers", m_count["samplers"]);
+        });
+        forEachObject(root, "skins", [&](const Json& skin, const std::string& element, size_t) {
+            checkRef(skin, "inverseBindMatrices", element, "accessors", m_count["accessors"]);
+            checkRef(skin, "skeleton", element, "nodes", m_count["nodes"]);
+            checkRefArray(skin, "joints", element, "nodes", m_count["nodes"]);
+        });
+        forEachObject(root, "animations", [&](const Json& animation, const std::string& element, size_t) {
+            checkAnimation(animation, element);
+        });
+        forEachObject(root, "cameras", [&](const Json& camera, const std::string& element, size_t) {
+            checkCamera(camera, element);
         });
         forEachObject(root, "materials", [&](const Json& material, const std::string& element, size_t) {
             checkMaterial(material, element);
         });
     }
 
+    // What the schema cannot say: a byte offset aligned to the component size, no normalized
+    // floats (the specification's MUSTs).
+    void checkAccessor(const Json& accessor, const std::string& element) {
+        const int componentType = accessor.at("componentType").get<int>();
+        const int size = componentType == 5120 || componentType == 5121 ? 1 : componentType == 5122 || componentType == 5123 ? 2 : 4;
+        if (const Json* offset = find(accessor, "byteOffset"); offset && offset->get<uint64_t>() % size != 0)
+            fail(member(element, "byteOffset"),
+                 fmt::format("{} is not a multiple of the component size ({} bytes)", offset->get<uint64_t>(), size));
+        if (const Json* normalized = find(accessor, "normalized");
+            normalized && normalized->get<bool>() && (componentType == 5126 || componentType == 5125))
+            fail(member(element, "normalized"), "must not be true for FLOAT or UNSIGNED_INT components");
+    }
+
+    void checkCamera(const Json& camera, const std::string& element) {
+        for (const char* kind : {"perspective", "orthographic"}) {
+            const Json* projection = find(camera, kind);
+            if (!projection) continue;
+            const std::string name = member(element, kind);
+            const Json* znear = find(*projection, "znear");
+            const Json* zfar = find(*projection, "zfar");
+            // In float, as used: 1 and 1.00000001 are one plane.
+            if (znear && zfar && !(zfar->get<float>() > znear->get<float>()))
+                fail(member(name, "zfar"), fmt::format("{} is not greater than znear {}", zfar->get<double>(), znear->get<double>()));
+            for (const char* key : {"xmag", "ymag"})
+                if (const Json* mag = find(*projection, key); mag && mag->get<float>() == 0.0f) fail(member(name, key), "must not be zero");
+        }
+        const std::string type = camera.at("type").get<std::string>();
+        if (!find(camera, type.c_str())) fail(element, fmt::format("type \"{}\" but no \"{}\" object", type, type));
+    }
+
+    void checkAnimation(const Json& animation, const std::string& element) {
+        const size_t samplers = arrayField(animation, "samplers", element).size();
+        const Json& channels = arrayField(animation, "channels", element);
+        for (size_t c = 0; c < channels.size(); ++c) {
+            const std::string name = fmt::format("{}.channels[{}]", element, c);
+            checkRef(channels[c], "sampler", name, member(element, "samplers"), samplers);
+            if (const Json* target = find(channels[c], "target"))
+                checkRef(*target, "node", member(name, "target"), "nodes", m_count["nodes"]);
+        }
+        const Json& samplerArray = arrayField(animation, "samplers", element);
+        for (size_t i = 0; i < samplerArray.size(); ++i) {
+            const std::string name = fmt::format("{}.samplers[{}]", element, i);
+            checkRef(samplerArray[i], "input", name, "accessors", m_count["accessors"]);
+            checkRef(samplerArray[i], "output", name, "accessors", m_count["accessors"]);
+        }
+    }
+
     void checkNode(const Json& node, const std::string& element) {
         checkRef(node, "mesh", element, "meshes", m_count["meshes"]);
+        checkRef(node, "skin", element, "skins", m_count["skins"]);
         checkRef(node, "camera", element, "cameras", m_count["cameras"]);
         checkRefArray(node, "children", element, "nodes", m_count["nodes"]);
         const Json* extensions = find(node, "extensions");
@@ -380,6 +445,10 @@ private:
             if (!attributes || !attributes->is_object()) fail(name, "\"attributes\" is missing or not an object");
             for (const auto& [semantic, value] : attributes->items())
                 checkRef(*attributes, semantic, member(name, "attributes"), "accessors", m_count["accessors"]);
+            const Json& targets = arrayField(primitive, "targets", name);
+            for (size_t t = 0; t < targets.size(); ++t)
+                for (const auto& [semantic, value] : targets[t].items())
+                    checkRef(targets[t], semantic, fmt::format("{}.targets[{}]", name, t), "accessors", m_count["accessors"]);
         }
     }
 
@@ -396,6 +465,11 @@ private:
             checkInfo(*pbr, "metallicRoughnessTexture", name);
         }
         for (const char* key : {"normalTexture", "occlusionTexture", "emissiveTexture"}) checkInfo(material, key, element);
+        // Texture references inside the material extensions vkphoton knows.
+        if (const Json* extensions = find(material, "extensions"))
+            for (const auto& [name, extension] : extensions->items())
+                for (const char* key : {"transmissionTexture", "thicknessTexture"})
+                    checkInfo(extension, key, fmt::format("{}.extensions.{}", element, name));
     }
 
     fs::path m_folder;
@@ -412,7 +486,13 @@ GltfDocument preflightGltf(const fs::path& path, const GltfLimits& limits, GltfF
     document.bytes = readFile(path, limits);
     document.binary = document.bytes.size() >= 4 && std::memcmp(document.bytes.data(), "glTF", 4) == 0;
     const JsonSpan span = document.binary ? glbJson(document.bytes) : JsonSpan{0, document.bytes.size(), std::nullopt};
-    const Json root = parseJson(document.bytes.data() + span.offset, span.length);
+    // The JSON chunk is padded to 4 bytes, with spaces by the specification; some exporters pad
+    // with NUL bytes, which are not JSON text.
+    size_t jsonLength = span.length;
+    while (document.binary && jsonLength > 0 && document.bytes[span.offset + jsonLength - 1] == 0 &&
+           span.length - jsonLength < 3)
+        --jsonLength;
+    const Json root = parseJson(document.bytes.data() + span.offset, jsonLength);
     const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
     Preflight(folder, limits, files).check(root, span, document.binary);
     return document;

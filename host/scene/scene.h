@@ -104,6 +104,7 @@ struct Scene {
     Bounds bounds;
     size_t droppedDegenerateTriangles = 0;
     SceneFileInfo file;
+    size_t droppedDuplicateTriangles = 0;    // the same three world positions as an earlier one
 };
 
 }  // namespace vkp

@@ -18,7 +18,8 @@ GuidedIntegrator::GuidedIntegrator(const GpuScene& scene, const GuideSettings& s
 }
 
 void GuidedIntegrator::prepare(const Frame& frame, const Film& film) {
-    m_guide = std::make_unique<PathGuide>(m_scene, m_settings, frame.seed);
+    m_guide = std::make_unique<PathGuide>(m_scene, m_settings, frame.seed, &frame.control);
+    m_stopReason = m_guide->stopReason();
     m_recorder = std::make_unique<PathSampleRecorder>(
         m_scene, frame, film, kMaxGuidedSamplesPerDispatch, m_settings.roulette ? gpu::kPathFlagGuideRoulette : 0u,
         m_guide->shader(), m_guide->buffers());

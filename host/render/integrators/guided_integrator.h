@@ -21,6 +21,9 @@ public:
     void prepare(const Frame& frame, const Film& film) override;
     uint32_t maxSamplesPerBatch() const override { return 4096; }
     void recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) override;
+    std::optional<std::string> stoppedEarly() const override {
+        return m_stopReason.empty() ? std::nullopt : std::optional<std::string>(m_stopReason);
+    }
     void report(Stats& stats) const override;
 
     const PathGuide& guide() const { return *m_guide; }
@@ -30,6 +33,7 @@ private:
     GuideSettings m_settings;
     std::unique_ptr<PathGuide> m_guide;
     std::unique_ptr<PathSampleRecorder> m_recorder;
+    std::string m_stopReason;  // a photon pass stopped early (render/render_control.h)
 };
 
 // --integrator guided and its "guided path tracer" options.

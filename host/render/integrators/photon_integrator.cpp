@@ -71,6 +71,7 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
     globalSettings.maxDeposits = p.maxDeposits;
     globalSettings.seed = frame.seed;
     globalSettings.deposit = depositSettings(deposit, deposit.mode, m_importons.get());
+    globalSettings.control = &frame.control;
     const double area = sceneSurfaceArea(m_scene.arrays());
     const uint32_t k = p.gatherK;
     globalSettings.cellSizeFor = [k, area](uint64_t photons) { return evenSpreadRadius(k, photons, area); };
@@ -85,6 +86,7 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
     m_globalMap = std::make_unique<PhotonMap>(context, m_scene.scene(), m_scene.arrays(), m_scene.buffers(),
                                               globalSettings);
     const PhotonMapStats globalStats = m_globalMap->build(0);
+    m_stopReason = globalStats.stopReason;
     m_globalCellSize = globalStats.cellSize;
     reportMapBuild(m_stats, globalStats);
     m_stats.set("photons.globalStored", globalStats.stored);
@@ -99,6 +101,7 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
         causticSettings.seed = frame.seed;
         causticSettings.requiredFlags = gpu::kPhotonCaustic;
         causticSettings.cellSize = 2.0f * m_radius;
+        causticSettings.control = &frame.control;
         // Caustics are seen directly, where density control's path importance does not reach:
         // they are deposited by importance in that mode too.
         causticSettings.deposit = depositSettings(
@@ -108,6 +111,7 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
         // Split by q, the global map's paths are the caustic map's first; else fresh Halton indices.
         const PhotonMapStats causticStats = m_causticMap->build(splitByQ ? 0 : p.globalPaths);
         reportMapBuild(m_stats, causticStats);
+        if (m_stopReason.empty()) m_stopReason = causticStats.stopReason;
         m_stats.set("photons.causticStored", causticStats.stored);
         m_stats.set("photons.causticDeposits", causticStats.candidates);
         m_stats.add("photons.mapBytes", m_causticMap->bytes());
@@ -116,7 +120,13 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
     // Final gathers read precomputed radiance photons unless told to estimate at every hit.
     m_radiancePhotons.reset();
     const float globalRadius = kGlobalRadiusFactor * m_globalCellSize;
-    if (p.gatherRays > 0 && p.radiancePhotonStride > 0 && globalStats.stored > 0) {
+    // The radiance-photon pass is one dispatch over the map (seconds per million photons on
+    // lavapipe) that cannot stop half-way; a render already told to stop skips it, and its final
+    // gathers estimate at every hit instead.
+    const bool stopped = frame.control.shouldStop();
+    if (stopped && p.gatherRays > 0 && p.radiancePhotonStride > 0)
+        m_stats.note("stopped before the radiance photons: final gathers estimate at every hit");
+    if (p.gatherRays > 0 && p.radiancePhotonStride > 0 && globalStats.stored > 0 && !stopped) {
         const auto start = Clock::now();
         m_radiancePhotons = std::make_unique<RadiancePhotons>(
             context, m_globalMap->grid(), static_cast<uint32_t>(globalStats.stored), m_globalMap->photonPower(),

@@ -31,6 +31,9 @@ public:
     void prepare(const Frame& frame, const Film& film) override;
     uint32_t maxSamplesPerBatch() const override { return 64; }
     void recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) override;
+    std::optional<std::string> stoppedEarly() const override {
+        return m_stopReason.empty() ? std::nullopt : std::optional<std::string>(m_stopReason);
+    }
     void report(Stats& stats) const override;
 
 private:
@@ -52,6 +55,7 @@ private:
     gpu::CausticEstimateParams m_causticParams{};
     gpu::FinalGatherParams m_gatherParams{};
     float m_globalCellSize = 0.0f;
+    std::string m_stopReason;  // a photon pass stopped early (render/render_control.h)
 };
 
 // The visible-point pass's parameters for a frame (shared with the progressive integrator).

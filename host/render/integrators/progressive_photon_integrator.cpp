@@ -30,6 +30,8 @@ void ProgressivePhotonIntegrator::prepare(const Frame& frame, const Film& film) 
     mapSettings.seed = frame.seed;
     mapSettings.rejectedFlags = gpu::kPhotonPrimary;
     mapSettings.cellSize = 2.0f * m_radius;
+    mapSettings.control = &frame.control;  // a stopped pass keeps its paths, normalised by their number
+    m_stopReason.clear();
     m_importons = makeImportonMap(m_scene, frame, p.deposit);
     reportImportons(m_stats, m_importons.get());
     mapSettings.deposit = depositSettings(p.deposit, p.deposit.mode, m_importons.get());
@@ -56,6 +58,8 @@ void ProgressivePhotonIntegrator::beginSamples(uint32_t first, uint32_t count) {
     (void)count;  // one pass per batch (maxSamplesPerBatch)
     const PhotonMapStats mapStats = m_map->build(first * m_settings.globalPaths);
     reportMapBuild(m_stats, mapStats);
+    if (!mapStats.stopReason.empty()) m_stopReason = mapStats.stopReason;
+    m_sppmParams.grid = m_map->grid().view(m_map->photonPower());  // the paths this pass traced
     m_stats.set("photons.globalStored", mapStats.stored);
     m_stats.set("photons.globalDeposits", mapStats.candidates);
 }

@@ -30,6 +30,9 @@ public:
     void beginSamples(uint32_t first, uint32_t count) override;
     void recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) override;
     void finish(ImageRgb& image, uint32_t samplesDone) override;
+    std::optional<std::string> stoppedEarly() const override {
+        return m_stopReason.empty() ? std::nullopt : std::optional<std::string>(m_stopReason);
+    }
     void report(Stats& stats) const override;
 
 private:
@@ -46,6 +49,7 @@ private:
     std::unique_ptr<SppmUpdatePass> m_updatePass;
     gpu::VisiblePointParams m_visibleParams{};
     gpu::SppmParams m_sppmParams{};
+    std::string m_stopReason;  // a photon pass stopped early (render/render_control.h)
 };
 
 }  // namespace vkp
