@@ -573,19 +573,25 @@ int waitExitCode(pid_t pid) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-// SIGTERM during the photon pass (once ignored for 24 s): the partial image is written within a
-// chunk or two, marked, exit 143, no temporary files.
+// SIGTERM during the photon pass (once ignored for 24 s): the pass stops between chunks — far
+// fewer photon paths than asked for are traced — and the partial image is written, marked, exit
+// 143, no temporary files. Judged by the work done, not by wall time, so a loaded machine cannot
+// fail it.
 TEST(CliHostile, SigtermDuringThePhotonPassWritesThePartialImage) {
     const fs::path dir = tempDir("sigterm");
     const fs::path exr = dir / "box.exr";
-    const pid_t pid = spawnVkphoton({"render", kBox, "--quiet", "--integrator", "photon", "--photons", "50000000",
-                                     "--spp", "4", "--width", "16", "--height", "16", "-o", exr.string()});
+    const fs::path stats = dir / "stats.json";
+    constexpr long kPhotonsAsked = 50000000;
+    const pid_t pid = spawnVkphoton({"render", kBox, "--quiet", "--integrator", "photon", "--photons",
+                                     std::to_string(kPhotonsAsked), "--spp", "4", "--width", "16", "--height",
+                                     "16", "-o", exr.string(), "--stats-json", stats.string()});
     ASSERT_GT(pid, 0);
     std::this_thread::sleep_for(std::chrono::seconds(4));  // into the photon pass
-    const auto signalled = std::chrono::steady_clock::now();
     kill(pid, SIGTERM);
     EXPECT_EQ(waitExitCode(pid), 128 + SIGTERM);
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - signalled).count(), 15.0);
+    ASSERT_TRUE(fs::exists(stats));
+    const nlohmann::json j = nlohmann::json::parse(std::ifstream(stats));
+    EXPECT_LT(j["photons"]["pathsTraced"].get<double>(), 0.5 * kPhotonsAsked) << j.dump();
     ASSERT_TRUE(fs::exists(exr));
     EXPECT_TRUE(fs::exists(dir / "box.png"));
     const auto attributes = exrAttributes(exr);
