@@ -18,7 +18,7 @@ layout(std430, set = 0, binding = kCausticEstimatePointBinding) readonly buffer 
 
 layout(push_constant) uniform Push { CausticEstimateParams params; };
 
-void main() {
+void estimateCaustics() {
     uint pixel = gl_GlobalInvocationID.x;
     if (pixel >= params.width * params.height) return;
     GpuVisiblePoint vp = visiblePoints[pixel];
@@ -28,4 +28,9 @@ void main() {
                                             s.bsdf, s.wo, s.t, s.b, s.n);
     vec3 radiance = g.weightedPower * (params.grid.photonPower / coneFilterArea(params.radius, params.coneK));
     film[pixel] += vec4(finiteOrZero(vp.throughput * radiance), 0.0f);
+}
+
+void main() {
+    estimateCaustics();
+    countTerminations(kTerminationGathers);  // rays and gathers this invocation's bounds cut short
 }

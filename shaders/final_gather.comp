@@ -65,7 +65,7 @@ vec3 gatherRay(GpuVisiblePoint vp, VisibleSurface s, inout Sampler rng) {
     return vec3(0.0f);
 }
 
-void main() {
+void finalGather() {
     uint pixel = gl_GlobalInvocationID.x;
     if (pixel >= params.width * params.height) return;
     GpuVisiblePoint vp = visiblePoints[pixel];
@@ -81,4 +81,9 @@ void main() {
         radiance = gatherRay(vp, s, rng) / float(params.gatherRays);
     }
     film[pixel] += vec4(finiteOrZero(vp.throughput * radiance), 0.0f);
+}
+
+void main() {
+    finalGather();
+    countTerminations(kTerminationGathers);  // rays and gathers this invocation's bounds cut short
 }

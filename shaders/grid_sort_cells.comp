@@ -7,20 +7,27 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "grid_build.glsl"
+#include "termination_counters.glsl"
 
 layout(local_size_x = kGridGroupSize) in;
 
 const uint kGaps[8] = uint[8](701u, 301u, 132u, 57u, 23u, 10u, 4u, 1u);
 
-void main() {
+void sortBucket() {
     uint bucket = gl_GlobalInvocationID.x;
     if (bucket > params.tableMask) return;
     uint begin = cellStart[bucket];
     uint end = cellStart[bucket + 1u];
     uint n = end - begin;
+    uint passes = 0u;    // passes and insertions done, against those due: fewer when a loop was cut
+    uint rows = 0u;
+    uint rowsDue = 0u;
     for (uint g = 0u; g < 8u; ++g) {
+        passes += 1u;
         uint gap = kGaps[g];
+        rowsDue += max(n, gap) - gap;
         for (uint i = gap; i < n; ++i) {
+            rows += 1u;
             uint value = sortedSlots[begin + i];
             uint j = i;
             while (j >= gap && sortedSlots[begin + j - gap] > value) {
@@ -30,4 +37,11 @@ void main() {
             sortedSlots[begin + j] = value;
         }
     }
+    noteLoopCut(passes, 8u);
+    noteLoopCut(rows, rowsDue);
+}
+
+void main() {
+    sortBucket();
+    countTerminations(kTerminationGridCells);  // rays and gathers this invocation's bounds cut short
 }

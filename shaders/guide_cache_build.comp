@@ -14,6 +14,7 @@
 #include "shared/kernels/guide_cache.glsl"
 #include "shared/guiding.glsl"
 #include "shared/photon.glsl"
+#include "termination_counters.glsl"
 
 layout(local_size_x = kGuideCacheGroupSize) in;
 
@@ -25,7 +26,7 @@ layout(std430, set = 0, binding = kGuideCacheIrradianceBinding) writeonly buffer
 
 layout(push_constant) uniform Push { GuideParams guide; };
 
-void main() {
+void buildCacheCell() {
     uint index = gl_GlobalInvocationID.x;
     uint bucket = index / kNormalBins;
     uint bin = index - bucket * kNormalBins;
@@ -47,7 +48,9 @@ void main() {
     float count = 0.0f;
     vec2 lo = vec2(kInfinity);
     vec2 hi = vec2(-kInfinity);
+    uint visited = 0u;  // fewer than the cell holds when lavapipe's loop budget cut the loop
     for (uint i = begin; i < end; ++i) {
+        visited += 1u;
         GpuPhoton p = gridPhotons[i];
         if ((photonFlags(p) & kPhotonPrimary) != 0u || gridCell(p.position, guide.grid.invCellSize) != cell ||
             normalBin(decodeOctahedral(p.normal)) != bin)
@@ -59,6 +62,7 @@ void main() {
         lo = min(lo, st);
         hi = max(hi, st);
     }
+    noteLoopCut(visited, max(end, begin) - begin);
     uint photonsPerCell = guide.gridSize >> 16u;
     uvec2 size = photonsPerCell > 0u ? guideAdaptiveSize(gm, gn, photonsPerCell, count) : uvec2(gm, gn);
     guideCoarsen(cells, gm, gn, size.x, size.y);
@@ -68,4 +72,9 @@ void main() {
     vec2 extent = count > 0.0f ? (hi - lo) * ((count + 1.0f) / max(count - 1.0f, 1.0f)) : vec2(edge);
     extent = clamp(extent, vec2(0.25f * edge), vec2(edge));
     cacheIrradiance[index] = vec4(flux * (guide.grid.photonPower / (extent.x * extent.y)), count);
+}
+
+void main() {
+    buildCacheCell();
+    countTerminations(kTerminationGridCells);  // rays and gathers this invocation's bounds cut short
 }

@@ -21,7 +21,7 @@ layout(push_constant) uniform Push { ImportonTraceParams params; };
 
 const uint kImportonStream = 0x494d5054u;  // "IMPT"
 
-void main() {
+void traceImporton() {
     uint local = gl_GlobalInvocationID.x;
     if (local >= params.pathCount) return;
     Sampler rng = makeSampler(params.firstPath + local, hashCombine(params.seed, kImportonStream));
@@ -37,9 +37,15 @@ void main() {
 
     uint slot = local * params.maxDeposits;
     uint stored = 0u;
+    uint bounces = 0u;  // bounces taken and whether a break ended the path (else its bounds did,
+    bool ended = false; // or lavapipe's loop budget cut it: fewer bounces than the bounds allow)
     for (uint depth = 0u; depth < params.maxDepth && stored < params.maxDeposits; ++depth) {
+        bounces += 1u;
         PathVertex v;
-        if (!traceVertex(ray, v)) break;
+        if (!traceVertex(ray, v)) {
+            ended = true;
+            break;
+        }
         throughput *= v.transmittance;
         vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
         BsdfSample bs = sampleVertexBsdf(v, true, u);
@@ -60,9 +66,17 @@ void main() {
             yAlbedo = luminance(throughput);
             yScatter = bs.lobe == kLobeNone ? 0.0f : luminance(evalVertexBsdf(v, bs.wi)) * abs(bs.wi.z);
         }
-        if (bs.lobe == kLobeNone) break;
+        if (bs.lobe == kLobeNone || !(luminance(throughput * bs.weight) > 0.0f)) {
+            ended = true;
+            break;
+        }
         throughput *= bs.weight;
-        if (!(luminance(throughput) > 0.0f)) break;
         spawnRay(v, bs, ray);
     }
+    if (!ended && stored < params.maxDeposits) noteLoopCut(bounces, params.maxDepth);
+}
+
+void main() {
+    traceImporton();
+    countTerminations(kTerminationImportonPaths);  // rays and gathers this invocation's bounds cut short
 }

@@ -230,8 +230,11 @@ void main() {
         }
         acc += vec4(l, 1.0f);
         done += 1u;
+        countTerminations(kTerminationSamples);
         if (done < params.sampleCount) st = startPath(params.firstSample + done, streamSeed, px, py);
     }
+    // Samples lavapipe's loop budget cut: the one in flight and those never started.
+    countCutItems(kTerminationSamples, params.sampleCount - done);
     film[pixel] = acc;
     if (atomicAdd(counters[kPathTraceCounterSegmentsLow], segments) + segments < segments) atomicAdd(counters[kPathTraceCounterSegmentsHigh], 1u);  // carry
 }

@@ -59,7 +59,7 @@ void redistribute(vec3 power, uint found) {
     }
 }
 
-void main() {
+void deposit() {
     uint slot = gl_GlobalInvocationID.x;
     if (slot >= params.slotCount) return;
     GpuPhoton p = slots[slot];
@@ -97,4 +97,9 @@ void main() {
     } else {
         slots[slot] = emptyPhoton();
     }
+}
+
+void main() {
+    deposit();
+    countTerminations(kTerminationGathers);  // rays and gathers this invocation's bounds cut short
 }

@@ -13,6 +13,7 @@
 #include "shared/photon.glsl"
 #include "shared/photon_estimate.glsl"
 #include "shared/photon_grid.glsl"
+#include "shared/terminations.glsl"
 
 #ifndef PHOTON_GRID_BINDING
 #error "define PHOTON_GRID_BINDING before including photon_gather.glsl"
@@ -61,14 +62,19 @@ FixedRadiusGather gatherFixedRadius(PhotonGridView g, vec3 x, float r, float con
     ivec3 lo;
     ivec3 hi;
     gatherCellRange(g, x, r, lo, hi);
+    uint cells = 0u;  // cells and photons visited: fewer than the ranges hold when a loop was cut
     for (int cz = lo.z; cz <= hi.z; ++cz)
         for (int cy = lo.y; cy <= hi.y; ++cy)
             for (int cx = lo.x; cx <= hi.x; ++cx) {
+                cells += 1u;
                 ivec3 c = ivec3(cx, cy, cz);
                 if (cellDistance2(g, c, x) > r2) continue;
                 uint bucket = gridHash(c, g.tableMask);
+                uint begin = gridCellStart[bucket];
                 uint end = gridCellStart[bucket + 1u];
-                for (uint i = gridCellStart[bucket]; i < end; ++i) {
+                uint visited = 0u;
+                for (uint i = begin; i < end; ++i) {
+                    visited += 1u;
                     GpuPhoton p = gridPhotons[i];
                     vec3 d = p.position - x;
                     float d2 = dot(d, d);
@@ -79,7 +85,10 @@ FixedRadiusGather gatherFixedRadius(PhotonGridView g, vec3 x, float r, float con
                     result.weightedPower += evalBsdf(bsdf, wo, wi) * photonRelativePower(p) * w;
                     result.count += 1u;
                 }
+                noteLoopCut(visited, max(end, begin) - begin);
             }
+    ivec3 extent = max(hi - lo + ivec3(1), ivec3(0));
+    noteLoopCut(cells, uint(extent.x * extent.y * extent.z));
     return result;
 }
 
@@ -128,8 +137,11 @@ struct NearestSearch {
 void gatherNearestInCell(PhotonGridView g, ivec3 c, vec3 x, vec3 n, uint required, uint rejected,
                          inout NearestSearch s) {
     uint bucket = gridHash(c, g.tableMask);
+    uint begin = gridCellStart[bucket];
     uint end = gridCellStart[bucket + 1u];
-    for (uint i = gridCellStart[bucket]; i < end; ++i) {
+    uint visited = 0u;  // fewer than the cell holds when the loop was cut
+    for (uint i = begin; i < end; ++i) {
+        visited += 1u;
         GpuPhoton p = gridPhotons[i];
         vec3 d = p.position - x;
         float d2 = dot(d, d);
@@ -143,6 +155,7 @@ void gatherNearestInCell(PhotonGridView g, ivec3 c, vec3 x, vec3 n, uint require
             if (s.count == s.capacity) s.radius2 = heapDistance2[0];  // shrinks to the k-th distance
         }
     }
+    noteLoopCut(visited, max(end, begin) - begin);
 }
 
 // The k nearest photons (k <= kMaxGatherK) within maxRadius of x: fills heapIndex[0, found) with
@@ -158,7 +171,8 @@ uint gatherNearest(PhotonGridView g, vec3 x, vec3 n, uint k, float maxRadius, ui
     // radius shrinks to the k-th distance and the outer rings' cells are mostly skipped.
     ivec3 center = gridCell(x, g.invCellSize);
     int rings = min(int(ceil(maxRadius * g.invCellSize)), kMaxGatherRings);
-    for (int ring = 0; ring <= rings; ++ring)
+    uint ringsDone = 0u;  // fewer than rings + 1 when the loop was cut
+    for (int ring = 0; ring <= rings; ++ring, ++ringsDone)
         for (int dz = -ring; dz <= ring; ++dz)
             for (int dy = -ring; dy <= ring; ++dy)
                 for (int dx = -ring; dx <= ring; ++dx) {
@@ -166,6 +180,7 @@ uint gatherNearest(PhotonGridView g, vec3 x, vec3 n, uint k, float maxRadius, ui
                     if (max(abs(dx), max(abs(dy), abs(dz))) == ring && cellDistance2(g, c, x) <= s.radius2)
                         gatherNearestInCell(g, c, x, n, required, rejected, s);
                 }
+    noteLoopCut(ringsDone, uint(max(rings + 1, 0)));
     radius2 = s.count == s.capacity ? heapDistance2[0] : maxRadius * maxRadius;
     return s.count;
 }

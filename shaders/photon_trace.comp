@@ -115,8 +115,10 @@ void main() {
     uint stored = 0u;
     bool onlySpecularSoFar = true;  // every bounce since the light was a delta lobe
     Ray ray = rayFrom(e.origin, e.dir);
-    uint outcome = kPhotonCounterTruncated;  // unless a break below says otherwise
-    for (uint depth = 0u; depth < 64u; ++depth) {
+    uint outcome = kPhotonCounterCount;  // set by each break below; left as is, the loop's bound or
+    uint bounces = 0u;                   // lavapipe's budget ended the path (fewer bounces)
+    for (uint depth = 0u; depth < kPhotonMaxBounces; ++depth) {
+        bounces += 1u;
         PathVertex v;
         if (!traceVertex(ray, v)) {
             outcome = kPhotonCounterLost;
@@ -161,5 +163,10 @@ void main() {
         onlySpecularSoFar = onlySpecularSoFar && ((bs.lobe & kLobeDelta) != 0u || !storesPhotons(v.bsdf));
         spawnRay(v, bs, ray);
     }
+    if (outcome == kPhotonCounterCount) {
+        noteTermination(bounces < kPhotonMaxBounces ? kTerminationLoopLimit : kTerminationLoopBound);
+        outcome = kPhotonCounterTruncated;
+    }
     atomicAdd(counters[outcome], 1u);
+    countTerminations(kTerminationPhotonPaths);
 }

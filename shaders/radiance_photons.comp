@@ -12,6 +12,7 @@
 #include "shared/photon_render.glsl"
 #define PHOTON_GRID_BINDING kRadiancePhotonsGridBinding
 #include "photon_gather.glsl"
+#include "termination_counters.glsl"
 
 layout(local_size_x = kPhotonEstimateGroupSize) in;
 
@@ -19,7 +20,7 @@ layout(std430, set = 0, binding = kRadiancePhotonsOutputBinding) writeonly buffe
 
 layout(push_constant) uniform Push { RadiancePhotonParams params; };
 
-void main() {
+void radiancePhoton() {
     uint source = gl_GlobalInvocationID.x;
     if (source >= params.photonCount) return;
     GpuPhoton p = gridPhotons[source];
@@ -39,4 +40,9 @@ void main() {
     for (uint j = 0u; j < found; ++j) sum += photonRelativePower(gridPhotons[heapIndex[j]]);
     vec3 irradiance = sum * (params.grid.photonPower / (kPi * radius2));
     radiancePhotons[source] = makePhoton(p.position, irradiance, n, n, kPhotonValid, p.lightIndex);
+}
+
+void main() {
+    radiancePhoton();
+    countTerminations(kTerminationGathers);  // rays and gathers this invocation's bounds cut short
 }

@@ -20,7 +20,7 @@ layout(std430, set = 0, binding = kRasterDirectMaskBinding) readonly buffer Mask
 layout(std430, set = 0, binding = kRasterDirectOutputBinding) buffer Direct { vec4 direct[]; };
 layout(push_constant) uniform Push { RasterDirectParams params; };
 
-void main() {
+void rasterDirectLight() {
     uint pixel = gl_GlobalInvocationID.x;
     if (pixel >= params.width * params.height) return;
     uint px = pixel % params.width;
@@ -41,4 +41,9 @@ void main() {
         sum += evalVertexBsdf(v, wi) * wi.z * ls.radiance;
     }
     direct[pixel] += vec4(sum, 0.0f);
+}
+
+void main() {
+    rasterDirectLight();
+    countTerminations(kTerminationSamples);  // rays and gathers this invocation's bounds cut short
 }

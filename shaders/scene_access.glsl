@@ -9,6 +9,7 @@
 #include "shared/constants.glsl"
 #include "shared/sampling.glsl"
 #include "shared/bsdf.glsl"
+#include "termination_counters.glsl"
 
 layout(std430, set = 0, binding = kSceneTrianglesBinding) readonly buffer Triangles { GpuTriangle triangles[]; };
 layout(std430, set = 0, binding = kSceneBvhNodesBinding) readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };

@@ -23,7 +23,7 @@ layout(std430, set = 0, binding = kSppmUpdatePointBinding) readonly buffer Visib
 
 layout(push_constant) uniform Push { SppmParams params; };
 
-void main() {
+void updatePixel() {
     uint pixel = gl_GlobalInvocationID.x;
     if (pixel >= params.width * params.height) return;
     GpuVisiblePoint vp = visiblePoints[pixel];
@@ -38,4 +38,9 @@ void main() {
     state.flux = (state.flux + phi) * fluxScale;
     state.radius2 = radius2;
     pixels[pixel] = state;
+}
+
+void main() {
+    updatePixel();
+    countTerminations(kTerminationGathers);  // rays and gathers this invocation's bounds cut short
 }

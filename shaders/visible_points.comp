@@ -29,7 +29,7 @@ layout(push_constant) uniform Push { VisiblePointParams params; };
 // The camera samples of the photon integrator use their own Halton stream per pixel.
 const uint kVisiblePointStream = 0x56495350u;  // "VISP"
 
-void main() {
+void findVisiblePoint() {
     uint pixel = gl_GlobalInvocationID.x;
     if (pixel >= params.width * params.height) return;
     Sampler rng = makeSampler(params.sampleIndex, hashCombine(hashCombine(params.seed, kVisiblePointStream), pixel));
@@ -97,4 +97,9 @@ void main() {
     if (any(isnan(radiance)) || any(isinf(radiance))) radiance = vec3(0.0f);
     film[pixel] += vec4(radiance, 1.0f);
     visiblePoints[pixel] = vp;
+}
+
+void main() {
+    findVisiblePoint();
+    countTerminations(kTerminationSamples);  // rays and gathers this invocation's bounds cut short
 }

@@ -11,6 +11,8 @@
 
 #include "app/commands.h"
 #include "app/info_command.h"
+#include "app/merge_command.h"
+#include "render/crop_window.h"
 #include "util/cli_choice.h"
 #include "util/check_range.h"
 #include "util/errors.h"
@@ -142,6 +144,16 @@ int runCommandLine(int argc, const char* const* argv) {
     addViewOptions(*renderCmd, render.frame.view);
     addDeviceOptions(*renderCmd, render.device, render.validate, render.maxMemoryGiB);
     renderCmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
+    std::string tileText, cropText;  // resolved once --width and --height are known
+    CLI::Option* tileOption = renderCmd->add_option(
+        "--tile", tileText,
+        "Render only the I-th of N bands of whole rows (1 <= I <= N): a part for `vkphoton merge`, with the same "
+        "pixels as the full render")->type_name("I/N");
+    renderCmd->add_option("--crop", cropText,
+                          "Render only the pixels X0 <= x < X1, Y0 <= y < Y1 (the GPU computes the rows they span): "
+                          "a part for `vkphoton merge`")
+        ->type_name("X0,Y0,X1,Y1")
+        ->excludes(tileOption);
     renderCmd->add_flag("--quiet", render.quiet, "No progress output");
     const auto views = viewTransformChoices();
     renderCmd->add_option("--tonemap", render.display.view,
@@ -208,6 +220,13 @@ int runCommandLine(int argc, const char* const* argv) {
 
     app.add_subcommand("devices", "List the Vulkan devices");
 
+    MergeCommandOptions merge;
+    CLI::App* mergeCmd = app.add_subcommand(
+        "merge", "Join the parts of one render (render --tile or --crop) into the full EXR and PNG, bit for bit");
+    mergeCmd->add_option("parts", merge.parts, "The parts' EXR files")->required();
+    mergeCmd->add_option("-o,--output", merge.output, "Output EXR path; a PNG is written beside it")->required();
+    mergeCmd->add_flag("--quiet", merge.quiet, "No summary output");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -230,6 +249,8 @@ int runCommandLine(int argc, const char* const* argv) {
             requireNonEmpty(*renderCmd, "--stats-json", render.statsJson);
             checkRange("--max-memory", render.maxMemoryGiB, 0.0, 1.0e6);
             render.frame.nextEventEstimation = !bsdfOnly;
+            if (!tileText.empty()) render.frame.crop = parseTile(tileText, render.frame.width, render.frame.height);
+            if (!cropText.empty()) render.frame.crop = parseCrop(cropText);
             render.frame.check();
             render.display.check();
             const IntegratorConfig& config = *configs.at(integratorName);
@@ -249,6 +270,10 @@ int runCommandLine(int argc, const char* const* argv) {
             return runGuideGrid(guideGrid);
         }
         if (infoCmd->parsed()) return runInfo(info);
+        if (mergeCmd->parsed()) {
+            requireNonEmpty(*mergeCmd, "--output", merge.output);
+            return runMerge(merge);
+        }
         return runDevices();
     } catch (const InputError& e) {
         fmt::print(stderr, "error: {}\n", printable(e.what()));

@@ -18,7 +18,10 @@
 #include "render/guide_debug.h"
 #include "render/integrators/photon_settings.h"
 #include "render/photon_export.h"
+#include "app/merge_command.h"
 #include "render/photon_map.h"
+#include "render/stats.h"
+#include "render/terminations.h"
 #include "render/renderer.h"
 #include "gpu_scene/scene_buffers.h"
 #include "scene/gltf_loader.h"
@@ -153,6 +156,9 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
         {"vkphoton/exposure", fmt::format("{}", options.display.exposureEv)},
         {"vkphoton/tonemap", viewTransformName(options.display.view)},
     };
+    // --tile / --crop: where the part belongs, for `vkphoton merge` (app/merge_command.h).
+    for (auto& attribute : partAttributes(frame, stats)) attributes.push_back(std::move(attribute));
+    if (frame.crop) stats.set("crop", frame.crop->text());
     // Both or neither: a signal or a failure never leaves a new EXR beside an old PNG.
     writeFilesTogether({{exrPath, exrBytes(exrPath, result.image, attributes)},
                         {pngPath, pngBytes(pngPath, result.image, options.display)}});
@@ -209,6 +215,9 @@ int runPhotons(const PhotonsCommandOptions& options) {
     if (stats.dropped > 0)
         fmt::print(stderr, "warning: {} photon(s) did not fit the map ({} photons at most on this device)\n",
                    stats.dropped, map.capacity());
+    Stats terminations;  // the context's counters start at zero: importons and photons of this run
+    reportTerminations(readTerminations(context), terminations);
+    for (const std::string& warning : terminations.warnings()) fmt::print(stderr, "warning: {}\n", warning);
     if (!options.quiet)
         fmt::print(stderr,
                    "traced {} photon paths in {:.2f} s on {}: stored {} caustic, {} global, {} primary; "

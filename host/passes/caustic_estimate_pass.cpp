@@ -12,8 +12,8 @@ CausticEstimatePass::CausticEstimatePass(vk::Context& context, const SceneBuffer
     m_kernel.bind(gpu::kCausticEstimateGridBinding + 1, causticGrid.photons());
 }
 
-void CausticEstimatePass::record(VkCommandBuffer cmd, const gpu::CausticEstimateParams& params) const {
-    m_kernel.record(cmd, uint64_t(params.width) * params.height, params);
+void CausticEstimatePass::record(VkCommandBuffer cmd, const gpu::CausticEstimateParams& params, vk::ItemRange pixels) const {
+    m_kernel.record(cmd, pixels, uint64_t(params.width) * params.height, params);
 }
 
 }  // namespace vkp

@@ -18,7 +18,8 @@ public:
                         const vk::Buffer& visiblePoints, const PhotonGrid& causticGrid);
 
     // One dispatch over params.width * params.height pixels.
-    void record(VkCommandBuffer cmd, const gpu::CausticEstimateParams& params) const;
+    // `pixels`: the window of pixels to compute (--tile, --crop), all by default.
+    void record(VkCommandBuffer cmd, const gpu::CausticEstimateParams& params, vk::ItemRange pixels = {}) const;
 
 private:
     vk::Kernel<gpu::CausticEstimateKernel> m_kernel;

@@ -12,8 +12,8 @@ FinalGatherPass::FinalGatherPass(vk::Context& context, const SceneBuffers& scene
     m_kernel.bind(gpu::kFinalGatherGridBinding + 1, grid.photons());
 }
 
-void FinalGatherPass::record(VkCommandBuffer cmd, const gpu::FinalGatherParams& params) const {
-    m_kernel.record(cmd, uint64_t(params.width) * params.height, params);
+void FinalGatherPass::record(VkCommandBuffer cmd, const gpu::FinalGatherParams& params, vk::ItemRange pixels) const {
+    m_kernel.record(cmd, pixels, uint64_t(params.width) * params.height, params);
 }
 
 }  // namespace vkp

@@ -18,7 +18,8 @@ public:
                     const vk::Buffer& visiblePoints, const PhotonGrid& grid);
 
     // One dispatch over params.width * params.height pixels (one gather ray: params.rayIndex).
-    void record(VkCommandBuffer cmd, const gpu::FinalGatherParams& params) const;
+    // `pixels`: the window of pixels to compute (--tile, --crop), all by default.
+    void record(VkCommandBuffer cmd, const gpu::FinalGatherParams& params, vk::ItemRange pixels = {}) const;
 
 private:
     vk::Kernel<gpu::FinalGatherKernel> m_kernel;

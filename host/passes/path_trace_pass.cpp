@@ -28,15 +28,13 @@ PathTracePass::PathTracePass(vk::Context& context, const SceneBuffers& scene, co
     m_kernel.bind(guide, gpu::kPathTraceGuideBinding);
 }
 
-void PathTracePass::record(VkCommandBuffer cmd, const gpu::PathTraceParams& params) const {
-    const uint64_t pixels = uint64_t(params.width) * params.height;
-    m_kernel.record(cmd, vk::groupCount(pixels, m_kernel.groupSize()), params);
+void PathTracePass::record(VkCommandBuffer cmd, const gpu::PathTraceParams& params, vk::ItemRange pixels) const {
+    m_kernel.record(cmd, pixels, uint64_t(params.width) * params.height, params);
 }
 
-void PathTracePass::record(VkCommandBuffer cmd, const gpu::PathTraceParams& params,
-                           const gpu::GuideParams& guide) const {
-    const uint64_t pixels = uint64_t(params.width) * params.height;
-    m_kernel.record(cmd, vk::groupCount(pixels, m_kernel.groupSize()), gpu::GuidedPathTraceParams{params, guide});
+void PathTracePass::record(VkCommandBuffer cmd, const gpu::PathTraceParams& params, const gpu::GuideParams& guide,
+                           vk::ItemRange pixels) const {
+    m_kernel.record(cmd, pixels, uint64_t(params.width) * params.height, gpu::GuidedPathTraceParams{params, guide});
 }
 
 PathTraceCounters PathTracePass::readCounters(const vk::Buffer& counters) {

@@ -34,8 +34,10 @@ public:
                   const std::string& shader = gpu::PathTraceKernel::kShader,
                   const std::vector<const vk::Buffer*>& guide = {});
 
-    void record(VkCommandBuffer cmd, const gpu::PathTraceParams& params) const;
-    void record(VkCommandBuffer cmd, const gpu::PathTraceParams& params, const gpu::GuideParams& guide) const;
+    // `pixels`: the window of pixels to compute (--tile, --crop), all by default.
+    void record(VkCommandBuffer cmd, const gpu::PathTraceParams& params, vk::ItemRange pixels = {}) const;
+    void record(VkCommandBuffer cmd, const gpu::PathTraceParams& params, const gpu::GuideParams& guide,
+                vk::ItemRange pixels = {}) const;
 
     // Reads the counter buffer back (after the submission that wrote it has completed).
     static PathTraceCounters readCounters(const vk::Buffer& counters);

@@ -12,8 +12,8 @@ SppmUpdatePass::SppmUpdatePass(vk::Context& context, const SceneBuffers& scene, 
     m_kernel.bind(gpu::kSppmUpdateGridBinding + 1, grid.photons());
 }
 
-void SppmUpdatePass::record(VkCommandBuffer cmd, const gpu::SppmParams& params) const {
-    m_kernel.record(cmd, uint64_t(params.width) * params.height, params);
+void SppmUpdatePass::record(VkCommandBuffer cmd, const gpu::SppmParams& params, vk::ItemRange pixels) const {
+    m_kernel.record(cmd, pixels, uint64_t(params.width) * params.height, params);
 }
 
 }  // namespace vkp

@@ -18,7 +18,8 @@ public:
                    const vk::Buffer& visiblePoints, const PhotonGrid& grid);
 
     // One dispatch over params.width * params.height pixels.
-    void record(VkCommandBuffer cmd, const gpu::SppmParams& params) const;
+    // `pixels`: the window of pixels to compute (--tile, --crop), all by default.
+    void record(VkCommandBuffer cmd, const gpu::SppmParams& params, vk::ItemRange pixels = {}) const;
 
 private:
     vk::Kernel<gpu::SppmUpdateKernel> m_kernel;

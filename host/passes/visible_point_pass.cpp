@@ -11,8 +11,8 @@ VisiblePointPass::VisiblePointPass(vk::Context& context, const SceneBuffers& sce
     m_kernel.bind(gpu::kVisiblePointsRasterDirectBinding, rasterDirect);
 }
 
-void VisiblePointPass::record(VkCommandBuffer cmd, const gpu::VisiblePointParams& params) const {
-    m_kernel.record(cmd, uint64_t(params.width) * params.height, params);
+void VisiblePointPass::record(VkCommandBuffer cmd, const gpu::VisiblePointParams& params, vk::ItemRange pixels) const {
+    m_kernel.record(cmd, pixels, uint64_t(params.width) * params.height, params);
 }
 
 }  // namespace vkp

@@ -16,7 +16,8 @@ public:
     VisiblePointPass(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& film,
                      const vk::Buffer& visiblePoints, const vk::Buffer& rasterDirect);
 
-    void record(VkCommandBuffer cmd, const gpu::VisiblePointParams& params) const;
+    // `pixels`: the window of pixels to compute (--tile, --crop), all by default.
+    void record(VkCommandBuffer cmd, const gpu::VisiblePointParams& params, vk::ItemRange pixels = {}) const;
 
 private:
     vk::Kernel<gpu::VisiblePointsKernel> m_kernel;

@@ -87,6 +87,7 @@ void FrameSettings::check() const {
     checkRange("--area-light-samples", areaLightSamples, 0u, 4096u);
     if (cameraIndex < -1) throw InputError(fmt::format("--camera {}: must be at least 0", cameraIndex));
     view.check();
+    if (crop) checkCrop(*crop, width, height);
 }
 
 Camera chooseCamera(const Scene& scene, int index, float aspect, const ViewOverride& view) {
@@ -116,6 +117,7 @@ Frame makeFrame(const Scene& scene, const FrameSettings& settings) {
     frame.maxDepth = settings.maxDepth;
     frame.nextEventEstimation = settings.nextEventEstimation;
     frame.pixelCentres = settings.pixelCentres;
+    frame.crop = settings.crop;
     frame.camera = chooseCamera(scene, settings.cameraIndex, float(settings.width) / float(settings.height), settings.view);
     frame.gpuCamera = makeGpuCamera(frame.camera, settings.width, settings.height);
     return frame;

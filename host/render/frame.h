@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "render/crop_window.h"
 #include "render/render_control.h"
 #include "scene/scene.h"
 #include "shared/gpu_types.glsl"
@@ -50,6 +51,8 @@ struct FrameSettings {
     // When --time-limit starts counting: the command's start (so loading and the photon passes
     // count); unset, the call to Renderer::render.
     std::optional<Clock::time_point> timeLimitFrom;
+    // --crop / --tile: render only this window of the width x height frame (render/crop_window.h).
+    std::optional<CropWindow> crop;
 
     // Throws InputError naming the flag of a value out of range.
     void check() const;
@@ -86,8 +89,11 @@ struct Frame {
     uint32_t rasterFlags = 0;
     bool pixelCentres = false;
     RenderControl control;  // the stop flag and the deadline: long phases check it between chunks
+    std::optional<CropWindow> crop;  // --crop / --tile: the window the camera passes compute
 
     uint64_t pixels() const { return uint64_t(width) * height; }
+    // The pixel indices the camera passes compute: the crop window's rows, else every pixel.
+    vk::ItemRange pixelRange() const { return crop ? cropPixels(*crop, width) : vk::ItemRange{0, pixels()}; }
     // The kPathFlag* bits every camera-path shader takes: raster coverage and pixel centres.
     uint32_t cameraPathFlags() const { return rasterFlags | (pixelCentres ? gpu::kPathFlagPixelCentres : 0u); }
 };

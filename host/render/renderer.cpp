@@ -4,6 +4,7 @@
 
 #include "render/raster_direct.h"
 #include "render/sample_loop.h"
+#include "render/terminations.h"
 #include "util/stopwatch.h"
 #include "vk/compute_kernel.h"
 #include "vk/context.h"
@@ -19,6 +20,7 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     const auto start = Clock::now();
 
     Frame frame = makeFrame(m_scene.scene(), settings);
+    clearTerminations(context);
     frame.control.stop = stop;
     if (settings.timeLimitSeconds > 0.0)
         frame.control.deadline = settings.timeLimitFrom.value_or(start) +
@@ -42,6 +44,7 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     RenderResult result;
     result.image = film.resolve();
     integrator.finish(result.image, loop.samplesDone);
+    if (frame.crop) result.image = cropImage(result.image, *frame.crop);  // --tile, --crop
     const double renderSeconds = secondsSince(start);
 
     Stats& stats = result.stats;
@@ -63,7 +66,7 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     stats.set("timings.bvhSeconds", m_scene.arrays().bvhBuildSeconds);
     stats.set("timings.uploadSeconds", m_scene.uploadSeconds());
     stats.set("timings.renderSeconds", renderSeconds);
-    const uint64_t cameraPaths = frame.pixels() * loop.samplesDone;
+    const uint64_t cameraPaths = uint64_t(result.image.width) * result.image.height * loop.samplesDone;
     stats.set("counters.samplesPerPixel", loop.samplesDone);
     stats.set("counters.cameraPaths", cameraPaths);
     stats.set("counters.nonFiniteSamples", counters.nonFiniteSamples);
@@ -75,6 +78,7 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     stats.set("stopReason", loop.stopReason == "complete" && !preparedFully ? integrator.stoppedEarly().value()
                                                                            : loop.stopReason);
     integrator.report(stats);
+    reportTerminations(readTerminations(context), stats);
     if (counters.nonFiniteSamples > 0)
         stats.warn(fmt::format("{} sample(s) were NaN or infinite and were dropped", counters.nonFiniteSamples));
     return result;

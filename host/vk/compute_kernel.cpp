@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "shared/kernels/terminations.glsl"
 #include "util/errors.h"
 #include "vk/buffer.h"
 #include "vk/check.h"
@@ -18,7 +19,7 @@ ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
     const uint32_t bufferCount = m_interface.bindingCount;
     const uint32_t pushBytes = m_interface.pushBytes;
     const auto code = shaderCode(name);
-    checkKernelInterface(m_interface, code);
+    const bool terminations = checkKernelInterface(m_interface, code).terminationCounters;
     VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     moduleInfo.codeSize = code.size_bytes();
     moduleInfo.pCode = code.data();
@@ -36,11 +37,22 @@ ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
     setInfo.bindingCount = bufferCount;
     setInfo.pBindings = bindings.data();
     check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &m_setLayout), "creating a set layout");
+    std::vector<VkDescriptorSetLayout> setLayouts{m_setLayout};
+    if (terminations) {  // set gpu::kTerminationSet == 1: the context's termination counters
+        static_assert(gpu::kTerminationSet == 1 && gpu::kTerminationBinding == 0);
+        VkDescriptorSetLayoutBinding counters{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+        VkDescriptorSetLayoutCreateInfo countersInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+        countersInfo.bindingCount = 1;
+        countersInfo.pBindings = &counters;
+        check(vkCreateDescriptorSetLayout(device, &countersInfo, nullptr, &m_terminationLayout),
+              "creating a set layout");
+        setLayouts.push_back(m_terminationLayout);
+    }
 
     VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
     VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = 1;
-    layoutInfo.pSetLayouts = &m_setLayout;
+    layoutInfo.setLayoutCount = static_cast<uint32_t>(setLayouts.size());
+    layoutInfo.pSetLayouts = setLayouts.data();
     layoutInfo.pushConstantRangeCount = pushBytes ? 1 : 0;
     layoutInfo.pPushConstantRanges = &range;
     check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &m_pipelineLayout),
@@ -52,12 +64,13 @@ ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
     pipelineInfo.stage.module = m_module;
     pipelineInfo.stage.pName = "main";
     pipelineInfo.layout = m_pipelineLayout;
+    pipelineInfo.flags = VK_PIPELINE_CREATE_DISPATCH_BASE_BIT;  // windows of items (ItemRange)
     check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &m_pipeline),
           fmt::format("creating the compute pipeline {}", name));
 
-    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, std::max(1u, bufferCount)};
+    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, std::max(1u, bufferCount + 1u)};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 1;
+    poolInfo.maxSets = 2;
     poolInfo.poolSizeCount = 1;
     poolInfo.pPoolSizes = &poolSize;
     check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &m_pool), "creating a descriptor pool");
@@ -66,6 +79,18 @@ ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
     allocInfo.descriptorSetCount = 1;
     allocInfo.pSetLayouts = &m_setLayout;
     check(vkAllocateDescriptorSets(device, &allocInfo, &m_set), "allocating a descriptor set");
+    if (terminations) {
+        allocInfo.pSetLayouts = &m_terminationLayout;
+        check(vkAllocateDescriptorSets(device, &allocInfo, &m_terminationSet), "allocating a descriptor set");
+        VkDescriptorBufferInfo info{context.terminationCounters().handle(), 0, VK_WHOLE_SIZE};
+        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        write.dstSet = m_terminationSet;
+        write.dstBinding = gpu::kTerminationBinding;
+        write.descriptorCount = 1;
+        write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        write.pBufferInfo = &info;
+        vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+    }
 }
 
 ComputeKernel::~ComputeKernel() {
@@ -74,6 +99,7 @@ ComputeKernel::~ComputeKernel() {
     vkDestroyPipeline(device, m_pipeline, nullptr);
     vkDestroyPipelineLayout(device, m_pipelineLayout, nullptr);
     vkDestroyDescriptorSetLayout(device, m_setLayout, nullptr);
+    if (m_terminationLayout) vkDestroyDescriptorSetLayout(device, m_terminationLayout, nullptr);
     vkDestroyShaderModule(device, m_module, nullptr);
 }
 
@@ -95,8 +121,8 @@ void ComputeKernel::bind(const std::vector<const Buffer*>& buffers, uint32_t fir
     for (uint32_t i = 0; i < buffers.size(); ++i) bind(first + i, *buffers[i]);
 }
 
-void ComputeKernel::record(VkCommandBuffer cmd, uint32_t groups, const void* push,
-                           uint32_t pushBytes) const {
+void ComputeKernel::record(VkCommandBuffer cmd, uint32_t groups, const void* push, uint32_t pushBytes,
+                           uint32_t firstGroup) const {
     for (uint32_t i = 0; i < m_interface.bindingCount; ++i)
         if (!m_bound[i]) throw RuntimeError(fmt::format("{}: binding {} was never bound", m_interface.shader, i));
     if (pushBytes != m_interface.pushBytes)
@@ -104,8 +130,12 @@ void ComputeKernel::record(VkCommandBuffer cmd, uint32_t groups, const void* pus
                                        pushBytes, m_interface.pushBytes));
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipelineLayout, 0, 1, &m_set, 0, nullptr);
+    if (m_terminationSet)
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipelineLayout, gpu::kTerminationSet, 1,
+                                &m_terminationSet, 0, nullptr);
     if (pushBytes) vkCmdPushConstants(cmd, m_pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes, push);
-    if (groups) vkCmdDispatch(cmd, groups, 1, 1);
+    if (groups && firstGroup) vkCmdDispatchBase(cmd, firstGroup, 0, 0, groups, 1, 1);
+    else if (groups) vkCmdDispatch(cmd, groups, 1, 1);
 }
 
 namespace {

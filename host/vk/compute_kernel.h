@@ -4,6 +4,7 @@
 // submit, no wait. Passes use the typed form, vk::Kernel<K> (kernel.h).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,6 +17,21 @@ namespace vkp::vk {
 
 class Buffer;
 class Context;
+
+// Items first .. first + count - 1 of a dispatch (a window of pixels: --tile, --crop). Recorded
+// as the workgroups that cover them (vkCmdDispatchBase), so gl_GlobalInvocationID is the item's
+// index in the whole range and a kernel computes each item exactly as in a full dispatch; the
+// groups' edges may add a few items before and after, which compute their own values.
+struct ItemRange {
+    uint64_t first = 0;
+    uint64_t count = UINT64_MAX;  // the default: every item
+
+    // This range within `total` items.
+    ItemRange within(uint64_t total) const {
+        const uint64_t begin = std::min(first, total);
+        return {begin, std::min(count, total - begin)};
+    }
+};
 
 class ComputeKernel {
 public:
@@ -30,10 +46,21 @@ public:
     // Points bindings first, first + 1, ... at `buffers`.
     void bind(const std::vector<const Buffer*>& buffers, uint32_t first = 0);
 
-    // Dispatches `groups` 1-D workgroups after pushing `pushBytes` of push constants.
-    void record(VkCommandBuffer cmd, uint32_t groups, const void* push, uint32_t pushBytes) const;
+    // Dispatches `groups` 1-D workgroups, from workgroup `firstGroup` on, after pushing
+    // `pushBytes` of push constants.
+    void record(VkCommandBuffer cmd, uint32_t groups, const void* push, uint32_t pushBytes,
+                uint32_t firstGroup = 0) const;
     template <typename Push> void record(VkCommandBuffer cmd, uint32_t groups, const Push& push) const {
         record(cmd, groups, &push, sizeof(Push));
+    }
+    // Dispatches the workgroups that cover `items` of `total` (one invocation per item).
+    template <typename Push>
+    void record(VkCommandBuffer cmd, ItemRange items, uint64_t total, const Push& push) const {
+        const ItemRange r = items.within(total);
+        const uint64_t firstGroup = r.first / groupSize();
+        const uint64_t endGroup = (r.first + r.count + groupSize() - 1) / groupSize();
+        record(cmd, static_cast<uint32_t>(endGroup - firstGroup), &push, sizeof(Push),
+               static_cast<uint32_t>(firstGroup));
     }
 
     const std::string& name() const { return m_interface.shader; }
@@ -49,6 +76,9 @@ private:
     VkPipeline m_pipeline = VK_NULL_HANDLE;
     VkDescriptorPool m_pool = VK_NULL_HANDLE;
     VkDescriptorSet m_set = VK_NULL_HANDLE;
+    // The shared silent-termination counters (set gpu::kTerminationSet), when the shader declares them.
+    VkDescriptorSetLayout m_terminationLayout = VK_NULL_HANDLE;
+    VkDescriptorSet m_terminationSet = VK_NULL_HANDLE;
 };
 
 // Makes compute-shader writes visible to later compute reads and transfers.

@@ -8,7 +8,10 @@
 #include <fmt/format.h>
 
 #include "util/errors.h"
+#include "shared/kernels/terminations.glsl"
+#include "vk/buffer.h"
 #include "vk/check.h"
+#include "vk/compute_kernel.h"
 
 namespace vkp::vk {
 namespace {
@@ -150,6 +153,7 @@ Context::Context(const ContextOptions& options)
         createInstance(options.synchronizationValidation);
         pickPhysicalDevice(options.device);
         createDevice();
+        createTerminationCounters();
     } catch (...) {
         destroy();
         throw;
@@ -158,9 +162,19 @@ Context::Context(const ContextOptions& options)
 
 Context::~Context() { destroy(); }
 
+void Context::createTerminationCounters() {
+    m_terminationCounters = std::make_unique<Buffer>(*this, "termination counters",
+                                                     gpu::kTerminationCounterCount * sizeof(uint32_t), kStorageUsage);
+    submitAndWait([&](VkCommandBuffer cmd) {
+        m_terminationCounters->fillZero(cmd);
+        transferToComputeBarrier(cmd);
+    });
+}
+
 void Context::destroy() {
     if (m_device) {
         vkDeviceWaitIdle(m_device);
+        m_terminationCounters.reset();
         if (m_fence) vkDestroyFence(m_device, m_fence, nullptr);
         if (m_commandPool) vkDestroyCommandPool(m_device, m_commandPool, nullptr);
         vkDestroyDevice(m_device, nullptr);

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -12,6 +13,8 @@
 #include <vulkan/vulkan.h>
 
 namespace vkp::vk {
+
+class Buffer;
 
 struct ContextOptions {
     bool validate = false;      // enable VK_LAYER_KHRONOS_validation; every message is an error
@@ -38,6 +41,9 @@ public:
     Context& operator=(const Context&) = delete;
 
     VkInstance instance() const { return m_instance; }
+    // The silent-termination counters every kernel that declares them shares (set
+    // gpu::kTerminationSet; shaders/shared/kernels/terminations.glsl), created zero with the device.
+    const Buffer& terminationCounters() const { return *m_terminationCounters; }
     VkPhysicalDevice physicalDevice() const { return m_physicalDevice; }
     VkDevice device() const { return m_device; }
     VkQueue queue() const { return m_queue; }
@@ -71,6 +77,7 @@ private:
     void createInstance(bool synchronizationValidation);
     void pickPhysicalDevice(const std::string& request);
     void createDevice();
+    void createTerminationCounters();
 
     bool m_validate = false;
     bool m_depthClamp = false;
@@ -86,6 +93,7 @@ private:
     VkQueue m_queue = VK_NULL_HANDLE;
     VkCommandPool m_commandPool = VK_NULL_HANDLE;
     VkFence m_fence = VK_NULL_HANDLE;
+    std::unique_ptr<Buffer> m_terminationCounters;
 
     mutable std::atomic<size_t> m_messageCount{0};
     mutable std::mutex m_messagesMutex;

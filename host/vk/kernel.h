@@ -27,6 +27,10 @@ public:
     void record(VkCommandBuffer cmd, uint64_t items, const Push& push) const {
         m_kernel.record(cmd, groupCount(items, K::kGroupSize), &push, sizeof(Push));
     }
+    // Records the items of `range` among `total` (a window of pixels; see ItemRange).
+    void record(VkCommandBuffer cmd, ItemRange range, uint64_t total, const Push& push) const {
+        m_kernel.record(cmd, range, total, push);
+    }
 
 private:
     ComputeKernel m_kernel;

@@ -7,6 +7,7 @@
 #include <fmt/ranges.h>
 #include <spirv_cross_c.h>
 
+#include "shared/kernels/terminations.glsl"
 #include "util/errors.h"
 
 namespace vkp::vk {
@@ -78,6 +79,8 @@ ShaderInterface reflectComputeShader(std::string_view name, std::span<const uint
         const unsigned binding = spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationBinding);
         if (set == 0)
             out.storageBufferBindings.push_back(binding);
+        else if (set == gpu::kTerminationSet && binding == gpu::kTerminationBinding)
+            out.terminationCounters = true;
         else
             out.unbindable.push_back(fmt::format("a storage buffer '{}' in set {} (binding {})", list[i].name, set, binding));
     }
@@ -122,10 +125,12 @@ std::vector<std::string> interfaceMismatches(const KernelInterface& host, const 
     return out;
 }
 
-void checkKernelInterface(const KernelInterface& host, std::span<const uint32_t> spirv) {
-    const std::vector<std::string> mismatches = interfaceMismatches(host, reflectComputeShader(host.shader, spirv));
+ShaderInterface checkKernelInterface(const KernelInterface& host, std::span<const uint32_t> spirv) {
+    ShaderInterface shader = reflectComputeShader(host.shader, spirv);
+    const std::vector<std::string> mismatches = interfaceMismatches(host, shader);
     if (!mismatches.empty())
         throw RuntimeError(fmt::format("{}: {}", host.shader, fmt::join(mismatches, "; ")));
+    return shader;
 }
 
 }  // namespace vkp::vk

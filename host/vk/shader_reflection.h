@@ -23,6 +23,9 @@ struct ShaderInterface {
     std::vector<std::string> unbindable;          // resources a kernel cannot bind, described
     uint32_t pushConstantBytes = 0;               // declared size of the push-constant block; 0: none
     std::array<uint32_t, 3> localSize{};          // LocalSize (or LocalSizeId, evaluated)
+    // Declares the shared silent-termination counters (set gpu::kTerminationSet, binding
+    // gpu::kTerminationBinding), which vk::ComputeKernel binds to the context's buffer itself.
+    bool terminationCounters = false;
 };
 
 // Reflects `spirv` (a compute shader); throws RuntimeError naming `name` if it cannot be parsed.
@@ -33,7 +36,7 @@ ShaderInterface reflectComputeShader(std::string_view name, std::span<const uint
 std::vector<std::string> interfaceMismatches(const KernelInterface& host, const ShaderInterface& shader);
 
 // Throws RuntimeError "<shader>: <difference>; <difference>" when the SPIR-V `spirv` of
-// host.shader does not declare exactly what `host` says.
-void checkKernelInterface(const KernelInterface& host, std::span<const uint32_t> spirv);
+// host.shader does not declare exactly what `host` says; else returns what it declares.
+ShaderInterface checkKernelInterface(const KernelInterface& host, std::span<const uint32_t> spirv);
 
 }  // namespace vkp::vk

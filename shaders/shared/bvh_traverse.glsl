@@ -12,13 +12,17 @@
 // Ordered depth-first traversal with a per-invocation stack: at an inner node both child boxes
 // are tested, the nearer is visited next and the farther pushed with its entry distance, which is
 // re-checked against the closest hit so far when popped. The stack holds at most depth - 1
-// entries; the host build never makes a tree deeper than kBvhMaxDepth.
+// entries; the host build never makes a tree deeper than kBvhMaxDepth. A deeper tree overflows it:
+// the farther child is then skipped and kTerminationStackOverflow noted; a walk that ends any
+// other way than by running out of subtrees (lavapipe's loop budget, kBvhMaxSteps) notes that too
+// (shared/terminations.glsl), so the kernel can count the rays cut short.
 #ifndef VKP_BVH_TRAVERSE_GLSL
 #define VKP_BVH_TRAVERSE_GLSL
 #include "compat.glsl"
 #include "gpu_types.glsl"
 #include "intersect.glsl"
 #include "bvh_constants.glsl"
+#include "terminations.glsl"
 #ifdef __cplusplus
 #include <span>
 #endif
@@ -69,7 +73,9 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool an
     uint stackNode[kBvhMaxDepth];
     float stackEntry[kBvhMaxDepth];
     uint sp = 0u;
-    while (true) {
+    bool finished = false;
+    uint step = 0u;
+    for (; step < kBvhMaxSteps; ++step) {
         if (node.count > 0u) {
             uint end = node.leftOrFirst + node.count;
             for (uint i = node.leftOrFirst; i < end; ++i) {
@@ -98,9 +104,13 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool an
                 // Near child first (occluders near the origin are the common case for shadow rays
                 // too); on equal entry distances the left one (deterministic).
                 bool rightFirst = entryRight < entryLeft;
-                stackNode[sp] = rightFirst ? left : left + 1u;
-                stackEntry[sp] = rightFirst ? entryLeft : entryRight;
-                ++sp;
+                if (sp < kBvhMaxDepth) {
+                    stackNode[sp] = rightFirst ? left : left + 1u;
+                    stackEntry[sp] = rightFirst ? entryLeft : entryRight;
+                    ++sp;
+                } else {
+                    noteTermination(kTerminationStackOverflow);
+                }
                 node = rightFirst ? rightNode : leftNode;
                 continue;
             }
@@ -119,8 +129,13 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool an
                 popped = true;
             }
         }
-        if (!popped) break;
+        if (!popped) {
+            finished = true;
+            break;
+        }
     }
+    // Left without finding the stack empty: cut by lavapipe's budget, or by kBvhMaxSteps.
+    if (!finished) noteTermination(step >= kBvhMaxSteps ? kTerminationLoopBound : kTerminationLoopLimit);
     return tri != kBvhNoTriangle;
 }
 

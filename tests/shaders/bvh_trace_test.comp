@@ -9,6 +9,7 @@
 //   binding 3  TestHit { float t; uint tri; float b1; float b2; uint anyHit; }         20 B
 //              miss: t = tMax, tri = 0xffffffff (kBvhNoTriangle), b1 = b2 = 0
 //   push constant: uint rayCount
+//   set 1: the termination counters (a ray whose traversal was cut short counts as a sample)
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -38,6 +39,7 @@ layout(std430, set = 0, binding = kBvhTestHitBinding) writeonly buffer Hits { Te
 layout(push_constant) uniform Push { uint rayCount; } push;
 
 #include "shared/bvh_traverse.glsl"
+#include "termination_counters.glsl"
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
@@ -50,4 +52,5 @@ void main() {
     traceClosest(org, dir, tMax, h.t, h.tri, h.b1, h.b2);
     h.anyHit = traceAny(org, dir, tMax) ? 1u : 0u;
     hits[i] = h;
+    countTerminations(kTerminationSamples);  // a ray cut short counts as one sample
 }

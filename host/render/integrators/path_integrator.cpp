@@ -19,7 +19,7 @@ PathSampleRecorder::PathSampleRecorder(const GpuScene& scene, const Frame& frame
                                        uint32_t samplesPerDispatch, uint32_t extraFlags, const std::string& shader,
                                        const std::vector<const vk::Buffer*>& guide)
     : m_pass(scene.context(), scene.buffers(), film.sums(), film.counters(), *frame.rasterDirect, shader, guide),
-      m_samplesPerDispatch(samplesPerDispatch) {
+      m_samplesPerDispatch(samplesPerDispatch), m_pixels(frame.pixelRange()) {
     m_params.camera = frame.gpuCamera;
     m_params.width = frame.width;
     m_params.height = frame.height;
@@ -34,8 +34,8 @@ void PathSampleRecorder::record(VkCommandBuffer cmd, uint32_t first, uint32_t co
     for (uint32_t done = 0; done < count; done += m_samplesPerDispatch) {
         m_params.firstSample = first + done;
         m_params.sampleCount = std::min(m_samplesPerDispatch, count - done);
-        if (guide) m_pass.record(cmd, m_params, *guide);
-        else m_pass.record(cmd, m_params);
+        if (guide) m_pass.record(cmd, m_params, *guide, m_pixels);
+        else m_pass.record(cmd, m_params, m_pixels);
         vk::computeBarrier(cmd);
     }
 }

@@ -29,6 +29,7 @@ private:
     PathTracePass m_pass;
     gpu::PathTraceParams m_params{};
     uint32_t m_samplesPerDispatch;
+    vk::ItemRange m_pixels;  // the frame's window (--tile, --crop)
 };
 
 class PathIntegrator : public Integrator {

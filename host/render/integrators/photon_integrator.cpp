@@ -141,6 +141,7 @@ void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
     const PhotonIntegratorSettings& p = m_settings;
     vk::Context& context = m_scene.context();
     m_stats = Stats();
+    m_window = frame.pixelRange();
     buildMaps(frame);
     const float globalRadius = kGlobalRadiusFactor * m_globalCellSize;
     const PhotonGrid& gatherGrid = m_radiancePhotons ? m_radiancePhotons->grid() : m_globalMap->grid();
@@ -183,17 +184,17 @@ void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
 void PhotonIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) {
     for (uint32_t sample = first; sample < first + count; ++sample) {
         m_visibleParams.sampleIndex = sample;
-        m_visiblePass->record(cmd, m_visibleParams);
+        m_visiblePass->record(cmd, m_visibleParams, m_window);
         vk::computeBarrier(cmd);
         if (m_causticPass) {
-            m_causticPass->record(cmd, m_causticParams);
+            m_causticPass->record(cmd, m_causticParams, m_window);
             vk::computeBarrier(cmd);
         }
         // One dispatch per gather ray keeps each invocation's loops within lavapipe's limit.
         m_gatherParams.sampleIndex = sample;
         for (uint32_t ray = 0; ray < std::max(1u, m_settings.gatherRays); ++ray) {
             m_gatherParams.rayIndex = ray;
-            m_gatherPass->record(cmd, m_gatherParams);
+            m_gatherPass->record(cmd, m_gatherParams, m_window);
             vk::computeBarrier(cmd);
         }
     }

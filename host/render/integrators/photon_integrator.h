@@ -56,6 +56,7 @@ private:
     gpu::FinalGatherParams m_gatherParams{};
     float m_globalCellSize = 0.0f;
     std::string m_stopReason;  // a photon pass stopped early (render/render_control.h)
+    vk::ItemRange m_window;    // the pixels the camera passes compute (--tile, --crop)
 };
 
 // The visible-point pass's parameters for a frame (shared with the progressive integrator).

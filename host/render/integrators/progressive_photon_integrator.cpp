@@ -21,6 +21,7 @@ void ProgressivePhotonIntegrator::prepare(const Frame& frame, const Film& film) 
     vk::Context& context = m_scene.context();
     m_stats = Stats();
     m_pixels = frame.pixels();
+    m_window = frame.pixelRange();
 
     // One map of every non-direct photon (caustic and global alike), rebuilt each pass; radii only
     // shrink, so cells of twice the initial radius serve every pass.
@@ -68,9 +69,9 @@ void ProgressivePhotonIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t fi
     (void)count;
     m_visibleParams.sampleIndex = first;
     vk::computeBarrier(cmd);
-    m_visiblePass->record(cmd, m_visibleParams);
+    m_visiblePass->record(cmd, m_visibleParams, m_window);
     vk::computeBarrier(cmd);
-    m_updatePass->record(cmd, m_sppmParams);
+    m_updatePass->record(cmd, m_sppmParams, m_window);
 }
 
 // Direct light (the film's mean) plus tau / (passes pi R^2).

@@ -50,6 +50,7 @@ private:
     gpu::VisiblePointParams m_visibleParams{};
     gpu::SppmParams m_sppmParams{};
     std::string m_stopReason;  // a photon pass stopped early (render/render_control.h)
+    vk::ItemRange m_window;    // the pixels the camera passes compute (--tile, --crop)
 };
 
 }  // namespace vkp

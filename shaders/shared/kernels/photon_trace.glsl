@@ -19,6 +19,9 @@ const uint kPhotonCounterAbsorbed = 3u;        // paths ended by Russian roulett
 const uint kPhotonCounterLost = 4u;            // paths that left the scene
 const uint kPhotonCounterTruncated = 5u;       // paths that reached maxDeposits stored photons
 const uint kPhotonCounterCount = 8u;
+// Bounces a photon path takes at most; a path still going then is counted as truncated and as a
+// silent termination (shared/kernels/terminations.glsl).
+const uint kPhotonMaxBounces = 64u;
 
 SHARED_END
 
