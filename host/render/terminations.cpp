@@ -24,7 +24,7 @@ struct Named {
 constexpr std::array<Named, gpu::kTerminationKindCount> kKinds{{
     {"stackOverflow", "the BVH traversal stack overflowed (subtrees skipped)"},
     {"loopLimit", "a loop ended early (lavapipe's 65535-iteration loop budget)"},
-    {"loopBound", "a loop reached its iteration bound"},
+    {"loopBound", "a loop reached its own bound (64 bounces of a photon path, 2^22 nodes of one traversal)"},
 }};
 constexpr std::array<Named, gpu::kTerminationSubjectCount> kSubjects{{
     {"samples", "camera sample(s)"},
