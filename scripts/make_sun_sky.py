@@ -23,9 +23,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("out")
     parser.add_argument("--width", type=int, default=512)
-    parser.add_argument("--sun-azimuth", type=float, default=60.0, help="degrees from +X towards +Z")
-    parser.add_argument("--sun-elevation", type=float, default=35.0, help="degrees above the horizon")
-    parser.add_argument("--sun-radiance", type=float, default=20000.0)
+    parser.add_argument("--sun-azimuth", type=float, default=230.0, help="degrees from +X towards +Z")
+    parser.add_argument("--sun-elevation", type=float, default=40.0, help="degrees above the horizon")
+    parser.add_argument("--sun-radiance", type=float, default=5000.0)
     parser.add_argument("--sun-radius", type=float, default=1.5, help="degrees")
     args = parser.parse_args()
     width, height = args.width, args.width // 2

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <random>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <stb/stb_image_write.h>
 
@@ -90,7 +91,7 @@ TEST(EnvironmentMapping, BlenderAxesInGltf) {
 
 TEST(EnvironmentMapping, RotationTurnsTheMapAboutY) {
     // A sun in the centre column at the horizon faces +X; turned by 90 degrees it faces -Z.
-    Environment env = sunAndSky(64, 32, 31, 15, 1000.0f);
+    Environment env = sunAndSky(64, 32, 31, 15, 10000.0f);
     const std::vector<float> data = environmentGpuData(env);
     EnvironmentMap map = mapOf(env);
     const float* envData = data.data();
@@ -106,9 +107,9 @@ TEST(EnvironmentMapping, RotationTurnsTheMapAboutY) {
         glm::vec3 radiance;
         float pdf;
         const glm::vec3 w = gpu::environmentMapSample(envData, map, glm::vec2(uniform(rng), uniform(rng)), radiance, pdf);
-        if (w.z < -0.99f) ++towardsSun;
+        if (w.z < -0.95f) ++towardsSun;  // the sun's 2x2 pixels span 11 degrees
     }
-    EXPECT_GT(towardsSun, 900);
+    EXPECT_GT(towardsSun, 950);  // the sun has 98.7 % of the map's luminance x sin(theta)
 }
 
 TEST(EnvironmentSampling, MapSamplingMatchesItsPdf) {
@@ -256,6 +257,8 @@ TEST(EnvironmentMaps, HostileMapsAreRefused) {
     expectRefused(dir / "negative.exr", "finite");
     // Memory: a map within the pixel limit but not within the memory allowed.
     writeHdr(dir / "small.hdr", 8, 4, std::vector<float>(8 * 4 * 3, 1.0f));
+    writeHdr(dir / "black.hdr", 8, 4, std::vector<float>(8 * 4 * 3, 0.0f));
+    expectRefused(dir / "black.hdr", "black");
     EnvironmentLimits tight;
     tight.maxMemoryBytes = 1000;
     expectRefused(dir / "small.hdr", "memory", tight);
@@ -403,30 +406,35 @@ TEST_F(EnvironmentRender, SunAndSkyLightsAPlaneToTheMapsIrradiance) {
 }
 
 TEST_F(EnvironmentRender, PhotonIntegratorAgreesWithThePathTracerUnderASunAndSky) {
-    // Glass, chrome and clay spheres on a ground square lit only by the shipped sun-and-sky map: the
-    // photon integrator's environment photons (caustic from the sun through the glass included)
-    // against the path tracer.
+    // Glass, chrome and clay spheres on a ground square lit only by a sun-and-sky map whose sun
+    // (11 degrees across, so that the path tracer's caustic converges in a test's time) stands
+    // behind them at azimuth 230 degrees, elevation 40: the photon integrator's environment
+    // photons, the sun's caustic through the glass in front of it included, against the path tracer.
     Scene scene = test::shippedScene("spheres-outdoor");
-    std::string note;
-    EnvironmentSettings settings;
-    settings.value = std::string(VKPHOTON_SCENES) + "/sun-sky.hdr";
-    applyEnvironment(scene, settings, note);
+    scene.environment = sunAndSky(64, 32, 8, 8, 200.0f);
     Renderer renderer(test::gpu(), scene);
-    const ImageRgb reference = renderer.render<PathIntegrator>(frame(32, 256, 1)).image;
+    const ImageRgb reference = renderer.render<PathIntegrator>(frame(32, 1024, 1)).image;
     PhotonIntegratorSettings photon;
-    photon.globalPaths = 100000;
-    photon.causticPaths = 200000;
-    const ImageRgb image = renderer.render<PhotonIntegrator>(frame(32, 16, 2), photon).image;
-    EXPECT_NEAR(mean(image), mean(reference), 0.05 * mean(reference));
-    // Without environment photons the estimate would lack the sun's caustic and the ground's
-    // indirect light: the brightest ground pixels below the glass sphere agree too.
-    double pathMax = 0.0, photonMax = 0.0;
-    for (uint32_t y = reference.height / 2; y < reference.height; ++y)
-        for (uint32_t x = 0; x < reference.width; ++x) {
-            pathMax = std::max(pathMax, double(reference.at(x, y)[1]));
-            photonMax = std::max(photonMax, double(image.at(x, y)[1]));
+    const ImageRgb image = renderer.render<PhotonIntegrator>(frame(32, 64, 2), photon).image;
+    EXPECT_NEAR(mean(image), mean(reference), 0.03 * mean(reference));
+    // Region by region (8 x 8 pixel blocks): the sun's caustic and the ground's indirect light come
+    // from environment photons; without them the shadowed blocks would be far darker. (64 camera
+    // samples: the sun seen through the glass sphere is a small bright spot.)
+    double worst = 0.0;
+    std::string blocks;
+    for (uint32_t by = 0; by < 4; ++by)
+        for (uint32_t bx = 0; bx < 4; ++bx) {
+            double a = 0.0, b = 0.0;
+            for (uint32_t y = 8 * by; y < 8 * by + 8; ++y)
+                for (uint32_t x = 8 * bx; x < 8 * bx + 8; ++x)
+                    for (int c = 0; c < 3; ++c) {
+                        a += image.at(x, y)[c];
+                        b += reference.at(x, y)[c];
+                    }
+            worst = std::max(worst, std::abs(a - b) / b);
+            blocks += fmt::format("{:6.3f}/{:6.3f}{}", a / 192.0, b / 192.0, bx == 3 ? "\n" : " ");
         }
-    EXPECT_GT(photonMax, 0.3 * pathMax);
+    EXPECT_LT(worst, 0.1) << "photon/path per block:\n" << blocks;
 }
 
 TEST_F(EnvironmentRender, AovsOfAPlaneAreItsAlbedoNormalAndDistance) {
@@ -438,7 +446,7 @@ TEST_F(EnvironmentRender, AovsOfAPlaneAreItsAlbedoNormalAndDistance) {
     const AovImages aov = renderAovs(renderer.gpuScene(), makeFrame(scene, s));
     // The camera at height 3 looks straight down (0.3 rad field of view: every pixel sees the plane).
     for (size_t i = 0; i < aov.depth.size(); ++i) {
-        EXPECT_NEAR(aov.depth[i], 3.0f, 1e-3f) << i;
+        EXPECT_NEAR(aov.depth[i], 3.0f, 3e-3f) << i;
         EXPECT_NEAR(aov.albedo.pixels[3 * i], 0.5f, 1e-5f);
         EXPECT_NEAR(aov.normal.pixels[3 * i + 1], 1.0f, 1e-5f);
     }

@@ -53,6 +53,14 @@ Environment readHdr(const std::filesystem::path& path, const EnvironmentLimits& 
     if (!stbi_is_hdr(path.c_str()))
         throw InputError(fmt::format("--env {}: not a Radiance .hdr image (no #?RADIANCE header)", path.string()));
     checkSize(path, width, height, limits);
+    // stb_image fills a truncated file's missing pixels silently: the smallest valid encoding
+    // (run-length scanlines, 2 bytes per run of up to 127 pixels per channel) must fit.
+    std::error_code ec;
+    const uint64_t bytes = std::filesystem::file_size(path, ec);
+    const uint64_t runs = (uint64_t(width) + 126) / 127;
+    if (ec || bytes < uint64_t(height) * (4 + 4 * 2 * runs))
+        throw InputError(fmt::format("--env {}: cannot decode (the file is truncated: {} bytes for {}x{} pixels)",
+                                     path.string(), ec ? 0 : bytes, width, height));
     std::unique_ptr<float, void (*)(void*)> pixels(stbi_loadf(path.c_str(), &width, &height, &components, 3),
                                                    stbi_image_free);
     if (!pixels) throw InputError(fmt::format("--env {}: cannot decode ({})", path.string(), stbi_failure_reason()));
@@ -134,6 +142,9 @@ Environment loadEnvironmentMap(const std::filesystem::path& path, const Environm
         if (!std::isfinite(env.rgb[i]) || env.rgb[i] < 0.0f)
             throw InputError(fmt::format("--env {}: pixel ({}, {}) is {}: a map's radiance must be finite and >= 0",
                                          path.string(), (i / 3) % env.width, (i / 3) / env.width, env.rgb[i]));
+    bool black = true;
+    for (float v : env.rgb) black = black && v == 0.0f;
+    if (black) throw InputError(fmt::format("--env {}: every pixel is black: the map gives no light", path.string()));
     env.present = true;
     env.source = path.string();
     return env;
