@@ -680,10 +680,26 @@ TEST(CliEnvironment, SceneWithoutLightsRendersUnderAWhiteSkyUnlessEnvZero) {
     EXPECT_EQ(r.exitCode, 0) << r.output;
 }
 
+TEST(CliEnvironment, AovsAreExrChannels) {
+    const fs::path dir = tempDir("aov");
+    const fs::path exr = dir / "a.exr";
+    RunResult r = runVkphoton("render " + kBox + " --spp 1 --width 8 --height 8 --quiet --aov albedo,normal,depth -o " +
+                              exr.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::vector<std::string> names = exrChannelNames(exr);
+    for (const char* name : {"R", "G", "B", "Albedo.R", "Albedo.G", "Albedo.B", "N.X", "N.Y", "N.Z", "Z"})
+        EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+    for (float z : readExrChannel(exr, "Z")) EXPECT_TRUE(z > 0.0f && z < 10.0f) << z;  // inside the 5 m box
+    for (float a : readExrChannel(exr, "Albedo.G")) EXPECT_TRUE(a >= 0.0f && a <= 1.0f) << a;
+    r = runVkphoton("render " + kBox + " --spp 1 --width 8 --height 8 --aov albedo,colour -o " + exr.string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--aov"), std::string::npos) << r.output;
+}
+
 TEST(CliEnvironment, BadMapsExitWithTwo) {
     const fs::path dir = tempDir("env-bad");
     std::ofstream(dir / "bad.hdr") << "not an image";
-    for (const std::string env : {(dir / "missing.hdr").string(), (dir / "bad.hdr").string(), std::string("1,2"),
+    for (const std::string& env : {(dir / "missing.hdr").string(), (dir / "bad.hdr").string(), std::string("1,2"),
                                   std::string("-1"), std::string("nan")}) {
         const RunResult r = runVkphoton("render " + kTriangle + " --spp 1 --width 4 --height 4 --env " + env + " -o " +
                                         (dir / "x.exr").string());
