@@ -367,6 +367,26 @@ def door_slit(path):
     b.write(path)
 
 
+def spheres_outdoor(path):
+    """Three spheres on a ground square and no lights: a scene for environments (--env, docs/environment.md)."""
+    b = GltfBuilder()
+    ground = b.material("ground", (0.5, 0.5, 0.5))
+    quad(b, "ground", [(-3, 0, 3), (3, 0, 3), (3, 0, -3), (-3, 0, -3)], ground)
+    glass = b.material("glass", (1.0, 1.0, 1.0), metallic=0.0, roughness=0.0, extensions={
+        "KHR_materials_transmission": {"transmissionFactor": 1.0},
+        "KHR_materials_ior": {"ior": 1.5},
+        "KHR_materials_volume": {"thicknessFactor": 1.0},
+    })
+    sphere_mesh(b, "glass-sphere", (0.0, 0.5, 0.0), 0.5, glass)
+    chrome = b.material("chrome", (0.95, 0.95, 0.95), metallic=1.0, roughness=0.05)
+    sphere_mesh(b, "metal-sphere", (-1.2, 0.5, -0.6), 0.5, chrome)
+    clay = b.material("clay", (0.7, 0.25, 0.15), metallic=0.0, roughness=0.6)
+    sphere_mesh(b, "diffuse-sphere", (1.2, 0.5, -0.6), 0.5, clay)
+    eye = (2.2, 1.6, 3.4)
+    b.camera(eye, yfov=math.radians(40), aspect=4 / 3, rotation=look_at_rotation(eye, (0.0, 0.4, -0.3)))
+    b.write(path)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "..", "scenes"))
@@ -377,6 +397,7 @@ def main():
     cornell_glass(os.path.join(args.out, "cornell-glass.gltf"))
     rooms_10x10(os.path.join(args.out, "rooms-10x10.gltf"))
     door_slit(os.path.join(args.out, "door-slit.gltf"))
+    spheres_outdoor(os.path.join(args.out, "spheres-outdoor.gltf"))
 
 
 if __name__ == "__main__":

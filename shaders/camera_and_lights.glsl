@@ -38,4 +38,14 @@ float emissionMisWeight(PathVertex v, vec3 dir, float bsdfPdf) {
     return powerHeuristic(bsdfPdf, lightPdf);
 }
 
+// Environment light arriving along a camera-path ray that left the scene along dir: in full
+// behind the camera and delta bounces (`mis` false), else weighted by the power heuristic against
+// next-event estimation of the environment (bsdfPdf: the solid-angle pdf of the escaping ray).
+vec3 escapedRadiance(uint lightCount, vec3 dir, bool mis, float bsdfPdf) {
+    int index = environmentLightIndex(lightCount);
+    if (index < 0) return vec3(0.0f);
+    vec3 le = environmentRadiance(lights[index], dir);
+    return mis ? le * environmentMisWeight(lightCount, dir, bsdfPdf) : le;
+}
+
 #endif

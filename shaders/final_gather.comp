@@ -43,6 +43,8 @@ vec3 gatherRay(GpuVisiblePoint vp, VisibleSurface s, inout Sampler rng) {
     Ray ray = rayFrom(offsetRayOrigin(vp.position, decodeOctahedral(vp.geometricNormal), dir), dir);
     for (uint depth = 0u; depth <= params.maxSpecularDepth; ++depth) {
         PathVertex v;
+        // Escaped: environment light here is direct light (next-event estimation's at the visible
+        // point) or, behind delta bounces, the caustic map's.
         if (!traceVertex(ray, v)) return vec3(0.0f);
         weight *= v.transmittance;
         if (storesPhotons(v.bsdf)) {

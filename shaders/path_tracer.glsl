@@ -147,7 +147,11 @@ vec3 rouletteReflectance(BsdfParams bsdf, vec3 wo) {
 bool extendPath(inout PathState st) {
     bool useNee = (params.flags & kPathFlagNoDirectLightSampling) == 0u;
     PathVertex v;
-    if (!traceVertex(st.ray, v)) return false;
+    if (!traceVertex(st.ray, v)) {
+        // Escaped: the environment light (none when the scene has no environment).
+        st.radiance += st.throughput * escapedRadiance(params.lightCount, st.ray.dir, useNee && !st.lastDelta, st.lastPdf);
+        return false;
+    }
     st.throughput *= v.transmittance;
 
     if (emitsTowards(v.material, v.hit.frontFace)) {

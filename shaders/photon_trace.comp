@@ -67,6 +67,23 @@ EmittedPhoton emitPhoton(uint index, vec2 uPosition, vec2 uDirection, float uSid
         e.flux = emittedRadiance(m, uv) * (kPi * area * sides) / light.selectPdf;
         return e;
     }
+    if (light.type == kLightEnvironment) {
+        // A direction towards the environment from its distribution (sampleEnvironment), then a
+        // point on a disk of the scene's bounding radius perpendicular to it, outside the scene:
+        // Le cos / (pdf(w) * 1 / (pi r^2)) with the disk facing the photon (cos = 1).
+        vec3 radiance;
+        float pdf;
+        vec3 w = sampleEnvironment(light, uDirection, radiance, pdf);
+        vec3 tangent;
+        vec3 bitangent;
+        orthonormalBasis(-w, tangent, bitangent);
+        float r = params.sceneRadius * sqrt(uPosition.x);
+        float phi = kTwoPi * uPosition.y;
+        e.origin = params.sceneCenter + w * (2.0f * params.sceneRadius) + r * (cos(phi) * tangent + sin(phi) * bitangent);
+        e.dir = -w;
+        e.flux = pdf > 0.0f ? radiance * (kPi * params.sceneRadius * params.sceneRadius) / (pdf * light.selectPdf) : vec3(0.0f);
+        return e;
+    }
     if (light.type == kLightDirectional) {
         // A disk of the scene's bounding radius perpendicular to the light, outside the scene.
         vec3 tangent;

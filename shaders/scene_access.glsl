@@ -23,6 +23,10 @@ layout(std430, set = 0, binding = kSceneTexelsBinding) readonly buffer Texels { 
 #include "shared/intersect.glsl"
 #include "shared/bvh_traverse.glsl"
 
+// The environment map's floats live in the texel buffer after the textures' texels.
+#define ENV_FLOAT(i) uintBitsToFloat(texels[(i)])
+#include "shared/environment.glsl"
+
 // Distance by which rays leave a surface at p, scaled by p's magnitude (float spacing grows
 // with it).
 float rayEpsilon(vec3 p) {
@@ -168,8 +172,65 @@ LightSample punctualLightSample(GpuLight light, vec3 x) {
     return ls;
 }
 
+// The environment light, when the scene has one: always the last of the `lightCount` lights.
+int environmentLightIndex(uint lightCount) {
+    return lightCount > 0u && lights[lightCount - 1u].type == kLightEnvironment ? int(lightCount - 1u) : -1;
+}
+
+EnvironmentMap environmentMapOf(GpuLight light) {
+    EnvironmentMap map;
+    map.offset = light.envOffset;
+    map.width = light.envWidth;
+    map.height = light.envHeight;
+    map.rotation = light.envRotation;
+    return map;
+}
+
+// Radiance arriving from world direction d (unit) from the environment light.
+vec3 environmentRadiance(GpuLight light, vec3 d) {
+    if (light.envWidth == 0u) return light.intensity;
+    return environmentMapRadiance(environmentMapOf(light), d);
+}
+
+// Solid-angle pdf with which sampleEnvironment returns d (without the light's selection).
+float environmentPdf(GpuLight light, vec3 d) {
+    if (light.envWidth == 0u || (light.envFlags & kEnvironmentSampleUniform) != 0u) return 1.0f / (4.0f * kPi);
+    return environmentMapPdf(environmentMapOf(light), d);
+}
+
+// A direction towards the environment: uniform on the sphere for a constant (or with
+// kEnvironmentSampleUniform), else drawn from the map's luminance x sin(theta) distribution. pdf in solid angle, without the selection.
+vec3 sampleEnvironment(GpuLight light, vec2 u, out vec3 radiance, out float pdf) {
+    if (light.envWidth == 0u || (light.envFlags & kEnvironmentSampleUniform) != 0u) {
+        vec3 w = sampleUniformSphere(u);
+        radiance = environmentRadiance(light, w);
+        pdf = 1.0f / (4.0f * kPi);
+        return w;
+    }
+    return environmentMapSample(environmentMapOf(light), u, radiance, pdf);
+}
+
+// MIS weight (power heuristic) of environment light that a BSDF-sampled ray with solid-angle pdf
+// bsdfPdf found escaping along dir, against next-event estimation of the environment.
+float environmentMisWeight(uint lightCount, vec3 dir, float bsdfPdf) {
+    int index = environmentLightIndex(lightCount);
+    if (index < 0) return 1.0f;
+    GpuLight light = lights[index];
+    return powerHeuristic(bsdfPdf, light.selectPdf * environmentPdf(light, dir));
+}
+
 LightSample sampleLight(uint index, vec3 x, vec2 u) {
     GpuLight light = lights[index];
+    if (light.type == kLightEnvironment) {
+        LightSample ls;
+        ls.delta = false;
+        ls.distance = kInfinity;
+        ls.position = vec3(0.0f);
+        float pdf;
+        ls.wi = sampleEnvironment(light, u, ls.radiance, pdf);
+        ls.pdf = light.selectPdf * pdf;
+        return ls;
+    }
     if (light.type != kLightTriangle) {
         LightSample ls = punctualLightSample(light, x);
         ls.pdf = light.selectPdf;

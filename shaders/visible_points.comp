@@ -57,7 +57,11 @@ void findVisiblePoint() {
 
     for (uint depth = 0u; depth <= params.maxSpecularDepth; ++depth) {
         PathVertex v;
-        if (!traceVertex(ray, v)) break;
+        if (!traceVertex(ray, v)) {
+            // The environment, weighted like emission against a polished-metal vertex's estimate.
+            radiance += throughput * escapedRadiance(params.lightCount, ray.dir, !lastDelta, lastPdf);
+            break;
+        }
         throughput *= v.transmittance;
         // Emission behind delta bounces counts in full; behind a polished-metal bounce it is
         // weighted against that vertex's next-event estimate.

@@ -422,22 +422,24 @@ bool hasTemporaryFiles(const fs::path& dir) {
 // Every numeric flag of every subcommand, and how to reach a check of it (the integrator).
 const std::map<std::string, std::vector<std::string>> kNumericFlags = {
     {"render", {"--spp", "--width", "--height", "--seed", "--max-depth", "--time-limit", "--camera",
-                "--area-light-samples", "--max-memory", "--exposure", "--fov"}},
+                "--area-light-samples", "--max-memory", "--exposure", "--fov", "--env-strength", "--env-rotation"}},
     {"render --integrator photon", {"--photons", "--caustic-photons", "--gather-rays", "--gather-k", "--radiance-photons",
                                     "--radius", "--alpha", "--q", "--importons", "--deposit-epsilon", "--density-accuracy",
                                     "--density-rounds"}},
     {"render --integrator guided", {"--guide-photons", "--guide-k", "--guide-adapt", "--guide-mix"}},
     {"photons", {"--photons", "--max-deposits", "--seed", "--importons", "--deposit-epsilon", "--density-accuracy",
-                 "--density-rounds", "--width", "--height", "--camera", "--max-memory", "--fov"}},
+                 "--density-rounds", "--width", "--height", "--camera", "--max-memory", "--fov", "--env-strength",
+                 "--env-rotation"}},
     {"guide-grid --pixel 1 1", {"--width", "--height", "--camera", "--seed", "--guide-photons", "--guide-k", "--max-memory",
-                                "--fov"}},
+                                "--fov", "--env-strength", "--env-rotation"}},
 };
 
 // Flags for which a value of the hostile list is valid: exposure is in stops, -1 EV halves.
-const std::map<std::string, std::string> kValidHostileValues = {{"--exposure", "-1"}};
+// --env-rotation is an angle: -1 degree turns the other way.
+const std::map<std::string, std::string> kValidHostileValues = {{"--exposure", "-1"}, {"--env-rotation", "-1"}};
 
 // Options whose help names their unit instead of a numeric type (checked with the table anyway).
-const std::map<std::string, std::string> kNumericTypeNames = {{"--fov", "FLOAT"}};
+const std::map<std::string, std::string> kNumericTypeNames = {{"--fov", "FLOAT"}, {"--env-rotation", "FLOAT"}};
 
 // The table above must list every option whose help gives a numeric type: a new flag fails here
 // until it is added (and so tested below).
@@ -646,6 +648,71 @@ TEST(CliHostile, AStoppedPhotonPassEqualsACompleteOneOfThePathsTraced) {
     const nlohmann::json b = nlohmann::json::parse(std::ifstream(dir / "b.json"));
     for (int c = 0; c < 3; ++c)
         EXPECT_DOUBLE_EQ(a["meanRadiance"][c].get<double>(), b["meanRadiance"][c].get<double>()) << c;
+}
+
+}  // namespace
+}  // namespace vkp
+
+namespace vkp {
+namespace {
+
+// A copy of the triangle scene without its emission: a scene without lights.
+fs::path unlitTriangle(const fs::path& dir) {
+    std::ifstream in(kTriangle);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string json = text.str();
+    const size_t at = json.find("\"emissiveFactor\"");
+    json.replace(at, json.find(']', at) + 1 - at, "\"doubleSided\": true");
+    fs::copy_file(fs::path(VKPHOTON_TEST_DATA) / "good" / "triangle.bin", dir / "triangle.bin",
+                  fs::copy_options::overwrite_existing);
+    std::ofstream(dir / "unlit.gltf") << json;
+    return dir / "unlit.gltf";
+}
+
+TEST(CliEnvironment, SceneWithoutLightsRendersUnderAWhiteSkyUnlessEnvZero) {
+    const fs::path dir = tempDir("env");
+    const std::string scene = unlitTriangle(dir).string();
+    const std::string common = "render " + scene + " --spp 2 --width 8 --height 8 -o " + (dir / "a.exr").string();
+    RunResult r = runVkphoton(common);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("uniform white environment"), std::string::npos) << r.output;
+    EXPECT_EQ(exrAttributes(dir / "a.exr").at("vkphoton/environment"), "constant");
+    EXPECT_GT(meanValue(readExr(dir / "a.exr")), 0.1);  // the sky is seen around the triangle
+    r = runVkphoton(common + " --env 0");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("no lights"), std::string::npos) << r.output;
+    r = runVkphoton(common + " --env 1,0.9,0.8 --env-strength 2 --quiet");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+}
+
+TEST(CliEnvironment, AovsAreExrChannels) {
+    const fs::path dir = tempDir("aov");
+    const fs::path exr = dir / "a.exr";
+    RunResult r = runVkphoton("render " + kBox + " --spp 1 --width 8 --height 8 --quiet --aov albedo,normal,depth -o " +
+                              exr.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::vector<std::string> names = exrChannelNames(exr);
+    for (const char* name : {"R", "G", "B", "Albedo.R", "Albedo.G", "Albedo.B", "N.X", "N.Y", "N.Z", "Z"})
+        EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+    for (float z : readExrChannel(exr, "Z")) EXPECT_TRUE(z > 0.0f && z < 10.0f) << z;  // inside the 5 m box
+    for (float a : readExrChannel(exr, "Albedo.G")) EXPECT_TRUE(a >= 0.0f && a <= 1.0f) << a;
+    r = runVkphoton("render " + kBox + " --spp 1 --width 8 --height 8 --aov albedo,colour -o " + exr.string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--aov"), std::string::npos) << r.output;
+}
+
+TEST(CliEnvironment, BadMapsExitWithTwo) {
+    const fs::path dir = tempDir("env-bad");
+    std::ofstream(dir / "bad.hdr") << "not an image";
+    for (const std::string& env : {(dir / "missing.hdr").string(), (dir / "bad.hdr").string(), std::string("1,2"),
+                                  std::string("-1"), std::string("nan")}) {
+        const RunResult r = runVkphoton("render " + kTriangle + " --spp 1 --width 4 --height 4 --env " + env + " -o " +
+                                        (dir / "x.exr").string());
+        EXPECT_EQ(r.exitCode, 2) << env << "\n" << r.output;
+        EXPECT_NE(r.output.find("--env"), std::string::npos) << env << "\n" << r.output;
+    }
+    EXPECT_FALSE(fs::exists(dir / "x.exr"));
 }
 
 }  // namespace

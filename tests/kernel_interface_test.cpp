@@ -8,6 +8,7 @@
 
 #include "gpu_test_support.h"
 #include "shaders/test_kernels.glsl"
+#include "shared/kernels/aov.glsl"
 #include "shared/kernels/compaction.glsl"
 #include "shared/kernels/deposit.glsl"
 #include "shared/kernels/grid_build.glsl"
@@ -64,7 +65,7 @@ std::vector<vk::KernelInterface> everyKernel() {
             vk::interfaceOf<CausticEstimateKernel>(), vk::interfaceOf<FinalGatherKernel>(),
             vk::interfaceOf<SppmUpdateKernel>(), vk::interfaceOf<RadiancePhotonsKernel>(),
             vk::interfaceOf<GuideCacheBuildKernel>(), vk::interfaceOf<ShadowVolumeBuildKernel>(),
-            vk::interfaceOf<RasterDirectKernel>()};
+            vk::interfaceOf<RasterDirectKernel>(), vk::interfaceOf<AovKernel>()};
 }
 
 class KernelInterfaceTest : public test::GpuTest {};

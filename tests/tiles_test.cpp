@@ -148,7 +148,8 @@ TEST(Tiles, BadTileAndCropValuesExitWithTwo) {
     for (const char* args : {"--tile 0/2", "--tile 3/2", "--tile 1/0", "--tile 1/9", "--tile nan", "--tile 1/2x",
                              "--tile -1/2", "--tile 1/99999999999999999999", "--tile ''", "--crop 0,0,17,8",
                              "--crop 4,4,4,8", "--crop 1,2,3", "--crop nan,0,1,1", "--crop 0,0,1e3,1",
-                             "--crop -1,0,4,4", "--tile 1/2 --crop 0,0,4,4"}) {
+                             "--crop -1,0,4,4", "--tile 1/2 --crop 0,0,4,4",
+                             "--tile 1/2 --aov depth", "--crop 0,0,4,4 --aov albedo"}) {
         const RunResult r = vkphoton(render + args);
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.output;
     }

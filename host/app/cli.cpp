@@ -101,6 +101,25 @@ void addViewOptions(CLI::App& cmd, ViewOverride& view) {
         ->type_name("DEG");
 }
 
+// --env, --env-strength, --env-rotation (scene/environment.h, docs/environment.md).
+void addEnvironmentOptions(CLI::App& cmd, EnvironmentSettings& env) {
+    cmd.add_option("--env", env.value,
+                   "Environment light: an equirectangular .hdr or .exr map, or a radiance V or R,G,B (0: none) "
+                   "[default: none, or radiance 1 for a scene without lights]")
+        ->type_name("FILE|VALUE");
+    cmd.add_option("--env-strength", env.strength, "Multiplies the environment's radiance")->capture_default_str();
+    cmd.add_option("--env-rotation", env.rotationDegrees,
+                   "Turns the environment map about +Y by DEG (right-handed: at 90 what faced +X faces -Z)")
+        ->type_name("DEG")
+        ->capture_default_str();
+    const std::vector<std::pair<std::string, bool>> sampling{{"map", true}, {"uniform", false}};
+    cmd.add_option("--env-sampling", env.importanceSampling,
+                   "Next-event directions towards a map: map (its luminance x sin(theta) distribution) or uniform "
+                   "(over the sphere; a baseline)")
+        ->transform(oneOf(sampling))
+        ->option_text(choiceText(sampling, env.importanceSampling));
+}
+
 void addDeviceOptions(CLI::App& cmd, std::string& device, bool& validate, double& maxMemoryGiB) {
     cmd.add_option("--device", device, "Vulkan device: index or name substring (see `vkphoton devices`)");
     cmd.add_flag("--validate", validate, "Enable the Khronos validation layer; any message is an error");
@@ -142,6 +161,14 @@ int runCommandLine(int argc, const char* const* argv) {
                           "Output EXR path; a PNG is written beside it [default: out/SCENE.exr]");
     addFrameOptions(*renderCmd, render.frame, bsdfOnly);
     addViewOptions(*renderCmd, render.frame.view);
+    addEnvironmentOptions(*renderCmd, render.environment);
+    std::string aovList;
+    renderCmd
+        ->add_option(
+            "--aov", aovList,
+            "Extra EXR channels, comma-separated: albedo (Albedo.R/G/B), normal (N.X/N.Y/N.Z, world space), depth "
+            "(Z, metres) of the first non-specular surface, for denoisers and compositing")
+        ->type_name("LIST");
     addDeviceOptions(*renderCmd, render.device, render.validate, render.maxMemoryGiB);
     renderCmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
     std::string tileText, cropText;  // resolved once --width and --height are known
@@ -193,6 +220,7 @@ int runCommandLine(int argc, const char* const* argv) {
     photonsCmd->add_option("--height", photons.height, "Height of that image")->capture_default_str();
     photonsCmd->add_option("--camera", photons.cameraIndex, "Scene camera index for the importons")->check(CLI::NonNegativeNumber);
     addViewOptions(*photonsCmd, photons.view);
+    addEnvironmentOptions(*photonsCmd, photons.environment);
     addDeviceOptions(*photonsCmd, photons.device, photons.validate, photons.maxMemoryGiB);
     photonsCmd->add_flag("--quiet", photons.quiet, "No summary output");
 
@@ -207,6 +235,7 @@ int runCommandLine(int argc, const char* const* argv) {
     guideCmd->add_option("--height", guideGrid.height, "Image height the pixel belongs to")->capture_default_str();
     guideCmd->add_option("--camera", guideGrid.cameraIndex, "Scene camera index")->check(CLI::NonNegativeNumber);
     addViewOptions(*guideCmd, guideGrid.view);
+    addEnvironmentOptions(*guideCmd, guideGrid.environment);
     guideCmd->add_option("--seed", guideGrid.seed, "Random seed")->capture_default_str();
     guideGrid.guide.addOptions(*guideCmd, false);
     addDeviceOptions(*guideCmd, guideGrid.device, guideGrid.validate, guideGrid.maxMemoryGiB);
@@ -253,6 +282,8 @@ int runCommandLine(int argc, const char* const* argv) {
             if (!cropText.empty()) render.frame.crop = parseCrop(cropText);
             render.frame.check();
             render.display.check();
+            render.environment.check();
+            if (renderCmd->get_option("--aov")->count() > 0) render.aov = parseAovList(aovList);
             const IntegratorConfig& config = *configs.at(integratorName);
             config.check();
             return runRender(render, config);

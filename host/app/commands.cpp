@@ -51,8 +51,14 @@ uint64_t memoryAvailable() {
     return 0;
 }
 
-Scene loadScene(const std::filesystem::path& path, const vk::Context& context, double maxMemoryGiB) {
+Scene loadScene(const std::filesystem::path& path, const vk::Context& context, double maxMemoryGiB,
+                const EnvironmentSettings& environment, bool quiet) {
     Scene scene = loadGltf(path, deviceSceneLimits(context, maxMemoryGiB));
+    EnvironmentLimits envLimits;
+    envLimits.maxMemoryBytes = deviceSceneLimits(context, maxMemoryGiB).maxMemoryBytes;
+    std::string note;
+    applyEnvironment(scene, environment, note, envLimits);
+    if (!note.empty() && !quiet) fmt::print(stderr, "{}\n", note);
     if (scene.droppedDegenerateTriangles > 0)
         fmt::print(stderr, "warning: {}: dropped {} degenerate triangle(s)\n", printable(path.string()),
                    scene.droppedDegenerateTriangles);
@@ -79,6 +85,7 @@ void PhotonsCommandOptions::check() const {
     checkRange("--height", height, 1u, 16384u);
     view.check();
     checkRange("--max-memory", maxMemoryGiB, 0.0, 1.0e6);
+    environment.check();
     deposit.check();
 }
 
@@ -87,6 +94,7 @@ void GuideGridCommandOptions::check() const {
     checkRange("--height", height, 1u, 16384u);
     view.check();
     checkRange("--max-memory", maxMemoryGiB, 0.0, 1.0e6);
+    environment.check();
     if (x >= width || y >= height)
         throw InputError(fmt::format("--pixel {} {}: outside the {}x{} image", x, y, width, height));
     guide.check();
@@ -103,12 +111,15 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     checkWritable(exrPath);
     checkWritable(pngPath);
     if (!options.statsJson.empty()) checkWritable(options.statsJson);
+    // `vkphoton merge` joins the beauty image only; parts with AOV layers would lose them.
+    if (options.aov.any() && options.frame.crop)
+        throw InputError("--aov cannot be combined with --tile or --crop: vkphoton merge joins the image only");
     // Signals from here on stop the work and write what there is (app/interrupt.h).
     installInterruptHandler();
 
     // The device first: its limits bound the scene before it is decoded.
     vk::Context context({options.validate, options.device});
-    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB);
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.environment, options.quiet);
     const double loadSeconds = secondsSince(start);
     // Validate the camera choice before the expensive set-up.
     chooseCamera(scene, options.frame.cameraIndex, float(options.frame.width) / float(options.frame.height),
@@ -155,12 +166,18 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
         // The PNG's display settings; the EXR's pixels are linear radiance, untouched by them.
         {"vkphoton/exposure", fmt::format("{}", options.display.exposureEv)},
         {"vkphoton/tonemap", viewTransformName(options.display.view)},
+        {"vkphoton/environment", scene.environment.present ? scene.environment.source : "none"},
     };
     // --tile / --crop: where the part belongs, for `vkphoton merge` (app/merge_command.h).
     for (auto& attribute : partAttributes(frame, stats)) attributes.push_back(std::move(attribute));
     if (frame.crop) stats.set("crop", frame.crop->text());
+    std::vector<ExrChannel> aovs;
+    if (options.aov.any()) {
+        const Frame aovFrame = makeFrame(scene, frameSettings);
+        aovs = aovChannels(renderAovs(renderer.gpuScene(), aovFrame), options.aov);
+    }
     // Both or neither: a signal or a failure never leaves a new EXR beside an old PNG.
-    writeFilesTogether({{exrPath, exrBytes(exrPath, result.image, attributes)},
+    writeFilesTogether({{exrPath, exrBytes(exrPath, result.image, attributes, aovs)},
                         {pngPath, pngBytes(pngPath, result.image, options.display)}});
     if (!options.statsJson.empty()) {
         nlohmann::json json = stats.toJson();
@@ -187,7 +204,7 @@ int runPhotons(const PhotonsCommandOptions& options) {
     checkWritable(output);
     installInterruptHandler();
     vk::Context context({options.validate, options.device});
-    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB);
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.environment, options.quiet);
     FrameSettings frameSettings;  // what the importons see: camera, image, seed
     frameSettings.width = options.width;
     frameSettings.height = options.height;
@@ -242,7 +259,7 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
     checkWritable(output);
     installInterruptHandler();
     vk::Context context({options.validate, options.device});
-    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB);
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.environment, options.quiet);
     const Camera camera =
         chooseCamera(scene, options.cameraIndex, float(options.width) / float(options.height), options.view);
     const GpuScene gpuScene(context, scene);

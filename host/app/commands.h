@@ -8,7 +8,9 @@
 #include "render/deposit_options.h"
 #include "render/frame.h"
 #include "render/integrator_registry.h"
+#include "render/aov.h"
 #include "render/path_guide.h"
+#include "scene/environment.h"
 
 namespace vkp {
 
@@ -18,6 +20,8 @@ struct RenderCommandOptions {
     std::filesystem::path statsJson;    // empty: none
     FrameSettings frame;
     DisplaySettings display;            // the PNG's exposure and view transform
+    AovSettings aov;                    // --aov: extra EXR channels
+    EnvironmentSettings environment;   // --env, --env-strength, --env-rotation
     double maxMemoryGiB = 0.0;          // --max-memory: 0 = the memory available
     std::string device;
     bool validate = false;
@@ -39,6 +43,7 @@ struct PhotonsCommandOptions {
     uint32_t width = 512, height = 512; // the image the importons' camera looks at
     int cameraIndex = -1;
     ViewOverride view;
+    EnvironmentSettings environment;   // --env, --env-strength, --env-rotation
     double maxMemoryGiB = 0.0;
     std::string device;
     bool validate = false;
@@ -56,6 +61,7 @@ struct GuideGridCommandOptions {
     ViewOverride view;
     uint32_t seed = 0;
     GuideSettings guide;
+    EnvironmentSettings environment;   // --env, --env-strength, --env-rotation
     double maxMemoryGiB = 0.0;
     std::string device;
     bool validate = false;

@@ -2,8 +2,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstring>
 
 #include "bvh/bvh.h"
+#include "scene/environment_distribution.h"
 #include "shared/constants.glsl"
 #include "shared/sampling.glsl"
 
@@ -103,6 +105,21 @@ SceneArrays buildSceneArrays(const Scene& scene) {
         a.lights.push_back(light);
     }
 
+    // The environment last (shaders/scene_access.glsl environmentLightIndex); its map's floats
+    // follow the textures' texels (appended below).
+    std::vector<float> environmentData = environmentGpuData(scene.environment);
+    if (scene.environment.present) {
+        gpu::GpuLight light{};
+        light.type = gpu::kLightEnvironment;
+        light.intensity = scene.environment.radiance;
+        light.envWidth = scene.environment.width;
+        light.envHeight = scene.environment.height;
+        light.envRotation = scene.environment.rotation;
+        light.envFlags = scene.environment.importanceSampling ? 0u : gpu::kEnvironmentSampleUniform;
+        a.lights.push_back(light);
+        power.push_back(environmentPower(scene.environment, std::max(sceneRadius, 1e-6f)));
+    }
+
     double total = 0.0;
     for (double p : power) total += p;
     a.totalLightPower = total;
@@ -127,6 +144,12 @@ SceneArrays buildSceneArrays(const Scene& scene) {
         g.srgb = tex.srgb ? 1u : 0u;
         a.textures.push_back(g);
         a.texels.insert(a.texels.end(), tex.rgba8.begin(), tex.rgba8.end());
+    }
+    if (!environmentData.empty()) {
+        a.lights.back().envOffset = static_cast<uint32_t>(a.texels.size());
+        const size_t first = a.texels.size();
+        a.texels.resize(first + environmentData.size());
+        std::memcpy(a.texels.data() + first, environmentData.data(), environmentData.size() * sizeof(float));
     }
     return a;
 }

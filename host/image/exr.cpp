@@ -48,10 +48,17 @@ private:
     size_t m_position = 0;
 };
 
-std::string encodeExr(const std::filesystem::path& path, const ImageRgb& image, const ExrAttributes& attributes) {
+std::string encodeExr(const std::filesystem::path& path, const ImageRgb& image, const ExrAttributes& attributes,
+                      const std::vector<ExrChannel>& extra) {
     Imf::Header header(static_cast<int>(image.width), static_cast<int>(image.height));
     header.compression() = Imf::ZIP_COMPRESSION;
     for (const char* c : kChannels) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
+    for (const ExrChannel& c : extra) {
+        if (c.values.size() != size_t(image.width) * image.height)
+            throw std::runtime_error(fmt::format("channel {} has {} values for {}x{} pixels", c.name, c.values.size(),
+                                                 image.width, image.height));
+        header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+    }
     for (const auto& [key, value] : attributes) header.insert(key, Imf::StringAttribute(value));
 
     Imf::FrameBuffer fb;
@@ -60,6 +67,9 @@ std::string encodeExr(const std::filesystem::path& path, const ImageRgb& image, 
     char* base = const_cast<char*>(reinterpret_cast<const char*>(image.pixels.data()));
     for (int c = 0; c < 3; ++c)
         fb.insert(kChannels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xStride, yStride));
+    for (const ExrChannel& c : extra)
+        fb.insert(c.name, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(c.values.data())),
+                                     sizeof(float), sizeof(float) * image.width));
 
     MemoryOStream stream(path.c_str());
     {
@@ -76,7 +86,8 @@ void writeExr(const std::filesystem::path& path, const ImageRgb& image, const Ex
     writeBytesAtomically(path, exrBytes(path, image, attributes));
 }
 
-std::string exrBytes(const std::filesystem::path& path, const ImageRgb& image, const ExrAttributes& attributes) {
+std::string exrBytes(const std::filesystem::path& path, const ImageRgb& image, const ExrAttributes& attributes,
+                     const std::vector<ExrChannel>& extra) {
     if (!isWellFormed(image))
         throw RuntimeError(fmt::format("cannot write {}: the image is empty or has {} values for {}x{} pixels",
                                        path.string(), image.pixels.size(), image.width, image.height));
@@ -85,7 +96,7 @@ std::string exrBytes(const std::filesystem::path& path, const ImageRgb& image, c
                                        image.width, image.height));
     std::string bytes;
     try {
-        bytes = encodeExr(path, image, attributes);
+        bytes = encodeExr(path, image, attributes, extra);
     } catch (const std::exception& e) {
         throw RuntimeError(fmt::format("cannot write {}: {}", path.string(), e.what()));
     }
@@ -121,6 +132,41 @@ ImageRgb readExr(const std::filesystem::path& path, ExrAttributes* attributes) {
                     attributes->emplace_back(it.name(), s->value());
         }
         return image;
+    } catch (const InputError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw InputError(fmt::format("{}: cannot read EXR: {}", path.string(), e.what()));
+    }
+}
+
+std::vector<std::string> exrChannelNames(const std::filesystem::path& path) {
+    try {
+        Imf::InputFile file(path.c_str());
+        std::vector<std::string> names;
+        for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it)
+            names.push_back(it.name());
+        return names;
+    } catch (const std::exception& e) {
+        throw InputError(fmt::format("{}: cannot read EXR: {}", path.string(), e.what()));
+    }
+}
+
+std::vector<float> readExrChannel(const std::filesystem::path& path, const std::string& name) {
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imf::Header& header = file.header();
+        if (!header.channels().findChannel(name))
+            throw InputError(fmt::format("{}: no channel {}", path.string(), name));
+        const Imath::Box2i dw = header.dataWindow();
+        const int64_t width = int64_t(dw.max.x) - dw.min.x + 1, height = int64_t(dw.max.y) - dw.min.y + 1;
+        if (width <= 0 || height <= 0 || uint64_t(width) * uint64_t(height) > kMaxReadPixels)
+            throw InputError(fmt::format("{}: unsupported image size {}x{}", path.string(), width, height));
+        std::vector<float> values(size_t(width) * size_t(height));
+        Imf::FrameBuffer fb;
+        fb.insert(name, Imf::Slice::Make(Imf::FLOAT, values.data(), dw, sizeof(float), sizeof(float) * size_t(width)));
+        file.setFrameBuffer(fb);
+        file.readPixels(dw.min.y, dw.max.y);
+        return values;
     } catch (const InputError&) {
         throw;
     } catch (const std::exception& e) {

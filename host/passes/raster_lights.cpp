@@ -22,6 +22,7 @@ float radicalInverse2(uint32_t i) {
 std::vector<gpu::GpuLight> buildRasterLights(const SceneArrays& a, uint32_t areaSamples) {
     std::vector<gpu::GpuLight> out;
     for (const gpu::GpuLight& light : a.lights) {
+        if (light.type == gpu::kLightEnvironment) continue;  // left to the compute integrators
         if (light.type != gpu::kLightTriangle) {
             out.push_back(light);
             continue;

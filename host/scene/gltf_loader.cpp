@@ -102,8 +102,6 @@ public:
         if (m_scene.triangles.empty())
             fail(sceneName, m_skippedPrimitives ? "no triangle geometry to render (primitives of other modes are skipped)"
                                                 : "no triangle geometry to render");
-        if (m_scene.lights.empty() && !anyEmissiveTriangle())
-            fail(sceneName, "no lights: add a KHR_lights_punctual light or give a material an emissiveFactor");
         checkScale(sceneName);
         return std::move(m_scene);
     }
@@ -228,13 +226,6 @@ private:
         }
     }
 
-    bool anyEmissiveTriangle() const {
-        std::vector<bool> emissive(m_scene.materials.size());
-        for (size_t i = 0; i < emissive.size(); ++i)
-            emissive[i] = glm::any(glm::greaterThan(m_scene.materials[i].emissive, glm::vec3(0.0f)));
-        return std::any_of(m_scene.triangles.begin(), m_scene.triangles.end(),
-                           [&](const Triangle& t) { return emissive[t.material]; });
-    }
 
     // Depth-first, pre-order (so cameras and lights keep the file's node order), iterative so a
     // deep hierarchy cannot exhaust the stack. Each node may be reached once: glTF node trees are

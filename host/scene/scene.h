@@ -10,6 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/environment.h"
+
 namespace vkp {
 
 struct Bounds {
@@ -105,6 +107,7 @@ struct Scene {
     size_t droppedDegenerateTriangles = 0;
     SceneFileInfo file;
     size_t droppedDuplicateTriangles = 0;    // the same three world positions as an earlier one
+    Environment environment;                 // --env (scene/environment.h), not from the file
 };
 
 }  // namespace vkp

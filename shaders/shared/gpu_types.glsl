@@ -60,6 +60,13 @@ const uint kLightPoint = 0u;
 const uint kLightSpot = 1u;
 const uint kLightDirectional = 2u;
 const uint kLightTriangle = 3u;
+// Light from infinitely far away in every direction (shared/environment.glsl): a constant
+// (intensity = radiance, envWidth 0) or an equirectangular map. At most one, the last light.
+const uint kLightEnvironment = 5u;  // 4 is the raster pass's kLightAreaSample (shared/shadow_volume.glsl)
+
+// GpuLight.envFlags: sample a map uniformly over the sphere instead of by its distribution (the
+// baseline of the importance-sampling benchmark, --env-sampling uniform).
+const uint kEnvironmentSampleUniform = 1u;
 
 struct GpuLight {
     vec3 position;          // point/spot position (world)
@@ -70,10 +77,16 @@ struct GpuLight {
     float spotOffset;
     uint triangle;          // kLightTriangle: index of the emissive triangle
     float selectPdf;        // probability of choosing this light for next-event estimation
-    float pad0;
+    uint envFlags;          // kLightEnvironment: kEnvironment* bits
     float pad1;
+    // kLightEnvironment with a map (shared/environment.glsl EnvironmentMap): its first float in
+    // the texel buffer, its size (width 0: the constant `intensity`) and rotation about +Y.
+    uint envOffset;
+    uint envWidth;
+    uint envHeight;
+    float envRotation;
 };
-STATIC_ASSERT_SIZE(GpuLight, 64)
+STATIC_ASSERT_SIZE(GpuLight, 80)
 
 // Textures live in one buffer of packed RGBA8 texels; each entry describes one image.
 struct GpuTexture {
