@@ -48,8 +48,10 @@ uint64_t memoryAvailable() {
     return 0;
 }
 
-Scene loadScene(const std::filesystem::path& path, const vk::Context& context, double maxMemoryGiB) {
-    Scene scene = loadGltf(path, deviceSceneLimits(context, maxMemoryGiB));
+Scene loadScene(const std::filesystem::path& path, const vk::Context& context, double maxMemoryGiB, int sceneIndex) {
+    GltfLimits limits = deviceSceneLimits(context, maxMemoryGiB);
+    limits.sceneIndex = sceneIndex;
+    Scene scene = loadGltf(path, limits);
     if (scene.droppedDegenerateTriangles > 0)
         fmt::print(stderr, "warning: {}: dropped {} degenerate triangle(s)\n", printable(path.string()),
                    scene.droppedDegenerateTriangles);
@@ -105,7 +107,7 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
 
     // The device first: its limits bound the scene before it is decoded.
     vk::Context context({options.validate, options.device});
-    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB);
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex);
     const double loadSeconds = secondsSince(start);
     // Validate the camera choice before the expensive set-up.
     chooseCamera(scene, options.frame.cameraIndex, float(options.frame.width) / float(options.frame.height),
@@ -181,7 +183,7 @@ int runPhotons(const PhotonsCommandOptions& options) {
     checkWritable(output);
     installInterruptHandler();
     vk::Context context({options.validate, options.device});
-    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB);
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex);
     FrameSettings frameSettings;  // what the importons see: camera, image, seed
     frameSettings.width = options.width;
     frameSettings.height = options.height;
@@ -233,7 +235,7 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
     checkWritable(output);
     installInterruptHandler();
     vk::Context context({options.validate, options.device});
-    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB);
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex);
     const Camera camera =
         chooseCamera(scene, options.cameraIndex, float(options.width) / float(options.height), options.view);
     const GpuScene gpuScene(context, scene);

@@ -19,6 +19,7 @@ struct RenderCommandOptions {
     FrameSettings frame;
     DisplaySettings display;            // the PNG's exposure and view transform
     double maxMemoryGiB = 0.0;          // --max-memory: 0 = the memory available
+    int sceneIndex = -1;                // --scene: the glTF scene; -1: the file's default
     std::string device;
     bool validate = false;
     bool quiet = false;
@@ -40,6 +41,7 @@ struct PhotonsCommandOptions {
     int cameraIndex = -1;
     ViewOverride view;
     double maxMemoryGiB = 0.0;
+    int sceneIndex = -1;
     std::string device;
     bool validate = false;
     bool quiet = false;
@@ -57,6 +59,7 @@ struct GuideGridCommandOptions {
     uint32_t seed = 0;
     GuideSettings guide;
     double maxMemoryGiB = 0.0;
+    int sceneIndex = -1;
     std::string device;
     bool validate = false;
     bool quiet = false;
