@@ -452,7 +452,7 @@ def bad_cases():
         "baseColorTexture.texCoord: 2 is not a TEXCOORD set vkphoton reads")
     add("texture_transform_bad_offset.gltf",
         texture_ref({"extensions": {"KHR_texture_transform": {"offset": [1, "x"]}}}),
-        "baseColorTexture.extensions.KHR_texture_transform.offset: needs 2 numbers")
+        "baseColorTexture.extensions.KHR_texture_transform.offset[1]: \"x\" is not a number")
     add("texture_transform_huge_scale.gltf",
         texture_ref({"extensions": {"KHR_texture_transform": {"scale": [1e30, 1]}}}),
         "KHR_texture_transform: offset, rotation and scale must be finite (within 1e6)")
