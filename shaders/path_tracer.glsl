@@ -55,8 +55,9 @@ PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
     st.rng = makeSampler(sampleIndex, streamSeed);
     vec2 jitter = nextSample2(st.rng);
     if ((params.flags & kPathFlagPixelCentres) != 0u) jitter = vec2(0.5f);
-    st.ray = rayFrom(params.camera.position, cameraRayDirection(params.camera, params.width, params.height,
-                                                                vec2(float(px) + jitter.x, float(py) + jitter.y)));
+    vec2 filmPixel = vec2(float(px) + jitter.x, float(py) + jitter.y);
+    st.ray = rayFrom(cameraRayOrigin(params.camera, params.width, params.height, filmPixel),
+                     cameraRayDirection(params.camera, params.width, params.height, filmPixel));
     st.throughput = vec3(1.0f);
     st.radiance = vec3(0.0f);
     st.lastPdf = 0.0f;

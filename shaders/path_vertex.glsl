@@ -48,6 +48,8 @@ struct PathVertex {
     vec3 t;
     vec3 b;
     vec3 wo;              // local direction back along the ray, never below the horizon
+    uint triangle;        // the hit triangle (BVH order) and its barycentrics (b1, b2)
+    vec2 barycentrics;
 };
 
 // The shading frame around n (world space) and the local outgoing direction woWorld in it. An
@@ -72,8 +74,10 @@ bool traceVertex(Ray ray, out PathVertex v) {
     }
     v.transmittance = exp(-ray.mediumSigma * v.distance);
     v.hit = surfaceAt(tri, b1, b2, ray.dir);
+    v.triangle = tri;
+    v.barycentrics = vec2(b1, b2);
     v.material = materials[v.hit.material];
-    v.bsdf = bsdfParamsAt(v.material, v.hit.uv);
+    v.bsdf = bsdfParamsAtHit(v.material, v.hit);
     v.n = v.hit.frontFace ? v.hit.shadingNormal : -v.hit.shadingNormal;
     shadingFrame(v.n, -ray.dir, v.t, v.b, v.wo);
     return true;
@@ -81,8 +85,15 @@ bool traceVertex(Ray ray, out PathVertex v) {
 
 // Samples the vertex's BSDF for the next direction (local). `radiance`: camera-path and gather
 // throughput (refraction scales it by eta^2), not photons and importons (shared/bsdf.glsl).
+// A direction the shading normal (interpolated or normal-mapped) allows but the geometry does not
+// (a reflection below the surface, a transmission that stays on the arrival side) is dropped
+// (kLobeNone), so shading normals never carry camera paths, photons or importons through a surface.
 BsdfSample sampleVertexBsdf(PathVertex v, bool radiance, vec3 u) {
-    return sampleBsdf(v.bsdf, v.wo, v.hit.frontFace, radiance, u);
+    BsdfSample bs = sampleBsdf(v.bsdf, v.wo, v.hit.frontFace, radiance, u);
+    vec3 side = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
+    bool reflects = (bs.lobe & kLobeTransmission) == 0u;
+    if (bs.lobe != kLobeNone && (dot(toWorld(bs.wi, v.t, v.b, v.n), side) > 0.0f) != reflects) bs.lobe = kLobeNone;
+    return bs;
 }
 
 // The vertex's BSDF (f, without the cosine) towards local wi.

@@ -62,9 +62,8 @@ EmittedPhoton emitPhoton(uint index, vec2 uPosition, vec2 uDirection, float uSid
         e.origin = offsetRayOrigin(e.origin, n, n);
         e.dir = toWorld(sampleCosineHemisphere(uDirection), tangent, bitangent, n);
         e.normal = n;
-        vec2 uv = (1.0f - b.x - b.y) * s.uv01.xy + b.x * s.uv01.zw + b.y * s.uv2;
         // Le cos / (1/A * cos/pi * 1/sides): cosine sampling cancels the cosine.
-        e.flux = emittedRadiance(m, uv) * (kPi * area * sides) / light.selectPdf;
+        e.flux = emittedRadiance(m, interpolatedUv(s, b.x, b.y)) * (kPi * area * sides) / light.selectPdf;
         return e;
     }
     if (light.type == kLightEnvironment) {

@@ -25,10 +25,11 @@ void rasterDirectLight() {
     if (pixel >= params.width * params.height) return;
     uint px = pixel % params.width;
     uint py = pixel / params.width;
-    vec3 dir = cameraRayDirection(params.camera, params.width, params.height, vec2(float(px) + 0.5f, float(py) + 0.5f));
+    vec2 filmPixel = vec2(float(px) + 0.5f, float(py) + 0.5f);
+    vec3 dir = cameraRayDirection(params.camera, params.width, params.height, filmPixel);
     // The same vertex as the path tracer's first one (traceVertex: shading frame and all).
     PathVertex v;
-    if (!traceVertex(rayFrom(params.camera.position, dir), v)) return;
+    if (!traceVertex(rayFrom(cameraRayOrigin(params.camera, params.width, params.height, filmPixel), dir), v)) return;
     vec3 sideNormal = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
 
     uint mask = masks[params.maskOffset + pixel];

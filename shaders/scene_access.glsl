@@ -20,6 +20,91 @@ layout(std430, set = 0, binding = kSceneLightCdfBinding) readonly buffer LightCd
 layout(std430, set = 0, binding = kSceneTexturesBinding) readonly buffer Textures { GpuTexture textures[]; };
 layout(std430, set = 0, binding = kSceneTexelsBinding) readonly buffer Texels { uint texels[]; };
 
+#include "shared/hash.glsl"
+#include "shared/photon.glsl"
+
+float srgbToLinear(float c) {
+    return c <= 0.04045f ? c / 12.92f : pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+vec4 texelValue(GpuTexture tex, uint x, uint y) {
+    uint packed = texels[tex.offset + y * tex.width + x];
+    vec4 c = unpackUnorm4x8(packed);
+    if (tex.srgb != 0u) c = vec4(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b), c.a);
+    return c;
+}
+
+// Texel index i (any integer) on an axis of n texels under a glTF wrap mode.
+uint wrapTexel(int i, int n, uint mode) {
+    if (mode == kTextureWrapClamp) return uint(clamp(i, 0, n - 1));
+    if (mode == kTextureWrapMirrored) {
+        int period = 2 * n;
+        int m = ((i % period) + period) % period;
+        return uint(m < n ? m : period - 1 - m);
+    }
+    return uint(((i % n) + n) % n);
+}
+
+// The one texture lookup of every material texture: `index` names a texture view (image, TEXCOORD
+// set, KHR_texture_transform, sampler); uv holds TEXCOORD_0 (xy) and TEXCOORD_1 (zw). Bilinear
+// or nearest, with the view's wrap modes; no mipmaps.
+vec4 sampleTexture(int index, vec4 uv) {
+    GpuTexture tex = textures[index];
+    vec2 set = tex.texCoord == 1u ? uv.zw : uv.xy;
+    vec2 st = vec2(dot(tex.uvRow0.xyz, vec3(set, 1.0f)), dot(tex.uvRow1.xyz, vec3(set, 1.0f)));
+    // Far-away coordinates lose all precision; keep them finite and the integer casts defined.
+    st = clamp(st, vec2(-1.0e6f), vec2(1.0e6f));
+    int w = int(tex.width);
+    int h = int(tex.height);
+    vec2 texel = st * vec2(float(w), float(h));
+    if (tex.magFilter == kTextureFilterNearest) {
+        vec2 base = floor(texel);
+        return texelValue(tex, wrapTexel(int(base.x), w, tex.wrapS), wrapTexel(int(base.y), h, tex.wrapT));
+    }
+    texel -= 0.5f;
+    vec2 base = floor(texel);
+    vec2 f = texel - base;
+    uint x0 = wrapTexel(int(base.x), w, tex.wrapS);
+    uint x1 = wrapTexel(int(base.x) + 1, w, tex.wrapS);
+    uint y0 = wrapTexel(int(base.y), h, tex.wrapT);
+    uint y1 = wrapTexel(int(base.y) + 1, h, tex.wrapT);
+    vec4 a = mix(texelValue(tex, x0, y0), texelValue(tex, x1, y0), f.x);
+    vec4 b = mix(texelValue(tex, x0, y1), texelValue(tex, x1, y1), f.x);
+    return mix(a, b, f.y);
+}
+
+// Both TEXCOORD sets of triangle s at barycentrics (b1, b2).
+vec4 interpolatedUv(GpuTriangleShading s, float b1, float b2) {
+    float b0 = 1.0f - b1 - b2;
+    return vec4(b0 * s.uv01.xy + b1 * s.uv01.zw + b2 * s.uv2, b0 * s.uvB01.xy + b1 * s.uvB01.zw + b2 * s.uvB2);
+}
+
+vec4 vertexColor(GpuTriangleShading s, float b1, float b2) {
+    return (1.0f - b1 - b2) * unpackUnorm4x8(s.color0) + b1 * unpackUnorm4x8(s.color1) + b2 * unpackUnorm4x8(s.color2);
+}
+
+// glTF alphaMode at a candidate hit (the one alpha test of the shared traversal, so camera,
+// shadow, photon, importon and gather rays all see the same cut-outs): MASK passes where
+// baseColor alpha (factor x texture x COLOR_0) >= alphaCutoff; BLEND where a hash of the ray and
+// the triangle falls below alpha (stochastic transparency: the same ray always decides the same
+// way, so the same seed gives the same image). OPAQUE always passes.
+bool alphaPasses(uint tri, float b1, float b2, vec3 org, vec3 dir) {
+    GpuTriangleShading s = shading[tri];
+    GpuMaterial m = materials[s.material];
+    if ((m.flags & (kMaterialAlphaMask | kMaterialAlphaBlend)) == 0u) return true;
+    float alpha = m.baseColor.a * vertexColor(s, b1, b2).a;
+    if (m.baseColorTexture >= 0) alpha *= sampleTexture(m.baseColorTexture, interpolatedUv(s, b1, b2)).a;
+    if ((m.flags & kMaterialAlphaMask) != 0u) return alpha >= m.alphaCutoff;
+    uint h = hashCombine(pcgHash(tri), floatBitsToUint(org.x));
+    h = hashCombine(h, floatBitsToUint(org.y));
+    h = hashCombine(h, floatBitsToUint(org.z));
+    h = hashCombine(h, floatBitsToUint(dir.x));
+    h = hashCombine(h, floatBitsToUint(dir.y));
+    h = hashCombine(h, floatBitsToUint(dir.z));
+    return uintToUnitFloat(h) < alpha;
+}
+#define BVH_ALPHA_TEST(triangle, tri, b1, b2, org, dir) ((triangle).v0.w == 0.0f || alphaPasses(tri, b1, b2, org, dir))
+
 #include "shared/intersect.glsl"
 #include "shared/bvh_traverse.glsl"
 
@@ -38,35 +123,7 @@ vec3 offsetRayOrigin(vec3 p, vec3 n, vec3 dir) {
     return p + (dot(dir, n) >= 0.0f ? n : -n) * rayEpsilon(p);
 }
 
-float srgbToLinear(float c) {
-    return c <= 0.04045f ? c / 12.92f : pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
-vec4 texelValue(GpuTexture tex, uint x, uint y) {
-    uint packed = texels[tex.offset + y * tex.width + x];
-    vec4 c = unpackUnorm4x8(packed);
-    if (tex.srgb != 0u) c = vec4(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b), c.a);
-    return c;
-}
-
-// Bilinear lookup with repeat wrapping (glTF's default sampler).
-vec4 sampleTexture(int index, vec2 uv) {
-    GpuTexture tex = textures[index];
-    vec2 st = uv * vec2(float(tex.width), float(tex.height)) - 0.5f;
-    vec2 base = floor(st);
-    vec2 f = st - base;
-    int w = int(tex.width);
-    int h = int(tex.height);
-    uint x0 = uint(((int(base.x) % w) + w) % w);
-    uint y0 = uint(((int(base.y) % h) + h) % h);
-    uint x1 = (x0 + 1u) % tex.width;
-    uint y1 = (y0 + 1u) % tex.height;
-    vec4 a = mix(texelValue(tex, x0, y0), texelValue(tex, x1, y0), f.x);
-    vec4 b = mix(texelValue(tex, x0, y1), texelValue(tex, x1, y1), f.x);
-    return mix(a, b, f.y);
-}
-
-vec3 emittedRadiance(GpuMaterial m, vec2 uv) {
+vec3 emittedRadiance(GpuMaterial m, vec4 uv) {
     vec3 e = m.emissive;
     if (m.emissiveTexture >= 0 && (e.r > 0.0f || e.g > 0.0f || e.b > 0.0f))
         e *= sampleTexture(m.emissiveTexture, uv).rgb;
@@ -76,12 +133,31 @@ vec3 emittedRadiance(GpuMaterial m, vec2 uv) {
 struct SurfaceHit {
     vec3 position;
     vec3 geometricNormal;   // unit, from the winding (front face side)
-    vec3 shadingNormal;     // unit, interpolated, flipped to the geometric normal's side
-    vec2 uv;
+    vec3 shadingNormal;     // unit, interpolated (and normal-mapped), flipped to the geometric normal's side
+    vec4 uv;                // TEXCOORD_0 (xy) and TEXCOORD_1 (zw)
+    vec4 color;             // COLOR_0 (1 when the mesh has none)
     uint material;
     float emitterPdfArea;
     bool frontFace;         // the ray arrived on the front (counter-clockwise) side
 };
+
+// The normal map's normal (glTF: tangent space +X along the tangent, +Y along
+// cross(normal, tangent) * w, scaled in xy by normalTexture.scale) around unit normal n.
+// Triangles without tangents keep n.
+vec3 normalMapped(GpuMaterial m, GpuTriangleShading s, float b1, float b2, vec4 uv, vec3 n) {
+    if (s.tangentSign == kTangentNone) return n;
+    vec3 t = (1.0f - b1 - b2) * decodeOctahedral(s.tangent0) + b1 * decodeOctahedral(s.tangent1) +
+             b2 * decodeOctahedral(s.tangent2);
+    t -= n * dot(n, t);
+    float len = length(t);
+    if (!(len > 1.0e-6f)) return n;
+    t /= len;
+    vec3 b = cross(n, t) * (s.tangentSign == kTangentNegative ? -1.0f : 1.0f);
+    vec3 c = sampleTexture(m.normalTexture, uv).xyz * 2.0f - 1.0f;
+    vec3 mapped = t * (c.x * m.normalScale) + b * (c.y * m.normalScale) + n * c.z;
+    float mappedLength = length(mapped);
+    return mappedLength > 1.0e-6f ? mapped / mappedLength : n;
+}
 
 SurfaceHit surfaceAt(uint tri, float b1, float b2, vec3 rayDir) {
     GpuTriangle t = triangles[tri];
@@ -90,19 +166,24 @@ SurfaceHit surfaceAt(uint tri, float b1, float b2, vec3 rayDir) {
     SurfaceHit hit;
     hit.position = b0 * t.v0.xyz + b1 * t.v1.xyz + b2 * t.v2.xyz;
     hit.geometricNormal = normalize(cross(t.v1.xyz - t.v0.xyz, t.v2.xyz - t.v0.xyz));
-    vec3 n = b0 * s.n0.xyz + b1 * s.n1.xyz + b2 * s.n2.xyz;
+    hit.uv = interpolatedUv(s, b1, b2);
+    hit.color = vertexColor(s, b1, b2);
+    vec3 n = b0 * decodeOctahedral(s.n0) + b1 * decodeOctahedral(s.n1) + b2 * decodeOctahedral(s.n2);
     float len = length(n);
     n = len > 0.0f ? n / len : hit.geometricNormal;
+    GpuMaterial m = materials[s.material];
+    if (m.normalTexture >= 0) n = normalMapped(m, s, b1, b2, hit.uv, n);
     if (dot(n, hit.geometricNormal) < 0.0f) n = -n;
     hit.shadingNormal = n;
-    hit.uv = b0 * s.uv01.xy + b1 * s.uv01.zw + b2 * s.uv2;
     hit.material = s.material;
     hit.emitterPdfArea = s.emitterPdfArea;
     hit.frontFace = dot(rayDir, hit.geometricNormal) < 0.0f;
     return hit;
 }
 
-BsdfParams bsdfParamsAt(GpuMaterial m, vec2 uv) {
+// The material's parameters at a surface point: uv holds both TEXCOORD sets (SurfaceHit.uv).
+// COLOR_0 multiplies the base colour (the callers: bsdfParamsAtHit).
+BsdfParams bsdfParamsAt(GpuMaterial m, vec4 uv) {
     BsdfParams p;
     vec4 base = m.baseColor;
     if (m.baseColorTexture >= 0) base *= sampleTexture(m.baseColorTexture, uv);
@@ -119,6 +200,12 @@ BsdfParams bsdfParamsAt(GpuMaterial m, vec2 uv) {
     p.transmission = clamp(m.transmission, 0.0f, 1.0f);
     p.ior = max(m.ior, 1.0f);
     p.thinWalled = (m.flags & kMaterialThinWalled) != 0u ? 1u : 0u;
+    return p;
+}
+
+BsdfParams bsdfParamsAtHit(GpuMaterial m, SurfaceHit hit) {
+    BsdfParams p = bsdfParamsAt(m, hit.uv);
+    p.baseColor *= hit.color.rgb;
     return p;
 }
 
@@ -258,8 +345,7 @@ LightSample sampleLight(uint index, vec3 x, vec2 u) {
         ls.pdf = 0.0f;
         return ls;
     }
-    vec2 uv = (1.0f - b.x - b.y) * s.uv01.xy + b.x * s.uv01.zw + b.y * s.uv2;
-    ls.radiance = emittedRadiance(m, uv);
+    ls.radiance = emittedRadiance(m, interpolatedUv(s, b.x, b.y));
     ls.pdf = light.selectPdf / area * dist2 / abs(cosLight);
     return ls;
 }

@@ -18,7 +18,8 @@ struct VisibleSurface {
 
 VisibleSurface visibleSurface(GpuVisiblePoint vp) {
     VisibleSurface s;
-    s.bsdf = bsdfParamsAt(materials[vp.material], vp.uv);
+    s.bsdf = bsdfParamsAtHit(materials[vp.material],
+                             surfaceAt(vp.triangle, vp.barycentrics.x, vp.barycentrics.y, vec3(0.0f)));
     s.n = decodeOctahedral(vp.shadingNormal);
     shadingFrame(s.n, decodeOctahedral(vp.wo), s.t, s.b, s.wo);  // as traceVertex set it up
     return s;

@@ -35,9 +35,9 @@ void findVisiblePoint() {
     Sampler rng = makeSampler(params.sampleIndex, hashCombine(hashCombine(params.seed, kVisiblePointStream), pixel));
     vec2 jitter = nextSample2(rng);
     if ((params.flags & kPathFlagPixelCentres) != 0u) jitter = vec2(0.5f);
-    Ray ray = rayFrom(params.camera.position,
-                      cameraRayDirection(params.camera, params.width, params.height,
-                                         vec2(float(pixel % params.width) + jitter.x, float(pixel / params.width) + jitter.y)));
+    vec2 filmPixel = vec2(float(pixel % params.width) + jitter.x, float(pixel / params.width) + jitter.y);
+    Ray ray = rayFrom(cameraRayOrigin(params.camera, params.width, params.height, filmPixel),
+                      cameraRayDirection(params.camera, params.width, params.height, filmPixel));
     vec3 throughput = vec3(1.0f);
     vec3 radiance = vec3(0.0f);
     bool lastDelta = true;  // the camera ray, then: was the last bounce a delta lobe
@@ -47,12 +47,12 @@ void findVisiblePoint() {
     vp.material = 0u;
     vp.throughput = vec3(0.0f);
     vp.shadingNormal = 0u;
-    vp.uv = vec2(0.0f);
+    vp.barycentrics = vec2(0.0f);
     vp.wo = 0u;
     vp.geometricNormal = 0u;
     vp.flags = 0u;
     vp.pixel = pixel;
-    vp.pad0 = 0u;
+    vp.triangle = 0u;
     vp.pad1 = 0u;
 
     for (uint depth = 0u; depth <= params.maxSpecularDepth; ++depth) {
@@ -79,7 +79,8 @@ void findVisiblePoint() {
             vp.material = v.hit.material;
             vp.throughput = throughput;
             vp.shadingNormal = encodeOctahedral(v.n);
-            vp.uv = v.hit.uv;
+            vp.barycentrics = v.barycentrics;
+            vp.triangle = v.triangle;
             vp.wo = encodeOctahedral(-ray.dir);
             vp.geometricNormal = encodeOctahedral(v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal);
             vp.flags = kVisiblePointValid | (v.hit.frontFace ? kVisiblePointFrontFace : 0u);

@@ -274,9 +274,9 @@ TEST_F(GltfLoader, TextureFromAPngDataUri) {
     doc["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 0}}}};
     const Scene s = loadGltf(write(doc));
     ASSERT_EQ(s.textures.size(), 2u);  // the same image as sRGB colour and as linear data
-    const Texture& t = s.textures[s.materials[0].baseColorTexture];
+    const Texture& t = s.textures[s.textureViews[s.materials[0].baseColorTexture].image];
     EXPECT_TRUE(t.srgb);
-    EXPECT_FALSE(s.textures[s.materials[0].metallicRoughnessTexture].srgb);
+    EXPECT_FALSE(s.textures[s.textureViews[s.materials[0].metallicRoughnessTexture].image].srgb);
     ASSERT_EQ(t.width, 2u);
     ASSERT_EQ(t.height, 1u);
     EXPECT_EQ(t.rgba8[0] & 0xffffffu, 0x0000ffu);  // red in the low byte
@@ -594,7 +594,7 @@ TEST_F(GltfLoader, DeviceAndMemoryLimitsAreCheckedBeforeDecoding) {
     }
 }
 
-TEST_F(GltfLoader, CamerasAreOrthonormalAndOrthographicOnesSkipped) {
+TEST_F(GltfLoader, CamerasAreOrthonormalAndOrthographicOnesKept) {
     json doc = triangleDoc(true, true);
     doc["cameras"] = {{{"type", "orthographic"}, {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.1}, {"zfar", 10}}}},
                       {{"type", "perspective"}, {"perspective", {{"yfov", 0.7}, {"znear", 0.1}}}}};
@@ -605,8 +605,10 @@ TEST_F(GltfLoader, CamerasAreOrthonormalAndOrthographicOnesSkipped) {
     doc["nodes"].push_back({{"camera", 1}});
     doc["scenes"][0]["nodes"] = {0, 1, 2};
     const Scene s = loadGltf(write(doc));
-    ASSERT_EQ(s.cameras.size(), 1u);
-    const Camera& c = s.cameras[0];
+    ASSERT_EQ(s.cameras.size(), 2u);
+    EXPECT_FLOAT_EQ(s.cameras[0].orthoHalfHeight, 1.0f);
+    const Camera& c = s.cameras[1];
+    EXPECT_FLOAT_EQ(c.orthoHalfHeight, 0.0f);
     EXPECT_EQ(c.position, glm::vec3(1, 2, 3));
     EXPECT_NEAR(glm::distance(c.forward, glm::vec3(-1, 0, 0)), 0.0f, 1e-6f);
     EXPECT_NEAR(glm::distance(c.up, glm::vec3(0, 1, 0)), 0.0f, 1e-6f);
@@ -649,6 +651,49 @@ TEST(ShippedScenes, AllLoad) {
 }
 #endif
 
+// '+' is a literal in URIs (RFC 3986), though tinygltf decodes it as a space; "%20" is a space.
+TEST_F(GltfLoader, PlusInAUriIsALiteral) {
+    json doc = triangleDoc(false, false);
+    const std::string data = doc["buffers"][0]["uri"];
+    const std::string payload = data.substr(data.find(',') + 1);
+    std::vector<uint8_t> bytes;  // decode the base64 written above
+    const std::string table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    uint32_t acc = 0;
+    int bits = 0;
+    for (char c : payload) {
+        if (c == '=') break;
+        acc = (acc << 6) | uint32_t(table.find(c));
+        bits += 6;
+        if (bits >= 8) { bits -= 8; bytes.push_back(uint8_t(acc >> bits)); }
+    }
+    std::ofstream(m_dir / "Cesium+Logo mesh.bin", std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    doc["buffers"][0]["uri"] = "Cesium+Logo%20mesh.bin";
+    EXPECT_EQ(loadGltf(write(doc)).triangles.size(), 1u);
+    doc["buffers"][0]["uri"] = "Cesium%20Logo%20mesh.bin";  // the space spelling names another file
+    EXPECT_THROW(loadGltf(write(doc)), InputError);
+}
+
+// --scene N (GltfLimits::sceneIndex) picks the glTF scene; the default is the file's `scene`.
+TEST_F(GltfLoader, SceneIndexPicksTheScene) {
+    json doc = triangleDoc(true, true);
+    doc["nodes"].push_back({{"mesh", 0}, {"translation", {5, 0, 0}}});
+    doc["scenes"].push_back({{"nodes", {1}}});
+    doc["scene"] = 1;
+    EXPECT_EQ(loadGltf(write(doc)).triangles[0].p[0], glm::vec3(5, 0, 0));
+    GltfLimits limits;
+    limits.sceneIndex = 0;
+    EXPECT_EQ(loadGltf(write(doc), limits).triangles[0].p[0], glm::vec3(0, 0, 0));
+    limits.sceneIndex = 2;
+    try {
+        loadGltf(write(doc), limits);
+        ADD_FAILURE() << "not refused";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("--scene 2: does not exist (the file has 2 scene(s))"), std::string::npos) << e.what();
+    }
+    doc.erase("scene");
+    EXPECT_EQ(loadGltf(write(doc)).triangles[0].p[0], glm::vec3(0, 0, 0));
+}
+
 TEST(UriPolicy, AcceptsRelativePathsAndDataUris) {
     for (const char* ok : {"data:application/octet-stream;base64,AAAA", "buffer.bin", "sub/dir/a%20b.png", "a..b.bin"})
         EXPECT_EQ(uriRefusalReason(ok), "") << ok;
@@ -662,7 +707,7 @@ TEST(UriPolicy, RefusesEncodedTricksAndDecodesLikeTinygltf) {
                             "http:x", "\\server\\share"})
         EXPECT_NE(uriRefusalReason(bad), "") << bad;
     EXPECT_EQ(uriToRelativePath("mesh%20data.bin"), "mesh data.bin");
-    EXPECT_EQ(uriToRelativePath("a+b.bin"), "a b.bin");  // tinygltf's decoder reads '+' as a space
+    EXPECT_EQ(uriToRelativePath("a+b.bin"), "a+b.bin");  // RFC 3986: '+' is a literal
     EXPECT_EQ(uriToRelativePath("sub/%41.png"), "sub/A.png");
 }
 

@@ -69,13 +69,14 @@ TEST(SceneReport, CountsAndExtensions) {
     EXPECT_EQ(extensions["KHR_lights_punctual"], std::make_pair(std::string("read"), true));
     EXPECT_EQ(extensions["KHR_materials_emissive_strength"], std::make_pair(std::string("read"), false));
     EXPECT_EQ(extensions["KHR_materials_clearcoat"], std::make_pair(std::string("ignored"), false));
-    EXPECT_EQ(extensions["KHR_texture_transform"], std::make_pair(std::string("ignored"), false));
+    EXPECT_EQ(extensions["KHR_texture_transform"], std::make_pair(std::string("read"), false));
     EXPECT_EQ(extensions["EXT_vkphoton_test_unknown"], std::make_pair(std::string("ignored"), false));
 }
 
 TEST(GltfExtensions, OnlyReadExtensionsMayBeRequired) {
     EXPECT_TRUE(gltfExtensionIsRead("KHR_materials_volume"));
-    EXPECT_FALSE(gltfExtensionIsRead("KHR_texture_transform"));
+    EXPECT_TRUE(gltfExtensionIsRead("KHR_texture_transform"));
+    EXPECT_FALSE(gltfExtensionIsRead("KHR_materials_anisotropy"));
     EXPECT_FALSE(gltfExtensionIsRead("EXT_never_heard_of_it"));
     EXPECT_EQ(findGltfExtension("EXT_never_heard_of_it"), nullptr);
 }

@@ -129,6 +129,12 @@ void addDeviceOptions(CLI::App& cmd, std::string& device, bool& validate, double
         ->capture_default_str();
 }
 
+// --scene N: which of the file's glTF scenes to load.
+void addSceneIndexOption(CLI::App& cmd, int& sceneIndex) {
+    cmd.add_option("--scene", sceneIndex, "Index of the glTF scene to load [default: the file's `scene`, else 0]")
+        ->check(CLI::NonNegativeNumber);
+}
+
 // An option given an empty value (`--q ''`) is a mistake: CLI11 would leave the default.
 void refuseEmptyValues(CLI::App& app) {
     for (const CLI::Option* option : app.get_options())
@@ -170,6 +176,7 @@ int runCommandLine(int argc, const char* const* argv) {
             "(Z, metres) of the first non-specular surface, for denoisers and compositing")
         ->type_name("LIST");
     addDeviceOptions(*renderCmd, render.device, render.validate, render.maxMemoryGiB);
+    addSceneIndexOption(*renderCmd, render.sceneIndex);
     renderCmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
     std::string tileText, cropText;  // resolved once --width and --height are known
     CLI::Option* tileOption = renderCmd->add_option(
@@ -222,6 +229,7 @@ int runCommandLine(int argc, const char* const* argv) {
     addViewOptions(*photonsCmd, photons.view);
     addEnvironmentOptions(*photonsCmd, photons.environment);
     addDeviceOptions(*photonsCmd, photons.device, photons.validate, photons.maxMemoryGiB);
+    addSceneIndexOption(*photonsCmd, photons.sceneIndex);
     photonsCmd->add_flag("--quiet", photons.quiet, "No summary output");
 
     GuideGridCommandOptions guideGrid;
@@ -239,6 +247,7 @@ int runCommandLine(int argc, const char* const* argv) {
     guideCmd->add_option("--seed", guideGrid.seed, "Random seed")->capture_default_str();
     guideGrid.guide.addOptions(*guideCmd, false);
     addDeviceOptions(*guideCmd, guideGrid.device, guideGrid.validate, guideGrid.maxMemoryGiB);
+    addSceneIndexOption(*guideCmd, guideGrid.sceneIndex);
     guideCmd->add_flag("--quiet", guideGrid.quiet, "No output but the file");
 
     InfoCommandOptions info;
@@ -246,6 +255,7 @@ int runCommandLine(int argc, const char* const* argv) {
         "info", "Describe a glTF scene: geometry, materials, lights, cameras, animations, extensions, textures");
     infoCmd->add_option("scene", info.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
     infoCmd->add_flag("--json", info.json, "Print the report as JSON");
+    addSceneIndexOption(*infoCmd, info.sceneIndex);
 
     app.add_subcommand("devices", "List the Vulkan devices");
 

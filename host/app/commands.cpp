@@ -51,11 +51,13 @@ uint64_t memoryAvailable() {
     return 0;
 }
 
-Scene loadScene(const std::filesystem::path& path, const vk::Context& context, double maxMemoryGiB,
+Scene loadScene(const std::filesystem::path& path, const vk::Context& context, double maxMemoryGiB, int sceneIndex,
                 const EnvironmentSettings& environment, bool quiet) {
-    Scene scene = loadGltf(path, deviceSceneLimits(context, maxMemoryGiB));
+    GltfLimits limits = deviceSceneLimits(context, maxMemoryGiB);
+    limits.sceneIndex = sceneIndex;
+    Scene scene = loadGltf(path, limits);
     EnvironmentLimits envLimits;
-    envLimits.maxMemoryBytes = deviceSceneLimits(context, maxMemoryGiB).maxMemoryBytes;
+    envLimits.maxMemoryBytes = limits.maxMemoryBytes;
     std::string note;
     applyEnvironment(scene, environment, note, envLimits);
     if (!note.empty() && !quiet) fmt::print(stderr, "{}\n", note);
@@ -119,7 +121,7 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
 
     // The device first: its limits bound the scene before it is decoded.
     vk::Context context({options.validate, options.device});
-    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.environment, options.quiet);
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet);
     const double loadSeconds = secondsSince(start);
     // Validate the camera choice before the expensive set-up.
     chooseCamera(scene, options.frame.cameraIndex, float(options.frame.width) / float(options.frame.height),
@@ -204,7 +206,7 @@ int runPhotons(const PhotonsCommandOptions& options) {
     checkWritable(output);
     installInterruptHandler();
     vk::Context context({options.validate, options.device});
-    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.environment, options.quiet);
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet);
     FrameSettings frameSettings;  // what the importons see: camera, image, seed
     frameSettings.width = options.width;
     frameSettings.height = options.height;
@@ -259,7 +261,7 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
     checkWritable(output);
     installInterruptHandler();
     vk::Context context({options.validate, options.device});
-    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.environment, options.quiet);
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet);
     const Camera camera =
         chooseCamera(scene, options.cameraIndex, float(options.width) / float(options.height), options.view);
     const GpuScene gpuScene(context, scene);

@@ -23,6 +23,7 @@ struct RenderCommandOptions {
     AovSettings aov;                    // --aov: extra EXR channels
     EnvironmentSettings environment;   // --env, --env-strength, --env-rotation
     double maxMemoryGiB = 0.0;          // --max-memory: 0 = the memory available
+    int sceneIndex = -1;                // --scene: the glTF scene; -1: the file's default
     std::string device;
     bool validate = false;
     bool quiet = false;
@@ -45,6 +46,7 @@ struct PhotonsCommandOptions {
     ViewOverride view;
     EnvironmentSettings environment;   // --env, --env-strength, --env-rotation
     double maxMemoryGiB = 0.0;
+    int sceneIndex = -1;
     std::string device;
     bool validate = false;
     bool quiet = false;
@@ -63,6 +65,7 @@ struct GuideGridCommandOptions {
     GuideSettings guide;
     EnvironmentSettings environment;   // --env, --env-strength, --env-rotation
     double maxMemoryGiB = 0.0;
+    int sceneIndex = -1;
     std::string device;
     bool validate = false;
     bool quiet = false;

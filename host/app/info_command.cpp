@@ -69,8 +69,12 @@ void printText(const json& r) {
     fmt::print("cameras      {}{}\n", cameras.size(),
                cameras.empty() ? " (renders use a three-quarter view framing the bounds)" : "");
     for (size_t i = 0; i < cameras.size(); ++i)
-        fmt::print("  {:3} {} (vertical field of view {:.1f} degrees)\n", i, cameras[i]["name"].get<std::string>(),
-                   cameras[i]["yfovDegrees"].get<double>());
+        if (cameras[i].contains("orthographicHalfHeight"))
+            fmt::print("  {:3} {} (orthographic, {:g} units high)\n", i, cameras[i]["name"].get<std::string>(),
+                       2.0 * cameras[i]["orthographicHalfHeight"].get<double>());
+        else
+            fmt::print("  {:3} {} (vertical field of view {:.1f} degrees)\n", i, cameras[i]["name"].get<std::string>(),
+                       cameras[i]["yfovDegrees"].get<double>());
     const json& a = r["animations"];
     fmt::print("animations   {} ({} channels){}\n", a["count"].get<uint64_t>(), a["channels"].get<uint64_t>(),
                a["count"].get<uint64_t>() ? ": not played, the scene renders in its rest pose" : "");
@@ -110,7 +114,9 @@ json sceneReport(const Scene& scene) {
                         {"emissiveTriangles", emissiveTriangles}};
     report["cameras"] = json::array();
     for (const Camera& c : scene.cameras)
-        report["cameras"].push_back({{"name", c.name}, {"yfovDegrees", glm::degrees(double(c.yfov))}});
+        report["cameras"].push_back(c.orthoHalfHeight > 0.0f
+                                        ? json{{"name", c.name}, {"orthographicHalfHeight", double(c.orthoHalfHeight)}}
+                                        : json{{"name", c.name}, {"yfovDegrees", glm::degrees(double(c.yfov))}});
     uint64_t channels = 0;
     json animations = json::array();
     for (const AnimationInfo& a : scene.file.animations) {
@@ -131,7 +137,9 @@ json sceneReport(const Scene& scene) {
 }
 
 int runInfo(const InfoCommandOptions& options) {
-    const Scene scene = loadGltf(options.scene);
+    GltfLimits limits;
+    limits.sceneIndex = options.sceneIndex;
+    const Scene scene = loadGltf(options.scene, limits);
     const json report = sceneReport(scene);
     if (options.json) fmt::print("{}\n", report.dump(2));
     else printText(report);

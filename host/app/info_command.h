@@ -13,6 +13,7 @@ namespace vkp {
 
 struct InfoCommandOptions {
     std::filesystem::path scene;
+    int sceneIndex = -1;  // --scene
     bool json = false;
 };
 

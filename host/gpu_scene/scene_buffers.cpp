@@ -6,7 +6,9 @@
 
 #include "bvh/bvh.h"
 #include "scene/environment_distribution.h"
+#include "gpu_scene/textured_emission.h"
 #include "shared/constants.glsl"
+#include "shared/photon.glsl"
 #include "shared/sampling.glsl"
 
 namespace vkp {
@@ -27,14 +29,34 @@ gpu::GpuMaterial toGpu(const Material& m, bool emitterDoubleSided) {
         sigma = -glm::log(glm::max(m.attenuationColor, glm::vec3(1e-6f))) / m.attenuationDistance;
     g.attenuationCoeff = sigma;
     g.flags = (emitterDoubleSided ? gpu::kMaterialDoubleSided : 0u) |
-              (m.transmission > 0.0f && m.thickness <= 0.0f ? gpu::kMaterialThinWalled : 0u);
+              (m.transmission > 0.0f && m.thickness <= 0.0f ? gpu::kMaterialThinWalled : 0u) |
+              (m.alphaMode == AlphaMode::Mask ? gpu::kMaterialAlphaMask : 0u) |
+              (m.alphaMode == AlphaMode::Blend ? gpu::kMaterialAlphaBlend : 0u);
     g.baseColorTexture = m.baseColorTexture;
     g.metallicRoughnessTexture = m.metallicRoughnessTexture;
     g.emissiveTexture = m.emissiveTexture;
+    g.normalTexture = m.normalTexture;
+    g.normalScale = m.normalScale;
+    g.alphaCutoff = m.alphaCutoff;
     return g;
 }
 
-glm::vec4 toVec4(const glm::vec3& v) { return glm::vec4(v, 0.0f); }
+// Normals, COLOR_0 and tangents of a triangle into GpuTriangleShading's packed fields.
+void packVertexData(const Triangle& t, gpu::GpuTriangleShading& s) {
+    s.n0 = gpu::encodeOctahedral(t.n[0]);
+    s.n1 = gpu::encodeOctahedral(t.n[1]);
+    s.n2 = gpu::encodeOctahedral(t.n[2]);
+    s.color0 = glm::packUnorm4x8(t.color[0]);
+    s.color1 = glm::packUnorm4x8(t.color[1]);
+    s.color2 = glm::packUnorm4x8(t.color[2]);
+    s.tangentSign = t.tangent[0].w == 0.0f ? gpu::kTangentNone
+                    : t.tangent[0].w < 0.0f ? gpu::kTangentNegative
+                                            : gpu::kTangentPositive;
+    if (s.tangentSign == gpu::kTangentNone) return;
+    s.tangent0 = gpu::encodeOctahedral(glm::vec3(t.tangent[0]));
+    s.tangent1 = gpu::encodeOctahedral(glm::vec3(t.tangent[1]));
+    s.tangent2 = gpu::encodeOctahedral(glm::vec3(t.tangent[2]));
+}
 
 }  // namespace
 
@@ -48,22 +70,28 @@ SceneArrays buildSceneArrays(const Scene& scene) {
     for (const Material& m : scene.materials) a.materials.push_back(toGpu(m, m.doubleSided));
 
     a.triangles = gpuTriangles(scene.triangles, bvh);
+    for (uint32_t i = 0; i < a.triangles.size(); ++i)  // the traversal's alpha test (gpu_types.glsl)
+        if (scene.materials[scene.triangles[bvh.triangleOrder[i]].material].alphaMode != AlphaMode::Opaque)
+            a.triangles[i].v0.w = 1.0f;
     a.shading.reserve(scene.triangles.size());
+    const TexturedEmission emission(scene);
     std::vector<double> power;
     for (uint32_t i = 0; i < bvh.triangleOrder.size(); ++i) {
         const Triangle& t = scene.triangles[bvh.triangleOrder[i]];
         gpu::GpuTriangleShading s{};
-        s.n0 = toVec4(t.n[0]);
-        s.n1 = toVec4(t.n[1]);
-        s.n2 = toVec4(t.n[2]);
         s.uv01 = glm::vec4(t.uv[0], t.uv[1]);
         s.uv2 = t.uv[2];
         s.material = t.material;
         s.emitterPdfArea = 0.0f;
+        s.uvB01 = glm::vec4(t.uv1[0], t.uv1[1]);
+        s.uvB2 = t.uv1[2];
+        packVertexData(t, s);
         a.shading.push_back(s);
 
         const Material& m = scene.materials[t.material];
-        const float le = gpu::luminance(m.emissive);
+        // Emissive textures: the emission averaged over the texels the triangle reads; a
+        // triangle whose texels are all black is no light (it emits nothing anywhere).
+        const float le = gpu::luminance(glm::vec3(emission.meanEmission(t)));
         if (le > 0.0f) {
             const float area = 0.5f * glm::length(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
             if (area <= 0.0f) continue;
@@ -136,14 +164,25 @@ SceneArrays buildSceneArrays(const Scene& scene) {
         }
     }
 
+    std::vector<uint32_t> imageOffset;
     for (const Texture& tex : scene.textures) {
+        imageOffset.push_back(static_cast<uint32_t>(a.texels.size()));
+        a.texels.insert(a.texels.end(), tex.rgba8.begin(), tex.rgba8.end());
+    }
+    for (const TextureView& view : scene.textureViews) {
+        const Texture& tex = scene.textures[view.image];
         gpu::GpuTexture g{};
-        g.offset = static_cast<uint32_t>(a.texels.size());
+        g.offset = imageOffset[view.image];
         g.width = tex.width;
         g.height = tex.height;
         g.srgb = tex.srgb ? 1u : 0u;
+        g.uvRow0 = glm::vec4(view.uvRow0, 0.0f);
+        g.uvRow1 = glm::vec4(view.uvRow1, 0.0f);
+        g.texCoord = static_cast<uint32_t>(view.texCoord);
+        g.wrapS = static_cast<uint32_t>(view.wrapS);
+        g.wrapT = static_cast<uint32_t>(view.wrapT);
+        g.magFilter = view.nearest ? gpu::kTextureFilterNearest : gpu::kTextureFilterLinear;
         a.textures.push_back(g);
-        a.texels.insert(a.texels.end(), tex.rgba8.begin(), tex.rgba8.end());
     }
     if (!environmentData.empty()) {
         a.lights.back().envOffset = static_cast<uint32_t>(a.texels.size());
@@ -162,6 +201,7 @@ gpu::GpuCamera makeGpuCamera(const Camera& camera, uint32_t width, uint32_t heig
     c.up = glm::cross(c.right, c.forward);
     c.tanHalfFovY = std::tan(0.5f * camera.yfov);
     c.aspect = static_cast<float>(width) / static_cast<float>(height);
+    c.orthoHalfHeight = camera.orthoHalfHeight;
     return c;
 }
 

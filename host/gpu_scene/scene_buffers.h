@@ -29,7 +29,8 @@ struct SceneArrays {
 };
 
 // Builds the BVH and the GPU arrays. Lights are selected for next-event estimation in proportion
-// to their emitted power (emissive triangles: pi * luminance(Le) * area, twice if double-sided;
+// to their emitted power (emissive triangles: pi * luminance(Le) * area, twice if double-sided,
+// Le averaged over the emissive texture's texels the triangle reads (textured_emission.h);
 // point/spot: 4 pi * luminance(I); directional: luminance(E) * pi * r^2 of the scene's bounding
 // sphere).
 SceneArrays buildSceneArrays(const Scene& scene);

@@ -98,6 +98,7 @@ Camera chooseCamera(const Scene& scene, int index, float aspect, const ViewOverr
                     : !scene.cameras.empty() ? scene.cameras.front()
                                             : framingCamera(scene.bounds, aspect, yfov);
     camera.yfov = view.fovDegrees ? yfov : camera.yfov;
+    if (view.fovDegrees) camera.orthoHalfHeight = 0.0f;  // --fov: a pinhole camera
     if (view.lookFrom || view.lookAt) {
         const glm::vec3 from = view.lookFrom.value_or(camera.position);
         const glm::vec3 at = view.lookAt ? *view.lookAt : scene.bounds.empty() ? glm::vec3(0.0f) : scene.bounds.center();

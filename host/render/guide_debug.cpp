@@ -18,9 +18,10 @@ GuideGridAtPixel guideGridAtPixel(const Scene& scene, const SceneArrays& arrays,
     if (x >= width || y >= height)
         throw InputError(fmt::format("--pixel {} {}: outside the {}x{} image", x, y, width, height));
     const gpu::GpuCamera cam = makeGpuCamera(camera, width, height);
-    const glm::vec3 dir = gpu::cameraRayDirection(cam, width, height, glm::vec2(x + 0.5f, y + 0.5f));
+    const glm::vec2 film(x + 0.5f, y + 0.5f);
+    const glm::vec3 dir = gpu::cameraRayDirection(cam, width, height, film);
     const Bvh bvh = buildBvh(scene.triangles);
-    const RayHit hit = closestHit(bvh, arrays.triangles, cam.position, dir, gpu::kInfinity);
+    const RayHit hit = closestHit(bvh, arrays.triangles, gpu::cameraRayOrigin(cam, width, height, film), dir, gpu::kInfinity);
     if (!hit.hit) throw InputError(fmt::format("--pixel {} {}: the camera ray meets no surface", x, y));
     const gpu::GpuTriangle& t = arrays.triangles[hit.triangle];
     const gpu::GpuMaterial& material = arrays.materials[arrays.shading[hit.triangle].material];

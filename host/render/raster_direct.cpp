@@ -1,6 +1,7 @@
 #include "render/raster_direct.h"
 
 #include "passes/raster_lights.h"
+#include "util/errors.h"
 #include "util/stopwatch.h"
 #include "vk/context.h"
 
@@ -13,6 +14,10 @@ RasterDirectLight::RasterDirectLight(const GpuScene& scene, const FrameSettings&
         m_placeholder = vk::Buffer(context, "no raster direct", 16, vk::kStorageUsage);
         return;
     }
+    // The shadow volumes' projection is a pinhole's (points at infinity need w = 0).
+    if (camera.orthoHalfHeight > 0.0f)
+        throw InputError("--direct raster: the camera is orthographic; the raster pass needs a perspective camera "
+                         "(use --direct traced, or --fov for a pinhole)");
     // The direct light of the covered lights at the first vertex, once per frame (it is
     // deterministic); every sample adds it.
     const auto lights = buildRasterLights(scene.arrays(), settings.areaLightSamples);

@@ -162,6 +162,24 @@ std::vector<glm::vec3> readVec3Accessor(const tinygltf::Model& model, int access
 
 std::vector<glm::vec2> readVec2Accessor(const tinygltf::Model& model, int accessor) { return readFloats<2>(model, accessor); }
 
+std::vector<glm::vec4> readVec4Accessor(const tinygltf::Model& model, int accessor) { return readFloats<4>(model, accessor); }
+
+std::vector<glm::vec4> readColorAccessor(const tinygltf::Model& model, int accessor) {
+    const std::string name = fmt::format("accessors[{}]", accessor);
+    if (accessor < 0 || static_cast<size_t>(accessor) >= model.accessors.size())
+        fail(name, fmt::format("does not exist (the file has {})", model.accessors.size()));
+    const tinygltf::Accessor& a = model.accessors[accessor];
+    const bool normalizedUnsigned = a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                                     a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+    if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !normalizedUnsigned)
+        fail(name, "COLOR_0 must be float or normalized unsigned byte or short");
+    if (a.type == TINYGLTF_TYPE_VEC4) return readFloats<4>(model, accessor);
+    if (a.type != TINYGLTF_TYPE_VEC3) fail(name, "COLOR_0 must be VEC3 or VEC4");
+    std::vector<glm::vec4> out;
+    for (const glm::vec3& c : readFloats<3>(model, accessor)) out.emplace_back(c, 1.0f);
+    return out;
+}
+
 std::vector<uint32_t> readIndexAccessor(const tinygltf::Model& model, int accessor) {
     if (accessor >= 0 && static_cast<size_t>(accessor) < model.accessors.size() &&
         (!isUnsignedInteger(model.accessors[accessor].componentType) || model.accessors[accessor].normalized))

@@ -14,7 +14,7 @@ constexpr std::array kExtensions{
     GltfExtension{"KHR_materials_transmission", Read, "transmissionFactor (not the texture)"},
     GltfExtension{"KHR_materials_volume", Read, "thicknessFactor and attenuation (not the thickness texture)"},
     GltfExtension{"KHR_mesh_quantization", Read, "any component type for positions, normals, texture coordinates"},
-    GltfExtension{"KHR_texture_transform", Ignored, "textures are sampled untransformed (a warning names each)"},
+    GltfExtension{"KHR_texture_transform", Read, "offset, rotation, scale and texCoord of every material texture"},
     GltfExtension{"KHR_materials_anisotropy", Ignored, "isotropic GGX instead"},
     GltfExtension{"KHR_materials_clearcoat", Ignored, "no clear coat layer"},
     GltfExtension{"KHR_materials_diffuse_transmission", Ignored, "opaque diffuse instead"},

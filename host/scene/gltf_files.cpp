@@ -1,5 +1,7 @@
 #include "scene/gltf_files.h"
 
+#include "scene/gltf_uri_policy.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -33,6 +35,20 @@ void GltfFileAccess::expectBufferLength(const fs::path& canonical, uint64_t byte
     m_bufferLengths[canonical] = byteLength;
 }
 
+void GltfFileAccess::registerUri(const std::string& uri) {
+    const std::string decoded = uriToRelativePath(uri);
+    std::string raw = uri;  // tinygltf's decoding: '+' becomes ' ', then the %-escapes
+    std::replace(raw.begin(), raw.end(), '+', ' ');
+    const std::string asTinygltf = uriToRelativePath(raw);
+    if (asTinygltf == decoded) return;
+    // tinygltf joins its base folder (the scene's folder) and the decoded URI with one '/'.
+    const std::string base = m_folder.string();
+    const auto join = [&](const std::string& name) {
+        return base.empty() ? name : base.back() == '/' ? base + name : base + "/" + name;
+    };
+    m_plusAsSpace.emplace(join(asTinygltf), join(decoded));
+}
+
 tinygltf::FsCallbacks GltfFileAccess::callbacks() {
     return {&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, this};
 }
@@ -44,7 +60,12 @@ bool GltfFileAccess::fileExists(const std::string& path, void* self) {
 }
 
 // tinygltf's default expands "~" and environment variables: a scene must not reach those.
-std::string GltfFileAccess::expandFilePath(const std::string& path, void*) { return path; }
+// '+' read back as a literal (registerUri).
+std::string GltfFileAccess::expandFilePath(const std::string& path, void* self) {
+    const auto& map = static_cast<GltfFileAccess*>(self)->m_plusAsSpace;
+    const auto it = map.find(path);
+    return it == map.end() ? path : it->second;
+}
 
 bool GltfFileAccess::readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path,
                                    void* self) {

@@ -29,6 +29,11 @@ public:
     // tinygltf insists on equality, so reads of this file stop at `byteLength`.
     void expectBufferLength(const std::filesystem::path& canonical, uint64_t byteLength);
 
+    // tinygltf decodes '+' in a URI as a space (form encoding); RFC 3986 makes it a literal. Each
+    // external URI is registered here, so the path tinygltf asks for is mapped back to the file the
+    // URI names.
+    void registerUri(const std::string& uri);
+
     tinygltf::FsCallbacks callbacks();
     static tinygltf::LoadImageDataFunction imageLoader();  // user data: this object
 
@@ -49,6 +54,7 @@ private:
     std::filesystem::path m_folder;
     GltfLimits m_limits;
     std::map<std::filesystem::path, uint64_t> m_bufferLengths;
+    std::map<std::string, std::string> m_plusAsSpace;  // tinygltf's path -> the URI's file
     std::string m_imageError;
     uint64_t m_decodedPixels = 0;  // against maxTotalImagePixels
 };

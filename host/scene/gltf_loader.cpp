@@ -23,6 +23,7 @@
 #include "scene/gltf_files.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_preflight.h"
+#include "scene/gltf_tangents.h"
 #include "util/errors.h"
 #include "util/printable.h"
 
@@ -81,6 +82,15 @@ std::string lastLine(std::string text) {
     return text.size() > 300 ? text.substr(0, 297) + "..." : text;
 }
 
+// A primitive's vertex attributes as read (object space); empty vectors: absent.
+struct Vertices {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs[2];      // TEXCOORD_0, TEXCOORD_1
+    std::vector<glm::vec4> colors;      // COLOR_0 as RGBA
+    std::vector<glm::vec4> tangents;    // TANGENT, or generated (gltf_tangents.cpp) for normal maps
+};
+
 class Loader {
 public:
     Loader(const fs::path& path, const GltfLimits& limits)
@@ -93,10 +103,14 @@ public:
         m_materials.emplace(m_model, m_scene, [this](const std::string& message) { warn(message); });
         m_materials->convertAll();
         describeFile();
-        const int sceneIndex = m_model.defaultScene >= 0 ? m_model.defaultScene : 0;
+        const int sceneIndex = m_limits.sceneIndex >= 0 ? m_limits.sceneIndex
+                               : m_model.defaultScene >= 0 ? m_model.defaultScene
+                                                           : 0;
         const std::string sceneName = fmt::format("scenes[{}]", sceneIndex);
         if (m_model.scenes.empty()) fail("scenes", "the file has no scene, so no triangle geometry to render");
-        if (static_cast<size_t>(sceneIndex) >= m_model.scenes.size()) fail(sceneName, "does not exist");
+        if (static_cast<size_t>(sceneIndex) >= m_model.scenes.size())
+            fail(m_limits.sceneIndex >= 0 ? fmt::format("--scene {}", sceneIndex) : sceneName,
+                 fmt::format("does not exist (the file has {} scene(s))", m_model.scenes.size()));
         checkSize(m_model.scenes[sceneIndex].nodes, sceneName);
         walk(m_model.scenes[sceneIndex].nodes);
         if (m_scene.triangles.empty())
@@ -320,41 +334,75 @@ private:
             return it == primitive.attributes.end() ? -1 : it->second;
         };
         if (attribute("POSITION") < 0) fail(element, "has no POSITION attribute");
-        const std::vector<glm::vec3> positions = readVec3Accessor(m_model, attribute("POSITION"));
-        for (size_t i = 0; i < positions.size(); ++i)
-            if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) || !std::isfinite(positions[i].z))
+        Vertices v;
+        v.positions = readVec3Accessor(m_model, attribute("POSITION"));
+        for (size_t i = 0; i < v.positions.size(); ++i)
+            if (!std::isfinite(v.positions[i].x) || !std::isfinite(v.positions[i].y) || !std::isfinite(v.positions[i].z))
                 fail(element, fmt::format("POSITION {} is NaN or infinite (accessors[{}])", i, attribute("POSITION")));
-        std::vector<glm::vec3> normals;
-        if (attribute("NORMAL") >= 0) normals = readVec3Accessor(m_model, attribute("NORMAL"));
-        std::vector<glm::vec2> uvs;
-        if (attribute("TEXCOORD_0") >= 0) uvs = readVec2Accessor(m_model, attribute("TEXCOORD_0"));
-        if (!normals.empty() && normals.size() != positions.size()) fail(element, "NORMAL and POSITION counts differ");
-        if (!uvs.empty() && uvs.size() != positions.size()) fail(element, "TEXCOORD_0 and POSITION counts differ");
+        if (attribute("NORMAL") >= 0) v.normals = readVec3Accessor(m_model, attribute("NORMAL"));
+        if (attribute("TEXCOORD_0") >= 0) v.uvs[0] = readVec2Accessor(m_model, attribute("TEXCOORD_0"));
+        if (attribute("TEXCOORD_1") >= 0) v.uvs[1] = readVec2Accessor(m_model, attribute("TEXCOORD_1"));
+        if (attribute("COLOR_0") >= 0) v.colors = readColorAccessor(m_model, attribute("COLOR_0"));
+        if (!v.normals.empty() && v.normals.size() != v.positions.size()) fail(element, "NORMAL and POSITION counts differ");
+        for (int set = 0; set < 2; ++set)
+            if (!v.uvs[set].empty() && v.uvs[set].size() != v.positions.size())
+                fail(element, fmt::format("TEXCOORD_{} and POSITION counts differ", set));
+        if (!v.colors.empty() && v.colors.size() != v.positions.size()) fail(element, "COLOR_0 and POSITION counts differ");
+        for (size_t i = 0; i < v.colors.size(); ++i)
+            if (!std::isfinite(v.colors[i].x + v.colors[i].y + v.colors[i].z + v.colors[i].w))
+                fail(element, fmt::format("COLOR_0 {} is NaN or infinite (accessors[{}])", i, attribute("COLOR_0")));
         std::vector<uint32_t> indices;
         if (primitive.indices >= 0) {
             indices = readIndexAccessor(m_model, primitive.indices);
         } else {
-            indices.resize(positions.size());
+            indices.resize(v.positions.size());
             for (size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<uint32_t>(i);
         }
         if (indices.size() % 3 != 0) fail(element, fmt::format("{} vertices is not a multiple of 3", indices.size()));
         for (size_t i = 0; i < indices.size(); ++i)
-            if (indices[i] >= positions.size())
+            if (indices[i] >= v.positions.size())
                 fail(element, fmt::format("index {} (element {} of accessors[{}]) is out of range ({} vertices)",
-                                          indices[i], i, primitive.indices, positions.size()));
+                                          indices[i], i, primitive.indices, v.positions.size()));
         const uint32_t material = primitiveMaterial(primitive, element);
+        checkTexCoordSets(m_scene.materials[material], v, element);
+        const Material& m = m_scene.materials[material];
+        if (m.normalTexture >= 0) {
+            if (attribute("TANGENT") >= 0) {
+                v.tangents = readVec4Accessor(m_model, attribute("TANGENT"));
+                if (v.tangents.size() != v.positions.size()) fail(element, "TANGENT and POSITION counts differ");
+                for (size_t i = 0; i < v.tangents.size(); ++i)
+                    if (!std::isfinite(v.tangents[i].x + v.tangents[i].y + v.tangents[i].z + v.tangents[i].w))
+                        fail(element, fmt::format("TANGENT {} is NaN or infinite (accessors[{}])", i, attribute("TANGENT")));
+            } else {
+                v.tangents = generateTangents(v.positions, v.normals, v.uvs[m_scene.textureViews[m.normalTexture].texCoord],
+                                              indices);
+            }
+        }
         if (m_scene.triangles.size() + indices.size() / 3 > m_limits.maxTriangles)
             fail(element, fmt::format("the scene exceeds the limit of {} triangles", m_limits.maxTriangles));
-        emitTriangles(positions, normals, uvs, indices, world, material);
+        emitTriangles(v, indices, world, material);
     }
 
-    // World-space triangles. Normals use the inverse transpose; a mirroring transform (negative
-    // determinant) swaps two vertices so the winding, and with it the geometric normal, stays
-    // consistent with the transformed normals. Missing normals are flat (per face), as the glTF
-    // spec requires. Triangles with zero area or a non-finite normal are dropped and counted.
-    void emitTriangles(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
-                       const std::vector<glm::vec2>& uvs, const std::vector<uint32_t>& indices,
-                       const glm::dmat4& world, uint32_t material) {
+    // Every texture of the material reads a TEXCOORD set the primitive has (set 0 may be absent:
+    // its coordinates are then zero, as before sets were checked).
+    void checkTexCoordSets(const Material& m, const Vertices& v, const std::string& element) const {
+        for (const int view : {m.baseColorTexture, m.metallicRoughnessTexture, m.emissiveTexture, m.normalTexture}) {
+            if (view < 0) continue;
+            const int set = m_scene.textureViews[view].texCoord;
+            if (set > 0 && v.uvs[set].empty())
+                fail(element, fmt::format("material \"{}\" reads TEXCOORD_{}, which the primitive does not have", m.name, set));
+        }
+    }
+
+    // World-space triangles. Normals use the inverse transpose, tangents the transform itself; a
+    // mirroring transform (negative determinant) swaps two vertices so the winding, and with it
+    // the geometric normal, stays consistent with the transformed normals, and flips the
+    // tangents' handedness. Missing normals are flat (per face), as the glTF spec requires.
+    // Triangles with zero area or a non-finite normal are dropped and counted.
+    void emitTriangles(const Vertices& vertices, const std::vector<uint32_t>& indices, const glm::dmat4& world,
+                       uint32_t material) {
+        const std::vector<glm::vec3>& positions = vertices.positions;
+        const std::vector<glm::vec3>& normals = vertices.normals;
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
         const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
         // Unit length or nothing: double precision so that neither huge nor tiny (but finite)
@@ -377,7 +425,9 @@ private:
                                                          "beyond the +-{:g} units vkphoton handles",
                                                          v[k], m_nodeElement, p.x, p.y, p.z, kMaxCoordinate));
                 t.p[k] = glm::vec3(p);
-                t.uv[k] = uvs.empty() ? glm::vec2(0.0f) : uvs[v[k]];
+                t.uv[k] = vertices.uvs[0].empty() ? glm::vec2(0.0f) : vertices.uvs[0][v[k]];
+                t.uv1[k] = vertices.uvs[1].empty() ? glm::vec2(0.0f) : vertices.uvs[1][v[k]];
+                if (!vertices.colors.empty()) t.color[k] = glm::clamp(vertices.colors[v[k]], 0.0f, 1.0f);
             }
             glm::vec3 face;
             const glm::dvec3 p0(t.p[0]);
@@ -390,6 +440,16 @@ private:
                 ++m_scene.droppedDegenerateTriangles;
                 continue;
             }
+            // Tangents: w = 0 (no normal mapping on this triangle) unless all three are usable.
+            bool tangents = !vertices.tangents.empty();
+            for (int k = 0; k < 3 && tangents; ++k) {
+                const glm::vec4 tangent = vertices.tangents[v[k]];
+                glm::vec3 direction;
+                tangents = tangent.w != 0.0f && unit(glm::dmat3(world) * glm::dvec3(tangent), direction);
+                t.tangent[k] = glm::vec4(direction, (tangent.w < 0.0f) != mirrored ? -1.0f : 1.0f);
+            }
+            if (!tangents)
+                for (glm::vec4& tangent : t.tangent) tangent = glm::vec4(0.0f);
             // An exact copy of an earlier triangle adds nothing to the image, but a million of them
             // overlap in every BVH leaf and make rays too long for the device's loop limit.
             if (!m_triangleKeys.insert(triangleKey(t)).second) {
@@ -406,14 +466,18 @@ private:
         const std::string element = fmt::format("cameras[{}]", index);
         if (static_cast<size_t>(index) >= m_model.cameras.size()) fail(element, "does not exist");
         const tinygltf::Camera& source = m_model.cameras[index];
-        if (source.type != "perspective") {
-            warn(fmt::format("{}: only perspective cameras are supported; {} camera skipped", element, source.type));
-            return;
-        }
-        const double yfov = source.perspective.yfov, aspect = source.perspective.aspectRatio;
+        const bool orthographic = source.type == "orthographic";
+        if (!orthographic && source.type != "perspective")
+            fail(element + ".type", fmt::format("unknown camera type \"{}\"", source.type));
+        const double yfov = orthographic ? 0.6911 : source.perspective.yfov;
+        const double aspect = orthographic ? 0.0 : source.perspective.aspectRatio;
+        const double ymag = orthographic ? source.orthographic.ymag : 0.0;
         if (!(yfov > 0.0 && yfov < kPi)) fail(element + ".perspective.yfov", fmt::format("{} is not in (0, pi)", yfov));
         if (!(aspect >= 0.0 && std::isfinite(aspect)))
             fail(element + ".perspective.aspectRatio", fmt::format("{} is not a positive number (or absent)", aspect));
+        // glTF allows a negative ymag (a mirrored view); the magnitude is the view's half height.
+        if (orthographic && !(std::abs(ymag) > 0.0 && std::abs(ymag) <= kMaxCoordinate))
+            fail(element + ".orthographic.ymag", fmt::format("{} is not a non-zero number within +-{:g}", ymag, kMaxCoordinate));
         // The camera looks down its local -Z with +Y up; orthonormalise in case of scale or shear.
         const glm::dvec3 forward = glm::normalize(-glm::dvec3(world[2]));
         const glm::dvec3 up = glm::normalize(glm::dvec3(world[1]) - glm::dot(glm::dvec3(world[1]), forward) * forward);
@@ -426,6 +490,7 @@ private:
         camera.up = glm::vec3(up);
         camera.yfov = static_cast<float>(yfov);
         camera.aspectRatio = static_cast<float>(aspect);
+        camera.orthoHalfHeight = static_cast<float>(std::abs(ymag));
         m_scene.cameras.push_back(camera);
     }
 

@@ -20,6 +20,8 @@ struct GltfLimits {
     // is a RuntimeError (exit 1): the file is fine, the machine is too small.
     uint64_t deviceMaxTriangles = UINT64_MAX;  // deviceTriangleLimit() of the render's device
     uint64_t maxMemoryBytes = UINT64_MAX;      // --max-memory, else the memory available
+    // Not a limit: which glTF scene to load (--scene); -1: the file's `scene`, else scene 0.
+    int sceneIndex = -1;
 };
 
 // Host memory the loader, the BVH build and the upload need per triangle at their peak, for the
@@ -37,7 +39,7 @@ constexpr double kMaxOffsetPerExtent = 1.0e2;
 constexpr double kMaxRadiometric = 1.0e20;
 constexpr double kMaxTotalPower = 1.0e30;
 
-// Loads the default scene (or scene 0) of a glTF file. Throws vkp::InputError with a message of
+// Loads limits.sceneIndex, else the default scene (or scene 0) of a glTF file. Throws vkp::InputError with a message of
 // the form "FILE: ELEMENT: what is wrong" (e.g. "box.gltf: meshes[2].primitives[0]: ...") for
 // any bad input; never crashes on malformed files. Buffer and image URIs that are absolute, leave
 // the file's folder (".."), or contain shell expansion characters are refused.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -11,6 +12,9 @@
 
 namespace vkp {
 namespace {
+
+// TEXCOORD sets the device holds per vertex: 0 and 1 (GpuTriangleShading).
+constexpr int kMaxTexCoordSet = 1;
 
 [[noreturn]] void fail(const std::string& element, const std::string& what) {
     throw InputError(fmt::format("{}: {}", element, what));
@@ -51,6 +55,14 @@ uint8_t channel(const std::vector<unsigned char>& data, size_t at, bool sixteenB
 
 }  // namespace
 
+bool TextureView::operator<(const TextureView& o) const {
+    const auto key = [](const TextureView& v) {
+        return std::make_tuple(v.image, v.texCoord, v.uvRow0.x, v.uvRow0.y, v.uvRow0.z, v.uvRow1.x, v.uvRow1.y,
+                               v.uvRow1.z, uint32_t(v.wrapS), uint32_t(v.wrapT), v.nearest);
+    };
+    return key(*this) < key(o);
+}
+
 GltfMaterials::GltfMaterials(const tinygltf::Model& model, Scene& scene, Warn warn)
     : m_model(model), m_scene(scene), m_warn(std::move(warn)) {}
 
@@ -89,6 +101,18 @@ Material GltfMaterials::convert(int index) {
                                          pbrName + ".metallicRoughnessTexture");
     m.emissiveTexture = texture(source.emissiveTexture.index, source.emissiveTexture.texCoord,
                                 source.emissiveTexture.extensions, true, element + ".emissiveTexture");
+    m.normalTexture = texture(source.normalTexture.index, source.normalTexture.texCoord,
+                              source.normalTexture.extensions, false, element + ".normalTexture");
+    m.normalScale = static_cast<float>(source.normalTexture.scale);
+    if (!std::isfinite(m.normalScale) || std::abs(m.normalScale) > 1.0e6f)
+        fail(element + ".normalTexture.scale", "must be a finite number");
+    if (source.alphaMode == "MASK") m.alphaMode = AlphaMode::Mask;
+    else if (source.alphaMode == "BLEND") m.alphaMode = AlphaMode::Blend;
+    else if (source.alphaMode != "OPAQUE" && !source.alphaMode.empty())
+        fail(element + ".alphaMode", fmt::format("\"{}\" is not OPAQUE, MASK or BLEND", source.alphaMode));
+    m.alphaCutoff = static_cast<float>(source.alphaCutoff);
+    if (!(m.alphaCutoff >= 0.0f) || !std::isfinite(m.alphaCutoff))
+        fail(element + ".alphaCutoff", fmt::format("{} is not a non-negative number", source.alphaCutoff));
     readExtensions(source, element, m);
     validate(element, m);
     return m;
@@ -142,17 +166,81 @@ int GltfMaterials::texture(int gltfTexture, int texCoord, const tinygltf::Extens
     if (gltfTexture < 0) return -1;
     if (static_cast<size_t>(gltfTexture) >= m_model.textures.size())
         fail(element, fmt::format("textures[{}] does not exist", gltfTexture));
-    if (texCoord != 0) m_warn(fmt::format("{}: uses TEXCOORD_{}; vkphoton reads TEXCOORD_0 for every texture", element, texCoord));
-    if (extension(extensions, "KHR_texture_transform")) m_warn(element + ": KHR_texture_transform is ignored");
     const int source = m_model.textures[gltfTexture].source;
     if (source < 0 || static_cast<size_t>(source) >= m_model.images.size())
         fail(fmt::format("textures[{}]", gltfTexture), "has no PNG or JPEG source image");
+    TextureView view;
+    view.texCoord = texCoord;
+    if (const auto* e = extension(extensions, "KHR_texture_transform"))
+        readTransform(*e, element + ".extensions.KHR_texture_transform", view);
+    if (view.texCoord < 0 || view.texCoord > kMaxTexCoordSet)
+        fail(element + ".texCoord", fmt::format("{} is not a TEXCOORD set vkphoton reads (0 to {})", view.texCoord,
+                                                kMaxTexCoordSet));
+    readSampler(gltfTexture, view);
     const auto key = std::make_pair(source, srgb);
-    if (const auto it = m_textureOf.find(key); it != m_textureOf.end()) return it->second;
-    const int index = static_cast<int>(m_scene.textures.size());
-    m_scene.textures.push_back(convertImage(source, srgb));
-    m_textureOf[key] = index;
+    if (const auto it = m_textureOf.find(key); it != m_textureOf.end()) {
+        view.image = it->second;
+    } else {
+        view.image = static_cast<int>(m_scene.textures.size());
+        m_scene.textures.push_back(convertImage(source, srgb));
+        m_textureOf[key] = view.image;
+    }
+    if (const auto it = m_viewOf.find(view); it != m_viewOf.end()) return it->second;
+    const int index = static_cast<int>(m_scene.textureViews.size());
+    m_scene.textureViews.push_back(view);
+    m_viewOf[view] = index;
     return index;
+}
+
+// glTF samplers: wrapS/wrapT 33071 (clamp), 33648 (mirrored repeat), 10497 (repeat, the
+// default); magFilter 9728 NEAREST, else bilinear. Minification filters (mipmaps) are not read.
+void GltfMaterials::readSampler(int gltfTexture, TextureView& view) {
+    const int index = m_model.textures[gltfTexture].sampler;
+    if (index < 0) return;
+    const std::string element = fmt::format("samplers[{}]", index);
+    if (static_cast<size_t>(index) >= m_model.samplers.size()) fail(element, "does not exist");
+    const tinygltf::Sampler& sampler = m_model.samplers[index];
+    const auto wrap = [&](int mode, const char* key) {
+        switch (mode) {
+        case -1:
+        case TINYGLTF_TEXTURE_WRAP_REPEAT: return TextureWrap::Repeat;
+        case TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE: return TextureWrap::ClampToEdge;
+        case TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT: return TextureWrap::MirroredRepeat;
+        default: fail(fmt::format("{}.{}", element, key), fmt::format("{} is not 33071, 33648 or 10497", mode));
+        }
+    };
+    view.wrapS = wrap(sampler.wrapS, "wrapS");
+    view.wrapT = wrap(sampler.wrapT, "wrapT");
+    if (sampler.magFilter != -1 && sampler.magFilter != TINYGLTF_TEXTURE_FILTER_NEAREST &&
+        sampler.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR)
+        fail(element + ".magFilter", fmt::format("{} is not 9728 (NEAREST) or 9729 (LINEAR)", sampler.magFilter));
+    view.nearest = sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+}
+
+// KHR_texture_transform: uv' = T(offset) R(rotation) S(scale) (u, v, 1) with R's rows (cos, sin)
+// and (-sin, cos) (the extension's GLSL matrix read row by row): TextureTransformTest's arrows
+// point at their green markers with this sense; texCoord overrides the reference's.
+void GltfMaterials::readTransform(const tinygltf::Value& transform, const std::string& element, TextureView& view) {
+    const auto vec2Or = [&](const char* key, glm::dvec2 fallback) {
+        if (!transform.IsObject() || !transform.Has(key)) return fallback;
+        const tinygltf::Value& value = transform.Get(key);
+        if (!value.IsArray() || value.ArrayLen() != 2 || !value.Get(0).IsNumber() || !value.Get(1).IsNumber())
+            fail(fmt::format("{}.{}", element, key), "needs 2 numbers");
+        return glm::dvec2(value.Get(0).GetNumberAsDouble(), value.Get(1).GetNumberAsDouble());
+    };
+    const glm::dvec2 offset = vec2Or("offset", glm::dvec2(0.0));
+    const glm::dvec2 scale = vec2Or("scale", glm::dvec2(1.0));
+    const double rotation = numberOr(transform, "rotation", 0.0, element);
+    if (transform.IsObject() && transform.Has("texCoord")) {
+        const tinygltf::Value& value = transform.Get("texCoord");
+        if (!value.IsInt()) fail(element + ".texCoord", "not an integer");
+        view.texCoord = value.Get<int>();
+    }
+    for (const double v : {offset.x, offset.y, scale.x, scale.y, rotation})
+        if (!std::isfinite(v) || std::abs(v) > 1.0e6) fail(element, "offset, rotation and scale must be finite (within 1e6)");
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    view.uvRow0 = glm::vec3(float(c * scale.x), float(s * scale.y), float(offset.x));
+    view.uvRow1 = glm::vec3(float(-s * scale.x), float(c * scale.y), float(offset.y));
 }
 
 // Decoded image (1-4 channels, 8 or 16 bits) -> RGBA8, R in the low byte. Grey expands to RGB.

@@ -30,14 +30,20 @@ private:
     Material convert(int index);
     void readExtensions(const tinygltf::Material& source, const std::string& element, Material& material);
     void validate(const std::string& element, Material& material);
+    // A material texture reference -> an index into Scene::textureViews (-1 without a texture):
+    // the image (decoded once per colour space), the texCoord set, KHR_texture_transform and the
+    // sampler. Every material texture goes through here.
     int texture(int gltfTexture, int texCoord, const tinygltf::ExtensionMap& extensions, bool srgb,
                      const std::string& element);
+    void readSampler(int gltfTexture, TextureView& view);
+    void readTransform(const tinygltf::Value& transform, const std::string& element, TextureView& view);
     Texture convertImage(int source, bool srgb);
 
     const tinygltf::Model& m_model;
     Scene& m_scene;
     Warn m_warn;
     std::map<std::pair<int, bool>, int> m_textureOf;  // (image, srgb) -> Scene::textures index
+    std::map<TextureView, int> m_viewOf;              // -> Scene::textureViews index
     int m_default = -1;
 };
 

@@ -264,6 +264,7 @@ private:
         const uint64_t size = fs::file_size(*file, ec);
         if (ec || size > m_limits.maxFileBytes)
             fail(where, fmt::format("file {} is larger than the {}-byte limit", shown(uri), m_limits.maxFileBytes));
+        m_files.registerUri(uri);
         return *file;
     }
 

@@ -46,9 +46,7 @@ std::string uriToRelativePath(const std::string& uri) {
         if (uri[i] == '%' && i + 2 < uri.size() && hexValue(uri[i + 1]) >= 0 && hexValue(uri[i + 2]) >= 0) {
             decoded += static_cast<char>(hexValue(uri[i + 1]) * 16 + hexValue(uri[i + 2]));
             i += 2;
-        } else if (uri[i] == '+') {
-            decoded += ' ';  // as tinygltf's (form-style) decoder does
-        } else {
+        } else {  // '+' included: a literal in URIs (RFC 3986), not a space
             decoded += uri[i];
         }
     }

@@ -32,6 +32,24 @@ struct Texture {
     bool srgb = false;              // base colour and emissive textures are sRGB-encoded
 };
 
+// How a material's texture reference samples its image: glTF's texture info (texCoord set),
+// sampler (wrap modes, magnification filter) and KHR_texture_transform. Materials index these
+// views (Scene::textureViews); several views may share one image.
+enum class TextureWrap : uint32_t { Repeat = 0, ClampToEdge = 1, MirroredRepeat = 2 };  // = kTextureWrap* in GLSL
+
+struct TextureView {
+    int image = -1;                  // index into Scene::textures
+    int texCoord = 0;                // TEXCOORD_n set (0 or 1 on the device)
+    glm::vec3 uvRow0{1.0f, 0.0f, 0.0f};  // KHR_texture_transform as two rows: uv' = (row0, row1) . (u, v, 1)
+    glm::vec3 uvRow1{0.0f, 1.0f, 0.0f};
+    TextureWrap wrapS = TextureWrap::Repeat;
+    TextureWrap wrapT = TextureWrap::Repeat;
+    bool nearest = false;            // magFilter NEAREST (9728); otherwise bilinear
+    bool operator<(const TextureView& o) const;  // for de-duplication
+};
+
+enum class AlphaMode : uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
+
 // glTF metallic-roughness material with the extensions vkphoton supports.
 struct Material {
     std::string name;
@@ -45,7 +63,11 @@ struct Material {
     glm::vec3 attenuationColor{1.0f};
     float attenuationDistance = std::numeric_limits<float>::infinity();
     bool doubleSided = false;
-    int baseColorTexture = -1;      // indices into Scene::textures
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    float normalScale = 1.0f;       // normalTexture.scale
+    int normalTexture = -1;
+    int baseColorTexture = -1;      // indices into Scene::textureViews
     int metallicRoughnessTexture = -1;
     int emissiveTexture = -1;
     std::vector<std::string> extensions;  // the glTF extensions the material and its textures name
@@ -56,6 +78,9 @@ struct Triangle {
     glm::vec3 n[3];                 // world-space unit normals (computed when the mesh has none)
     glm::vec2 uv[3];                // TEXCOORD_0, zero when absent
     uint32_t material = 0;          // index into Scene::materials
+    glm::vec2 uv1[3]{};             // TEXCOORD_1, zero when absent
+    glm::vec4 color[3]{glm::vec4(1.0f), glm::vec4(1.0f), glm::vec4(1.0f)};  // COLOR_0 (RGBA), 1 when absent
+    glm::vec4 tangent[3]{};         // world-space unit tangent (xyz) and handedness (w = +-1); w = 0: none
 };
 
 enum class LightType { Point, Spot, Directional };
@@ -79,6 +104,7 @@ struct Camera {
     glm::vec3 up{0.0f, 1.0f, 0.0f};          // unit, orthogonal to forward
     float yfov = 0.6911f;                    // radians
     float aspectRatio = 0.0f;                // 0: take it from the image size
+    float orthoHalfHeight = 0.0f;            // orthographic: glTF ymag (the width follows the image); 0: perspective
 };
 
 // What the glTF file holds beside the rendered scene, for `vkphoton info` (filled by the loader).
@@ -101,8 +127,9 @@ struct Scene {
     std::vector<Triangle> triangles;
     std::vector<Material> materials;
     std::vector<Texture> textures;
+    std::vector<TextureView> textureViews;   // what materials' texture indices refer to
     std::vector<PunctualLight> lights;
-    std::vector<Camera> cameras;             // perspective cameras in node order
+    std::vector<Camera> cameras;             // perspective and orthographic cameras in node order
     Bounds bounds;
     size_t droppedDegenerateTriangles = 0;
     SceneFileInfo file;

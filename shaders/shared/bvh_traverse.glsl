@@ -45,6 +45,13 @@ struct BvhArrays {
 #define BVH_TRIANGLE(i) triangles[i]
 #endif
 
+// Whether a hit on `triangle` (index tri) counts: the including GLSL defines it as glTF's alpha
+// test (scene_access.glsl alphaPasses, for triangles with v0.w != 0); the host traversal has no
+// materials, so every hit counts there.
+#ifndef BVH_ALPHA_TEST
+#define BVH_ALPHA_TEST(triangle, tri, b1, b2, org, dir) true
+#endif
+
 // Triangle index reported by traceClosest when nothing is hit.
 const uint kBvhNoTriangle = 0xffffffffu;
 
@@ -84,7 +91,8 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool an
                 float b1Candidate;
                 float b2Candidate;
                 if (intersectTriangle(org, dir, vec3(triangle.v0), vec3(triangle.v1), vec3(triangle.v2), t,
-                                      tCandidate, b1Candidate, b2Candidate)) {
+                                      tCandidate, b1Candidate, b2Candidate) &&
+                    BVH_ALPHA_TEST(triangle, i, b1Candidate, b2Candidate, org, dir)) {
                     t = tCandidate;
                     tri = i;
                     b1 = b1Candidate;

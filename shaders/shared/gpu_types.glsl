@@ -6,7 +6,8 @@
 #include "compat.glsl"
 SHARED_BEGIN
 
-// Triangle positions in world space; traversal reads only this buffer. w is unused.
+// Triangle positions in world space; traversal reads only this buffer. v0.w is 1 when the
+// triangle's material has an alpha test (alphaMode MASK or BLEND), else 0; the other w are unused.
 struct GpuTriangle {
     vec4 v0;
     vec4 v1;
@@ -14,17 +15,32 @@ struct GpuTriangle {
 };
 STATIC_ASSERT_SIZE(GpuTriangle, 48)
 
-// Shading attributes of the triangle with the same index as in the GpuTriangle buffer.
+// Shading attributes of the triangle with the same index as in the GpuTriangle buffer. Unit
+// vectors are octahedral (shared/photon.glsl encodeOctahedral, 16+16 bits), colours RGBA8, so
+// the per-vertex data of glTF (two TEXCOORD sets, COLOR_0, NORMAL, TANGENT) fit 96 bytes.
 struct GpuTriangleShading {
-    vec4 n0;                // world-space vertex normals (xyz)
-    vec4 n1;
-    vec4 n2;
-    vec4 uv01;              // uv of vertex 0 (xy) and 1 (zw)
+    vec4 uv01;              // TEXCOORD_0 of vertex 0 (xy) and 1 (zw)
     vec2 uv2;
     uint material;
     float emitterPdfArea;   // light-selection probability / area for emissive triangles, else 0
+    vec4 uvB01;             // TEXCOORD_1 of vertex 0 (xy) and 1 (zw)
+    vec2 uvB2;
+    uint n0;                // world-space vertex normals, octahedral
+    uint n1;
+    uint n2;
+    uint color0;            // COLOR_0 of each vertex (packUnorm4x8; white when the mesh has none)
+    uint color1;
+    uint color2;
+    uint tangent0;          // world-space vertex tangents, octahedral (with normal maps only)
+    uint tangent1;
+    uint tangent2;
+    uint tangentSign;       // kTangent*: none (no normal mapping), or the handedness w
 };
-STATIC_ASSERT_SIZE(GpuTriangleShading, 80)
+STATIC_ASSERT_SIZE(GpuTriangleShading, 96)
+
+const uint kTangentNone = 0u;
+const uint kTangentPositive = 1u;   // bitangent = cross(normal, tangent)
+const uint kTangentNegative = 2u;   // bitangent = -cross(normal, tangent)
 
 // Flattened BVH node: children are adjacent (leftOrFirst, leftOrFirst + 1) for inner nodes;
 // leaves (count > 0) hold triangles [leftOrFirst, leftOrFirst + count).
@@ -38,6 +54,8 @@ STATIC_ASSERT_SIZE(GpuBvhNode, 32)
 
 const uint kMaterialDoubleSided = 1u;
 const uint kMaterialThinWalled = 2u;  // transmissive without KHR_materials_volume thickness
+const uint kMaterialAlphaMask = 4u;   // alphaMode MASK: a cut-out where alpha < alphaCutoff
+const uint kMaterialAlphaBlend = 8u;  // alphaMode BLEND: stochastic coverage = alpha
 
 struct GpuMaterial {
     vec4 baseColor;         // linear RGBA factor
@@ -53,8 +71,12 @@ struct GpuMaterial {
     int metallicRoughnessTexture;
     int emissiveTexture;
     uint pad0;
+    int normalTexture;      // tangent-space normal map, -1 when absent
+    float normalScale;
+    float alphaCutoff;
+    uint pad1;
 };
-STATIC_ASSERT_SIZE(GpuMaterial, 80)
+STATIC_ASSERT_SIZE(GpuMaterial, 96)
 
 const uint kLightPoint = 0u;
 const uint kLightSpot = 1u;
@@ -88,14 +110,27 @@ struct GpuLight {
 };
 STATIC_ASSERT_SIZE(GpuLight, 80)
 
-// Textures live in one buffer of packed RGBA8 texels; each entry describes one image.
+const uint kTextureWrapRepeat = 0u;      // = vkp::TextureWrap
+const uint kTextureWrapClamp = 1u;
+const uint kTextureWrapMirrored = 2u;
+const uint kTextureFilterLinear = 0u;
+const uint kTextureFilterNearest = 1u;
+
+// Texture views (scene.h TextureView): an image in the buffer of packed RGBA8 texels, the
+// TEXCOORD set, the KHR_texture_transform and the sampler. Materials index these.
 struct GpuTexture {
     uint offset;            // first texel in the texel buffer
     uint width;
     uint height;
     uint srgb;              // 1: colour data encoded with the sRGB transfer function
+    vec4 uvRow0;            // uv' = (dot(uvRow0.xyz, (u, v, 1)), dot(uvRow1.xyz, (u, v, 1)))
+    vec4 uvRow1;
+    uint texCoord;          // 0: TEXCOORD_0, 1: TEXCOORD_1
+    uint wrapS;             // kTextureWrap*
+    uint wrapT;
+    uint magFilter;         // kTextureFilter* (magnification)
 };
-STATIC_ASSERT_SIZE(GpuTexture, 16)
+STATIC_ASSERT_SIZE(GpuTexture, 64)
 
 struct GpuCamera {
     vec3 position;
@@ -105,15 +140,25 @@ struct GpuCamera {
     vec3 up;
     float pad0;
     vec3 forward;
-    float pad1;
+    // glTF orthographic camera: ymag (half the view's height); 0: pinhole. In the padding, not
+    // at the end: the guided path tracer's push constants are exactly the guaranteed 128 bytes.
+    float orthoHalfHeight;
 };
 STATIC_ASSERT_SIZE(GpuCamera, 64)
 
-// Pinhole camera ray through a (sub)pixel position (0..width, 0..height, y down).
+// Camera ray through a (sub)pixel position (0..width, 0..height, y down): from the pinhole
+// through the pixel, or (orthographic) along forward from the pixel's point on the view plane.
 INLINE vec3 cameraRayDirection(GpuCamera cam, uint width, uint height, vec2 pixel) {
+    if (cam.orthoHalfHeight > 0.0f) return cam.forward;
     vec2 ndc = vec2(2.0f * pixel.x / float(width) - 1.0f, 1.0f - 2.0f * pixel.y / float(height));
     return normalize(cam.forward + ndc.x * cam.aspect * cam.tanHalfFovY * cam.right +
                      ndc.y * cam.tanHalfFovY * cam.up);
+}
+
+INLINE vec3 cameraRayOrigin(GpuCamera cam, uint width, uint height, vec2 pixel) {
+    if (cam.orthoHalfHeight <= 0.0f) return cam.position;
+    vec2 ndc = vec2(2.0f * pixel.x / float(width) - 1.0f, 1.0f - 2.0f * pixel.y / float(height));
+    return cam.position + ndc.x * cam.aspect * cam.orthoHalfHeight * cam.right + ndc.y * cam.orthoHalfHeight * cam.up;
 }
 
 const uint kPathFlagNoDirectLightSampling = 1u;  // BSDF sampling only (test/reference mode)

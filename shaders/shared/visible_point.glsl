@@ -15,12 +15,12 @@ struct GpuVisiblePoint {
     uint material;
     vec3 throughput;        // camera path weight up to this point (delta bounces, absorption)
     uint shadingNormal;     // octahedral (photon.glsl), on the side the camera path arrived from
-    vec2 uv;
+    vec2 barycentrics;      // (b1, b2) on `triangle`: the material's textures and COLOR_0 there
     uint wo;                // octahedral unit vector towards the previous path vertex
     uint geometricNormal;   // octahedral, on the arrival side (for offsetting gather rays)
     uint flags;
     uint pixel;
-    uint pad0;
+    uint triangle;          // BVH order
     uint pad1;
 };
 STATIC_ASSERT_SIZE(GpuVisiblePoint, 64)

@@ -428,6 +428,62 @@ def bad_cases():
     damaged[42] ^= 0x55  # inside the IDAT data (the chunk starts at byte 33)
     add("png_bad_crc.gltf", textured({"uri": data_uri(bytes(damaged), "image/png")}), "chunk at byte 33 fails its CRC check")
 
+    # Issue 13: texture sets, transforms, samplers, tangents and colours.
+    one_texel = data_uri(png(1, 1, b"\0\xff\0\0\xff"), "image/png")
+
+    def texture_ref(ref, sampler=None):
+        def change(d):
+            d["materials"][0]["pbrMetallicRoughness"] = {"baseColorTexture": dict(ref, index=0)}
+            d["textures"] = [{"source": 0}]
+            d["images"] = [{"uri": one_texel}]
+            if sampler is not None:
+                d["textures"][0]["sampler"] = 0
+                d["samplers"] = [sampler]
+        return changed(change)
+
+    add("texcoord_set_missing.gltf", texture_ref({"texCoord": 1}),
+        'meshes[0].primitives[0]: material "lamp" reads TEXCOORD_1, which the primitive does not have')
+    add("texcoord_set_beyond.gltf", texture_ref({"texCoord": 7}),
+        "materials[0].pbrMetallicRoughness.baseColorTexture.texCoord: 7 is not a TEXCOORD set vkphoton reads (0 to 1)")
+    add("texture_transform_texcoord_beyond.gltf",
+        texture_ref({"extensions": {"KHR_texture_transform": {"texCoord": 2}}}),
+        "baseColorTexture.texCoord: 2 is not a TEXCOORD set vkphoton reads")
+    add("texture_transform_bad_offset.gltf",
+        texture_ref({"extensions": {"KHR_texture_transform": {"offset": [1, "x"]}}}),
+        "baseColorTexture.extensions.KHR_texture_transform.offset[1]: \"x\" is not a number")
+    add("texture_transform_huge_scale.gltf",
+        texture_ref({"extensions": {"KHR_texture_transform": {"scale": [1e30, 1]}}}),
+        "KHR_texture_transform: offset, rotation and scale must be finite (within 1e6)")
+    add("sampler_bad_wrap.gltf", texture_ref({}, {"wrapS": 1234}), "samplers[0].wrapS")
+    add("sampler_bad_filter.gltf", texture_ref({}, {"magFilter": 9984}), "samplers[0].magFilter")
+
+    def vertex_attribute(name, values, kind, material=None):
+        def change(d):
+            raw = struct.pack("<%df" % len(values), *values)
+            d["buffers"].append({"byteLength": len(raw), "uri": data_uri(raw)})
+            d["bufferViews"].append({"buffer": 1, "byteLength": len(raw)})
+            d["accessors"].append({"bufferView": 1, "componentType": FLOAT, "count": 3, "type": kind})
+            d["meshes"][0]["primitives"][0]["attributes"][name] = 1
+            if material:
+                material(d)
+        return changed(change)
+
+    def normal_mapped(d):
+        d["materials"][0]["normalTexture"] = {"index": 0}
+        d["textures"] = [{"source": 0}]
+        d["images"] = [{"uri": one_texel}]
+    nan = float("nan")
+    add("tangent_nan.gltf", vertex_attribute("TANGENT", [1, 0, 0, 1, nan, 0, 0, 1, 1, 0, 0, 1], "VEC4", normal_mapped),
+        "meshes[0].primitives[0]: TANGENT 1 is NaN or infinite (accessors[1])")
+    add("color_nan.gltf", vertex_attribute("COLOR_0", [1, 1, 1, 1, 1, nan, 1, 1, 1], "VEC3"),
+        "meshes[0].primitives[0]: COLOR_0 1 is NaN or infinite (accessors[1])")
+    add("color_signed.gltf",
+        changed(lambda d: (d["accessors"].append({"bufferView": 0, "componentType": 5120, "normalized": True,
+                                                  "count": 3, "type": "VEC3"}),
+                           d["meshes"][0]["primitives"][0]["attributes"].update(COLOR_0=1))),
+        "accessors[1]: COLOR_0 must be float or normalized unsigned byte or short")
+    add("alpha_mode_unknown.gltf", mat(lambda m: m.update(alphaMode="CUTOUT")), "materials[0].alphaMode")
+
     # GLB containers.
     glb_doc = triangle_doc()
     del glb_doc["buffers"][0]["uri"]

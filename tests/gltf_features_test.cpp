@@ -1,0 +1,548 @@
+// glTF features with closed-form images (issue 13), rendered by the path tracer and the photon
+// integrator. The scene: a Lambertian quad [-1, 1]^2 in the y = 0 plane (facing +y, ior 1 so no
+// specular lobe), a directional light straight down with irradiance pi W/m^2 (683 pi lux), and an
+// orthographic camera above it looking down whose view is exactly the quad (image x = +x, image
+// y = +z, TEXCOORD u = (x + 1) / 2, v = (z + 1) / 2: the texture appears as it is stored). Each
+// pixel centre then sees radiance albedo * cos(theta) exactly: rho / pi * E * cos with E = pi.
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <stb/stb_image_write.h>
+#include <unistd.h>
+
+#include "gpu_test_support.h"
+#include "image/image.h"
+#include "image/metrics.h"
+#include "render/integrators/path_integrator.h"
+#include "render/integrators/photon_integrator.h"
+#include "render/renderer.h"
+#include "scene/gltf_loader.h"
+#include "scene/gltf_tangents.h"
+#include "gpu_scene/scene_buffers.h"
+#include "gpu_scene/textured_emission.h"
+#include "test_scenes.h"
+
+namespace vkp {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr uint32_t kSize = 32;
+
+std::string base64(const std::vector<uint8_t>& bytes) {
+    static const char* kTable = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        uint32_t v = bytes[i] << 16;
+        if (i + 1 < bytes.size()) v |= bytes[i + 1] << 8;
+        if (i + 2 < bytes.size()) v |= bytes[i + 2];
+        out += kTable[(v >> 18) & 63];
+        out += kTable[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? kTable[(v >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? kTable[v & 63] : '=';
+    }
+    return out;
+}
+
+std::string pngUri(int width, int height, const std::vector<uint8_t>& rgba) {
+    std::vector<uint8_t> bytes;
+    stbi_write_png_to_func(
+        [](void* context, void* data, int size) {
+            auto* out = static_cast<std::vector<uint8_t>*>(context);
+            out->insert(out->end(), static_cast<uint8_t*>(data), static_cast<uint8_t*>(data) + size);
+        },
+        &bytes, width, height, 4, rgba.data(), width * 4);
+    return "data:image/png;base64," + base64(bytes);
+}
+
+// A width x height RGBA image, every texel `fill`, texel (x, y) = `mark`.
+std::vector<uint8_t> markedImage(int width, int height, std::array<uint8_t, 4> fill, int x, int y,
+                                 std::array<uint8_t, 4> mark) {
+    std::vector<uint8_t> rgba;
+    for (int j = 0; j < height; ++j)
+        for (int i = 0; i < width; ++i) {
+            const auto& c = (i == x && j == y) ? mark : fill;
+            rgba.insert(rgba.end(), c.begin(), c.end());
+        }
+    return rgba;
+}
+
+class QuadDoc {
+public:
+    QuadDoc() {
+        // Corners counter-clockwise seen from +y: (-1,0,1), (1,0,1), (1,0,-1), (-1,0,-1).
+        const float positions[12] = {-1, 0, 1, 1, 0, 1, 1, 0, -1, -1, 0, -1};
+        const float normals[12] = {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0};
+        attribute("POSITION", bytes(positions, sizeof positions), 5126, "VEC3", false);
+        attribute("NORMAL", bytes(normals, sizeof normals), 5126, "VEC3", false);
+        const float uvs[8] = {0, 1, 1, 1, 1, 0, 0, 0};
+        attribute("TEXCOORD_0", bytes(uvs, sizeof uvs), 5126, "VEC2", false);
+        const uint16_t indices[6] = {0, 1, 2, 0, 2, 3};
+        m_doc["meshes"][0]["primitives"][0]["indices"] = accessor(bytes(indices, sizeof indices), 5123, "SCALAR", false);
+        const double r = std::sqrt(0.5);
+        m_doc["asset"] = {{"version", "2.0"}};
+        m_doc["scene"] = 0;
+        m_doc["scenes"] = {{{"nodes", {0, 1, 2}}}};
+        // Local -Z turned to -y (and local +Y to -z): the camera and the light look straight down.
+        m_doc["nodes"] = {{{"mesh", 0}},
+                          {{"camera", 0}, {"translation", {0, 2, 0}}, {"rotation", {-r, 0, 0, r}}},
+                          {{"rotation", {-r, 0, 0, r}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}};
+        m_doc["cameras"] = {{{"type", "orthographic"},
+                             {"orthographic", {{"xmag", 1}, {"ymag", 1}, {"znear", 0.01}, {"zfar", 10}}}}};
+        m_doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+            {{"type", "directional"}, {"intensity", 683.0 * 3.14159265358979}}};
+        m_doc["meshes"][0]["primitives"][0]["material"] = 0;
+        m_doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1}}, {"metallicFactor", 0},
+                                                         {"roughnessFactor", 1}}},
+                               {"extensions", {{"KHR_materials_ior", {{"ior", 1.0}}}}}}};
+    }
+
+    json& doc() { return m_doc; }
+    json& material() { return m_doc["materials"][0]; }
+
+    static std::vector<uint8_t> bytes(const void* data, size_t size) {
+        const auto* p = static_cast<const uint8_t*>(data);
+        std::vector<uint8_t> out(p, p + size);
+        while (out.size() % 4) out.push_back(0);
+        return out;
+    }
+
+    int accessor(const std::vector<uint8_t>& data, int componentType, const char* type, bool normalized, int count = 4) {
+        if (std::string(type) == "SCALAR") count = 6;
+        m_doc["buffers"].push_back({{"byteLength", data.size()}, {"uri", "data:application/octet-stream;base64," + base64(data)}});
+        m_doc["bufferViews"].push_back({{"buffer", m_doc["buffers"].size() - 1}, {"byteLength", data.size()}});
+        json a = {{"bufferView", m_doc["bufferViews"].size() - 1}, {"componentType", componentType}, {"count", count},
+                  {"type", type}};
+        if (normalized) a["normalized"] = true;
+        if (std::string(type) == "VEC3" && m_doc["accessors"].empty()) {
+            a["min"] = {-1, 0, -1};
+            a["max"] = {1, 0, 1};
+        }
+        m_doc["accessors"].push_back(a);
+        return static_cast<int>(m_doc["accessors"].size() - 1);
+    }
+
+    void attribute(const char* name, const std::vector<uint8_t>& data, int componentType, const char* type, bool normalized) {
+        m_doc["meshes"][0]["primitives"][0]["attributes"][name] = accessor(data, componentType, type, normalized);
+    }
+
+    // A texture over `image` with an optional sampler; returns the texture index.
+    int texture(const std::string& uri, json sampler = nullptr) {
+        m_doc["images"].push_back({{"uri", uri}});
+        json t = {{"source", m_doc["images"].size() - 1}};
+        if (!sampler.is_null()) {
+            m_doc["samplers"].push_back(sampler);
+            t["sampler"] = m_doc["samplers"].size() - 1;
+        }
+        m_doc["textures"].push_back(t);
+        return static_cast<int>(m_doc["textures"].size() - 1);
+    }
+
+private:
+    json m_doc = json::object();
+};
+
+class GltfFeatures : public test::GpuTest {
+protected:
+    void SetUp() override {
+        m_dir = fs::temp_directory_path() / ("vkphoton-features-" + std::to_string(::getpid()) + "-" +
+                                             ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(m_dir);
+        fs::create_directories(m_dir);
+    }
+    void TearDown() override { fs::remove_all(m_dir); }
+
+    Scene load(QuadDoc& q) {
+        const fs::path path = m_dir / "scene.gltf";
+        std::ofstream(path) << q.doc().dump();
+        return loadGltf(path);
+    }
+
+    // Path tracer at pixel centres: every sample is the closed form, so a few suffice.
+    static ImageRgb pathTraced(const Scene& scene, uint32_t spp = 4) {
+        Renderer renderer(test::gpu(), scene);
+        FrameSettings s;
+        s.width = kSize;
+        s.height = kSize;
+        s.samplesPerPixel = spp;
+        s.seed = 1;
+        s.pixelCentres = true;
+        return renderer.render<PathIntegrator>(s).image;
+    }
+
+    static ImageRgb photonMapped(const Scene& scene) {
+        Renderer renderer(test::gpu(), scene);
+        FrameSettings s;
+        s.width = kSize;
+        s.height = kSize;
+        s.samplesPerPixel = 4;
+        s.seed = 2;
+        s.pixelCentres = true;
+        PhotonIntegratorSettings p;
+        p.globalPaths = 20000;
+        p.causticPaths = 0;
+        p.gatherRays = 1;
+        return renderer.render<PhotonIntegrator>(s, p).image;
+    }
+
+    fs::path m_dir;
+};
+
+float pixel(const ImageRgb& image, uint32_t x, uint32_t y, int channel = 0) {
+    return image.pixels[3 * (size_t(y) * image.width + x) + channel];
+}
+
+// The pixel whose centre sees texture coordinate (u, v).
+uint32_t at(float t) { return static_cast<uint32_t>(t * kSize); }
+
+void expectEverywhere(const ImageRgb& image, float expected, float tolerance, const char* what) {
+    int wrong = 0;
+    for (uint32_t y = 0; y < image.height; ++y)
+        for (uint32_t x = 0; x < image.width; ++x)
+            if (std::abs(pixel(image, x, y) - expected) > tolerance && wrong++ < 3)
+                ADD_FAILURE() << what << ": pixel (" << x << ", " << y << ") is " << pixel(image, x, y) << ", expected "
+                              << expected;
+    EXPECT_EQ(wrong, 0) << what;
+}
+
+TEST_F(GltfFeatures, OrthographicCameraSeesTheQuadAtItsAlbedo) {
+    QuadDoc q;
+    const Scene scene = load(q);
+    ASSERT_EQ(scene.cameras.size(), 1u);
+    EXPECT_FLOAT_EQ(scene.cameras[0].orthoHalfHeight, 1.0f);
+    expectEverywhere(pathTraced(scene), 0.8f, 1e-3f, "path tracer");
+    expectEverywhere(photonMapped(scene), 0.8f, 1e-3f, "photon integrator");
+}
+
+TEST_F(GltfFeatures, VertexColourMultipliesTheBaseColour) {
+    {
+        QuadDoc q;  // float VEC3 0.5
+        const float colours[12] = {0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f};
+        q.attribute("COLOR_0", QuadDoc::bytes(colours, sizeof colours), 5126, "VEC3", false);
+        const Scene scene = load(q);
+        // The device holds vertex colours as RGBA8: 0.5 becomes 128 / 255.
+        const float half = 0.8f * 128.0f / 255.0f;
+        expectEverywhere(pathTraced(scene), half, 1e-3f, "float COLOR_0, path tracer");
+        expectEverywhere(photonMapped(scene), half, 1e-3f, "float COLOR_0, photon integrator");
+    }
+    {
+        QuadDoc q;  // normalized unsigned byte VEC4: red channel 51/255 = 0.2, the others 1
+        uint8_t colours[16];
+        for (int i = 0; i < 4; ++i) { colours[4 * i] = 51; colours[4 * i + 1] = colours[4 * i + 2] = colours[4 * i + 3] = 255; }
+        q.attribute("COLOR_0", QuadDoc::bytes(colours, sizeof colours), 5121, "VEC4", true);
+        const ImageRgb image = pathTraced(load(q));
+        EXPECT_NEAR(pixel(image, 5, 7, 0), 0.8f * 0.2f, 1e-3f);
+        EXPECT_NEAR(pixel(image, 5, 7, 1), 0.8f, 1e-3f);
+    }
+    {
+        QuadDoc q;  // normalized unsigned short VEC3, 0.5 at two corners and 1 at the others: interpolated
+        uint16_t colours[12];
+        for (int i = 0; i < 12; ++i) colours[i] = (i / 3) % 2 == 0 ? 32768 : 65535;
+        q.attribute("COLOR_0", QuadDoc::bytes(colours, sizeof colours), 5123, "VEC3", true);
+        const ImageRgb image = pathTraced(load(q));
+        // Vertices 0 (u 0, v 1) and 2 (u 1, v 0) are 0.5: the diagonal of the two triangles.
+        EXPECT_NEAR(pixel(image, kSize - 1 - 3, 3), 0.8f * (32768.0f / 65535.0f) * 1.0f, 0.03f);
+        EXPECT_GT(pixel(image, 1, 1), 0.75f);
+    }
+}
+
+TEST_F(GltfFeatures, TextureTransformMovesAKnownTexel) {
+    // 4x4 black with texel (0, 0) white, sampled NEAREST: the white block is at u, v in [0, 0.25).
+    const std::string image = pngUri(4, 4, markedImage(4, 4, {0, 0, 0, 255}, 0, 0, {255, 255, 255, 255}));
+    const json nearest = {{"magFilter", 9728}};
+    {
+        QuadDoc q;
+        q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", q.texture(image, nearest)}};
+        const ImageRgb a = pathTraced(load(q));
+        EXPECT_NEAR(pixel(a, at(0.1f), at(0.1f)), 0.8f, 1e-3f);
+        EXPECT_NEAR(pixel(a, at(0.6f), at(0.9f)), 0.0f, 1e-3f);
+    }
+    {
+        // offset (0.5, 0.25): u' = u + 0.5 and v' = v + 0.25 read texel (0, 0) at u in [0.5, 0.75), v in [0.75, 1).
+        QuadDoc q;
+        q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {
+            {"index", q.texture(image, nearest)},
+            {"extensions", {{"KHR_texture_transform", {{"offset", {0.5, 0.25}}}}}}};
+        const Scene scene = load(q);
+        const ImageRgb a = pathTraced(scene);
+        EXPECT_NEAR(pixel(a, at(0.1f), at(0.1f)), 0.0f, 1e-3f);
+        EXPECT_NEAR(pixel(a, at(0.6f), at(0.9f)), 0.8f, 1e-3f);
+        const ImageRgb b = photonMapped(scene);
+        EXPECT_NEAR(pixel(b, at(0.6f), at(0.9f)), 0.8f, 1e-3f);
+        EXPECT_NEAR(pixel(b, at(0.1f), at(0.1f)), 0.0f, 1e-3f);
+    }
+    {
+        // rotation pi (either sense): u' = -u, v' = -v, so the texel appears at u, v in (0.75, 1].
+        QuadDoc q;
+        q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {
+            {"index", q.texture(image, nearest)},
+            {"extensions", {{"KHR_texture_transform", {{"rotation", 3.14159265358979}}}}}};
+        const ImageRgb a = pathTraced(load(q));
+        EXPECT_NEAR(pixel(a, at(0.9f), at(0.9f)), 0.8f, 1e-3f);
+        EXPECT_NEAR(pixel(a, at(0.1f), at(0.1f)), 0.0f, 1e-3f);
+    }
+    {
+        // TEXCOORD_1 = TEXCOORD_0 mirrored in u, chosen by the transform's texCoord override.
+        QuadDoc q;
+        const float uvs[8] = {1, 1, 0, 1, 0, 0, 1, 0};
+        q.attribute("TEXCOORD_1", QuadDoc::bytes(uvs, sizeof uvs), 5126, "VEC2", false);
+        q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {
+            {"index", q.texture(image, nearest)}, {"extensions", {{"KHR_texture_transform", {{"texCoord", 1}}}}}};
+        const ImageRgb a = pathTraced(load(q));
+        EXPECT_NEAR(pixel(a, at(0.9f), at(0.1f)), 0.8f, 1e-3f);
+        EXPECT_NEAR(pixel(a, at(0.1f), at(0.1f)), 0.0f, 1e-3f);
+    }
+}
+
+TEST_F(GltfFeatures, SamplerWrapModesAndFilters) {
+    // 4x4 black with texel (3, 3) white, scale 2: u' = 2u. At u = 0.7 (u' = 1.4): repeat reads
+    // column 1 (black), clamp column 3 (white), mirrored 2 - 1.4 = 0.6, column 2 (black). At
+    // u = 0.55 (u' = 1.1): repeat column 0, clamp column 3, mirrored 0.9, column 3.
+    const std::string image = pngUri(4, 4, markedImage(4, 4, {0, 0, 0, 255}, 3, 3, {255, 255, 255, 255}));
+    const auto render = [&](int wrap) {
+        QuadDoc q;
+        q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {
+            {"index", q.texture(image, {{"magFilter", 9728}, {"wrapS", wrap}, {"wrapT", wrap}})},
+            {"extensions", {{"KHR_texture_transform", {{"scale", {2, 2}}}}}}};
+        return pathTraced(load(q));
+    };
+    const ImageRgb repeat = render(10497), clamp = render(33071), mirrored = render(33648);
+    EXPECT_NEAR(pixel(repeat, at(0.7f), at(0.7f)), 0.0f, 1e-3f);
+    EXPECT_NEAR(pixel(clamp, at(0.7f), at(0.7f)), 0.8f, 1e-3f);
+    EXPECT_NEAR(pixel(mirrored, at(0.7f), at(0.7f)), 0.0f, 1e-3f);
+    EXPECT_NEAR(pixel(repeat, at(0.55f), at(0.55f)), 0.0f, 1e-3f);
+    EXPECT_NEAR(pixel(clamp, at(0.55f), at(0.55f)), 0.8f, 1e-3f);
+    EXPECT_NEAR(pixel(mirrored, at(0.55f), at(0.55f)), 0.8f, 1e-3f);
+    EXPECT_NEAR(pixel(repeat, at(0.9f), at(0.9f)), 0.8f, 1e-3f);
+
+    // 2x1 black | white: at a pixel centre u, NEAREST reads one texel, LINEAR mixes by 2u - 0.5
+    // (the linear values; sRGB black and white are 0 and 1).
+    const std::string pair = pngUri(2, 1, {0, 0, 0, 255, 255, 255, 255, 255});
+    for (const int filter : {9728, 9729}) {
+        QuadDoc q;
+        q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {
+            {"index", q.texture(pair, {{"magFilter", filter}, {"wrapS", 33071}})}};
+        const ImageRgb image = pathTraced(load(q));
+        const uint32_t x = 14;
+        const float u = (x + 0.5f) / kSize;
+        const float expected = filter == 9728 ? 0.0f : 0.8f * (2.0f * u - 0.5f);
+        EXPECT_NEAR(pixel(image, x, 5), expected, 2e-3f) << "magFilter " << filter;
+    }
+}
+
+// A second quad 1 above the floor, scaled by 1.2 so it covers the floor from the camera and the
+// light, with material 1 (black, so nothing it reflects adds to the image).
+void addOccluder(QuadDoc& q, json alphaMaterial) {
+    json& doc = q.doc();
+    json mesh = doc["meshes"][0];
+    mesh["primitives"][0]["material"] = 1;
+    doc["meshes"].push_back(mesh);
+    doc["nodes"].push_back({{"mesh", 1}, {"translation", {0, 1, 0}}, {"scale", {1.2, 1, 1.2}}});
+    doc["scenes"][0]["nodes"].push_back(doc["nodes"].size() - 1);
+    alphaMaterial["pbrMetallicRoughness"]["metallicFactor"] = 0;
+    alphaMaterial["extensions"]["KHR_materials_ior"]["ior"] = 1.0;  // no specular lobe either
+    doc["materials"].push_back(alphaMaterial);
+}
+
+TEST_F(GltfFeatures, AlphaMaskCutsOutAndBlendCoversByAlpha) {
+    const auto black = [](double alpha) { return json{{"baseColorFactor", {0, 0, 0, alpha}}}; };
+    {
+        QuadDoc q;  // alpha 0.3 below the cutoff 0.5: the camera and the light see through
+        addOccluder(q, {{"alphaMode", "MASK"}, {"pbrMetallicRoughness", black(0.3)}});
+        const Scene scene = load(q);
+        expectEverywhere(pathTraced(scene), 0.8f, 1e-3f, "masked out, path tracer");
+        expectEverywhere(photonMapped(scene), 0.8f, 1e-3f, "masked out, photon integrator");
+    }
+    {
+        QuadDoc q;  // alpha 0.7 at cutoff 0.6: opaque and black
+        addOccluder(q, {{"alphaMode", "MASK"}, {"alphaCutoff", 0.6}, {"pbrMetallicRoughness", black(0.7)}});
+        const Scene scene = load(q);
+        expectEverywhere(pathTraced(scene), 0.0f, 1e-6f, "masked in, path tracer");
+        expectEverywhere(photonMapped(scene), 0.0f, 1e-6f, "masked in, photon integrator");
+    }
+    {
+        QuadDoc q;  // a texture's alpha: the left half (u < 0.5) alpha 0, the right half alpha 1
+        json m = {{"alphaMode", "MASK"}, {"pbrMetallicRoughness", black(1.0)}};
+        m["pbrMetallicRoughness"]["baseColorTexture"] = {
+            {"index", q.texture(pngUri(2, 1, {0, 0, 0, 0, 0, 0, 0, 255}), {{"magFilter", 9728}})}};
+        addOccluder(q, m);
+        const ImageRgb image = pathTraced(load(q));
+        // The occluder spans 1.2: its u = 0.5 lies above x = 0 all the same.
+        EXPECT_NEAR(pixel(image, at(0.2f), 10), 0.8f, 1e-3f);
+        EXPECT_NEAR(pixel(image, at(0.8f), 10), 0.0f, 1e-6f);
+    }
+    {
+        // BLEND, alpha 0.5: the camera sees the floor with probability 0.5, and the floor sees
+        // the light with probability 0.5: mean 0.8 / 4, unbiased; the same seed, the same bits.
+        QuadDoc q;
+        addOccluder(q, {{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", black(0.5)}});
+        const Scene scene = load(q);
+        Renderer renderer(test::gpu(), scene);
+        FrameSettings s;
+        s.width = kSize;
+        s.height = kSize;
+        s.samplesPerPixel = 16;
+        s.seed = 3;
+        const ImageRgb a = renderer.render<PathIntegrator>(s).image;
+        const ImageRgb b = renderer.render<PathIntegrator>(s).image;
+        EXPECT_EQ(std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(float)), 0);
+        // 16384 samples of 0 or 0.8 (p = 1/4): standard error 0.0027.
+        EXPECT_NEAR(meanValue(a), 0.2, 0.015);
+        PhotonIntegratorSettings p;
+        p.globalPaths = 20000;
+        p.causticPaths = 0;
+        p.gatherRays = 1;
+        EXPECT_NEAR(meanValue(renderer.render<PhotonIntegrator>(s, p).image), 0.2, 0.015);
+    }
+}
+
+// A 1x1 normal map: tangent-space normal (r, g, b) / 255 * 2 - 1.
+std::string normalMapUri(uint8_t r, uint8_t g, uint8_t b) { return pngUri(1, 1, {r, g, b, 255}); }
+
+// The light from direction (0, cos 30deg, -sin 30deg) (from the -z side: image up, the normal
+// map's +Y on this quad, whose tangent is +x and bitangent -z). Radiance: 0.8 cos(n', wi).
+void tiltLight(QuadDoc& q) {
+    const double a = -120.0 * 3.14159265358979 / 180.0;  // about x: local -Z to (0, sin a, -cos a)
+    q.doc()["nodes"][2]["rotation"] = {std::sin(a / 2), 0, 0, std::cos(a / 2)};
+}
+
+float expectedTilted(glm::vec3 map, glm::vec3 wi) {
+    const glm::vec3 m = map / 255.0f * 2.0f - 1.0f;
+    const glm::vec3 n = glm::normalize(m.x * glm::vec3(1, 0, 0) + m.y * glm::vec3(0, 0, -1) + m.z * glm::vec3(0, 1, 0));
+    return 0.8f * std::max(0.0f, glm::dot(n, wi));
+}
+
+TEST_F(GltfFeatures, ConstantTiltNormalMapGivesTheTiltedCosine) {
+    const glm::vec3 wi(0.0f, std::cos(glm::radians(30.0f)), -std::sin(glm::radians(30.0f)));
+    for (const bool tangents : {false, true})
+        for (const glm::vec3 map : {glm::vec3(128, 204, 229), glm::vec3(204, 128, 229), glm::vec3(128, 52, 229)}) {
+            QuadDoc q;
+            tiltLight(q);
+            if (tangents) {
+                const float t[16] = {1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1};
+                q.attribute("TANGENT", QuadDoc::bytes(t, sizeof t), 5126, "VEC4", false);
+            }
+            q.material()["normalTexture"] = {{"index", q.texture(normalMapUri(uint8_t(map.x), uint8_t(map.y), uint8_t(map.z)))}};
+            const Scene scene = load(q);
+            const float expected = expectedTilted(map, wi);
+            const std::string what = (tangents ? "TANGENT, map " : "generated tangents, map ") + std::to_string(map.x) +
+                                     " " + std::to_string(map.y);
+            expectEverywhere(pathTraced(scene), expected, 2e-3f, (what + ", path tracer").c_str());
+            if (map.y == 204) expectEverywhere(photonMapped(scene), expected, 2e-3f, (what + ", photon integrator").c_str());
+        }
+    // normalTexture.scale 0 flattens the map: the flat quad's cos 30deg.
+    QuadDoc q;
+    tiltLight(q);
+    q.material()["normalTexture"] = {{"index", q.texture(normalMapUri(204, 128, 229))}, {"scale", 0.0}};
+    expectEverywhere(pathTraced(load(q)), expectedTilted(glm::vec3(127.5f, 127.5f, 255.0f), wi), 2e-3f, "scale 0");
+}
+
+// Known tangents: a quad in the z = 0 plane with u along +x and v down the image (v = 1 - y):
+// tangent +x, and the map's +Y (image up) is +y = cross(+z, +x): w = +1. Mirrored u: tangent -x, w = -1.
+TEST(GltfTangents, GeneratedTangentsMatchKnownOnes) {
+    const std::vector<glm::vec3> positions{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    const std::vector<glm::vec3> normals(4, glm::vec3(0, 0, 1));
+    const std::vector<uint32_t> indices{0, 1, 2, 0, 2, 3};
+    std::vector<glm::vec2> uvs;
+    for (const glm::vec3& p : positions) uvs.emplace_back(p.x, 1.0f - p.y);
+    for (const glm::vec4& t : generateTangents(positions, normals, uvs, indices))
+        EXPECT_NEAR(glm::distance(t, glm::vec4(1, 0, 0, 1)), 0.0f, 1e-6f);
+    for (glm::vec2& uv : uvs) uv.x = 1.0f - uv.x;
+    for (const glm::vec4& t : generateTangents(positions, normals, uvs, indices))
+        EXPECT_NEAR(glm::distance(t, glm::vec4(-1, 0, 0, -1)), 0.0f, 1e-6f);
+    // Without normals (flat shading) the face normal serves; degenerate UVs give w = 0.
+    for (const glm::vec4& t : generateTangents(positions, {}, uvs, indices))
+        EXPECT_NEAR(glm::distance(t, glm::vec4(-1, 0, 0, -1)), 0.0f, 1e-6f);
+    const std::vector<glm::vec2> flat(4, glm::vec2(0.5f));
+    for (const glm::vec4& t : generateTangents(positions, normals, flat, indices)) EXPECT_EQ(t.w, 0.0f);
+}
+
+// Two emissive quads facing down over a grey floor, both with a 4x1 emissive texture (clamped,
+// nearest) black but for its last texel: quad A reads u in [0, 0.25] (black texels only), quad B
+// u in [0.75, 1] (the white texel).
+Scene texturedEmitterScene() {
+    Scene scene = test::shadowTestScene();
+    test::addQuad(scene, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, {-2, 0, -2});
+    Material emitter;
+    emitter.name = "textured emitter";
+    emitter.baseColor = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    emitter.metallic = 0.0f;
+    emitter.ior = 1.0f;
+    emitter.emissive = glm::vec3(4.0f);
+    emitter.emissiveTexture = 0;
+    scene.materials.push_back(emitter);
+    Texture texture;
+    texture.width = 4;
+    texture.height = 1;
+    texture.srgb = true;
+    texture.rgba8 = {0xff000000u, 0xff000000u, 0xff000000u, 0xffffffffu};
+    scene.textures.push_back(texture);
+    TextureView view;
+    view.image = 0;
+    view.wrapS = view.wrapT = TextureWrap::ClampToEdge;
+    view.nearest = true;
+    scene.textureViews.push_back(view);
+    for (const float x0 : {-1.0f, 0.5f}) {
+        const size_t first = scene.triangles.size();
+        test::addQuad(scene, {x0, 1, -0.25f}, {x0 + 0.5f, 1, -0.25f}, {x0 + 0.5f, 1, 0.25f}, {x0, 1, 0.25f});
+        for (size_t i = first; i < scene.triangles.size(); ++i) {
+            Triangle& t = scene.triangles[i];
+            t.material = 1;
+            for (int k = 0; k < 3; ++k) t.uv[k] = glm::vec2(x0 < 0.0f ? (t.p[k].x + 1.0f) * 0.5f : 0.75f + (t.p[k].x - 0.5f) * 0.5f, 0.5f);
+        }
+    }
+    scene.cameras.push_back(test::lookAt({0, 3, 3}, {0, 0, 0}));
+    return scene;
+}
+
+TEST(TexturedEmission, BlackTexelsAreNoLight) {
+    const Scene scene = texturedEmitterScene();
+    const SceneArrays arrays = buildSceneArrays(scene);
+    ASSERT_EQ(arrays.lights.size(), 2u) << "quad A's triangles read black texels only";
+    for (const gpu::GpuLight& light : arrays.lights) {
+        EXPECT_EQ(light.type, gpu::kLightTriangle);
+        EXPECT_GT(gpu::GpuTriangle(arrays.triangles[light.triangle]).v0.x, 0.0f);  // quad B
+        EXPECT_NEAR(light.selectPdf, 0.5f, 1e-6f);
+    }
+    // The mean over quad B's texels [2, 3] (one texel each side of u in [3, 4] texels): 4 * 0.5.
+    const TexturedEmission emission(scene);
+    EXPECT_NEAR(emission.meanEmission(scene.triangles.back()).x, 2.0, 1e-9);
+}
+
+// Next-event estimation over the texture-weighted lights and pure BSDF sampling estimate the same
+// image (the weights are positive wherever emission is).
+TEST_F(GltfFeatures, TexturedEmitterWeightsAreUnbiased) {
+    const Scene scene = texturedEmitterScene();
+    Renderer renderer(test::gpu(), scene);
+    constexpr int kSeeds = 6;
+    std::array<double, 2> sum{0, 0}, sumSq{0, 0};
+    for (int mode = 0; mode < 2; ++mode)
+        for (int seed = 0; seed < kSeeds; ++seed) {
+            FrameSettings s;
+            s.width = 32;
+            s.height = 32;
+            s.samplesPerPixel = 64;
+            s.seed = 300 + seed;
+            s.maxDepth = 2;
+            s.nextEventEstimation = mode == 0;
+            const double m = meanValue(renderer.render<PathIntegrator>(s).image);
+            sum[mode] += m;
+            sumSq[mode] += m * m;
+        }
+    double se2 = 0.0;
+    std::array<double, 2> mean{};
+    for (int mode = 0; mode < 2; ++mode) {
+        mean[mode] = sum[mode] / kSeeds;
+        se2 += std::max(0.0, (sumSq[mode] - kSeeds * mean[mode] * mean[mode]) / (kSeeds - 1)) / kSeeds;
+    }
+    EXPECT_GT(mean[1], 0.0);
+    EXPECT_NEAR(mean[0], mean[1], 5.0 * std::sqrt(se2) + 0.005 * mean[1]) << "NEE " << mean[0] << " vs BSDF " << mean[1];
+}
+
+}  // namespace
+}  // namespace vkp
