@@ -61,6 +61,8 @@ vec4 sampleTexture(int index, vec2 uv) {
     return mix(a, b, f.y);
 }
 
+#include "material_extensions.glsl"
+
 vec3 emittedRadiance(GpuMaterial m, vec2 uv) {
     vec3 e = m.emissive;
     if (m.emissiveTexture >= 0 && (e.r > 0.0f || e.g > 0.0f || e.b > 0.0f))
@@ -98,7 +100,6 @@ SurfaceHit surfaceAt(uint tri, float b1, float b2, vec3 rayDir) {
 }
 
 BsdfParams bsdfParamsAt(GpuMaterial m, vec2 uv) {
-    BsdfParams p;
     vec4 base = m.baseColor;
     if (m.baseColorTexture >= 0) base *= sampleTexture(m.baseColorTexture, uv);
     float metallic = m.metallic;
@@ -108,12 +109,11 @@ BsdfParams bsdfParamsAt(GpuMaterial m, vec2 uv) {
         roughness *= mr.g;  // glTF: roughness in G, metalness in B
         metallic *= mr.b;
     }
-    p.baseColor = base.rgb;
-    p.metallic = clamp(metallic, 0.0f, 1.0f);
-    p.roughness = clamp(roughness, 0.0f, 1.0f);
+    BsdfParams p = makeBsdfParams(base.rgb, clamp(metallic, 0.0f, 1.0f), clamp(roughness, 0.0f, 1.0f));
     p.transmission = clamp(m.transmission, 0.0f, 1.0f);
-    p.ior = max(m.ior, 1.0f);
+    p.ior = m.ior;
     p.thinWalled = (m.flags & kMaterialThinWalled) != 0u ? 1u : 0u;
+    materialExtensionsAt(m, uv, p);
     return p;
 }
 

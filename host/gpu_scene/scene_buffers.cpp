@@ -29,6 +29,18 @@ gpu::GpuMaterial toGpu(const Material& m, bool emitterDoubleSided) {
     g.baseColorTexture = m.baseColorTexture;
     g.metallicRoughnessTexture = m.metallicRoughnessTexture;
     g.emissiveTexture = m.emissiveTexture;
+    g.specularColor = m.specularColor;
+    g.specular = m.specular;
+    g.sheenColor = m.sheenColor;
+    g.sheenRoughness = m.sheenRoughness;
+    g.clearcoat = m.clearcoat;
+    g.clearcoatRoughness = m.clearcoatRoughness;
+    g.specularTexture = m.specularTexture;
+    g.specularColorTexture = m.specularColorTexture;
+    g.sheenColorTexture = m.sheenColorTexture;
+    g.sheenRoughnessTexture = m.sheenRoughnessTexture;
+    g.clearcoatTexture = m.clearcoatTexture;
+    g.clearcoatRoughnessTexture = m.clearcoatRoughnessTexture;
     return g;
 }
 
@@ -44,6 +56,8 @@ SceneArrays buildSceneArrays(const Scene& scene) {
     a.nodes = bvh.nodes;
 
     for (const Material& m : scene.materials) a.materials.push_back(toGpu(m, m.doubleSided));
+    if (!scene.energyCompensation)
+        for (gpu::GpuMaterial& g : a.materials) g.flags |= gpu::kMaterialNoEnergyCompensation;
 
     a.triangles = gpuTriangles(scene.triangles, bvh);
     a.shading.reserve(scene.triangles.size());

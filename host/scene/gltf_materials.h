@@ -32,6 +32,8 @@ private:
     void validate(const std::string& element, Material& material);
     int texture(int gltfTexture, int texCoord, const tinygltf::ExtensionMap& extensions, bool srgb,
                      const std::string& element);
+    // A textureInfo object `key` of an extension object (KHR_materials_*), or -1 when absent.
+    int extensionTexture(const tinygltf::Value& object, const char* key, bool srgb, const std::string& element);
     Texture convertImage(int source, bool srgb);
 
     const tinygltf::Model& m_model;

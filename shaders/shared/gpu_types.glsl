@@ -38,6 +38,7 @@ STATIC_ASSERT_SIZE(GpuBvhNode, 32)
 
 const uint kMaterialDoubleSided = 1u;
 const uint kMaterialThinWalled = 2u;  // transmissive without KHR_materials_volume thickness
+const uint kMaterialNoEnergyCompensation = 4u;  // the spec's single-scattering GGX (docs/materials.md)
 
 struct GpuMaterial {
     vec4 baseColor;         // linear RGBA factor
@@ -53,8 +54,21 @@ struct GpuMaterial {
     int metallicRoughnessTexture;
     int emissiveTexture;
     uint pad0;
+    // KHR_materials_specular / sheen / clearcoat (docs/materials.md); textures -1 when absent.
+    vec3 specularColor;     // specularColorFactor (F0 colour of the dielectric)
+    float specular;         // specularFactor (dielectric specular weight and F90)
+    vec3 sheenColor;        // sheenColorFactor; zero: no sheen
+    float sheenRoughness;   // sheenRoughnessFactor
+    float clearcoat;        // clearcoatFactor; zero: no coat
+    float clearcoatRoughness;
+    int specularTexture;          // A channel
+    int specularColorTexture;     // RGB, sRGB
+    int sheenColorTexture;        // RGB, sRGB
+    int sheenRoughnessTexture;    // A channel
+    int clearcoatTexture;         // R channel
+    int clearcoatRoughnessTexture;  // G channel
 };
-STATIC_ASSERT_SIZE(GpuMaterial, 80)
+STATIC_ASSERT_SIZE(GpuMaterial, 144)
 
 const uint kLightPoint = 0u;
 const uint kLightSpot = 1u;
