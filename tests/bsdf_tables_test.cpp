@@ -13,6 +13,7 @@
 #include "shared/bsdf_microfacet.glsl"
 #include "shared/bsdf_sheen.glsl"
 #include "shared/bsdf_tables.glsl"
+#include "shared/bsdf.glsl"
 
 namespace vkp {
 namespace {

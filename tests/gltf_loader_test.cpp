@@ -159,6 +159,7 @@ TEST_F(GltfLoader, MaterialsAndExtensions) {
 TEST_F(GltfLoader, SpecularClearcoatSheenAndUnrenderedExtensions) {
     json doc = triangleDoc(true, true);
     doc["materials"] = {{{"name", "fancy"},
+                         {"emissiveFactor", {1, 1, 1}},  // the scene needs a light
                          {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.25}, {"specularColorFactor", {2, 1, 0.5}}}},
                                          {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.75}, {"clearcoatRoughnessFactor", 0.3}}},
                                          {"KHR_materials_sheen", {{"sheenColorFactor", {0.5, 0.4, 0.3}}, {"sheenRoughnessFactor", 0.6}}},

@@ -143,9 +143,6 @@ int runCommandLine(int argc, const char* const* argv) {
     addDeviceOptions(*renderCmd, render.device, render.validate, render.maxMemoryGiB);
     renderCmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
     renderCmd->add_flag("--quiet", render.quiet, "No progress output");
-    renderCmd->add_flag("--no-energy-compensation", render.noEnergyCompensation,
-                        "Materials without multiple-scattering compensation: the glTF spec's plain single-scattering "
-                        "GGX, darker when rough (docs/materials.md)");
     const auto views = viewTransformChoices();
     renderCmd->add_option("--tonemap", render.display.view,
                           "The PNG's view transform: agx (Blender 4's AgX), aces-fit (Narkowicz's ACES fit), clamp "

@@ -9,7 +9,6 @@
 #define VKP_BSDF_SHEEN_GLSL
 #include "compat.glsl"
 #include "constants.glsl"
-#include "bsdf_tables.glsl"
 SHARED_BEGIN
 
 // The smallest sheen alpha vkphoton evaluates (sheenRoughness ~0.03): below it D is a spike at
@@ -47,11 +46,6 @@ INLINE float charlieSheen(vec3 wo, vec3 wi, float alpha) {
     vec3 h = normalize(wo + wi);
     float v = 1.0f / ((1.0f + charlieLambda(wo.z, alpha) + charlieLambda(wi.z, alpha)) * 4.0f * wo.z * wi.z);
     return charlieD(alpha, h.z) * v;
-}
-
-// Directional albedo of the white sheen lobe at cos theta for a sheen roughness.
-INLINE float sheenAlbedo(float cosTheta, float sheenRoughness) {
-    return bsdfTableLookup(kTableSheenAlbedo, cosTheta, sheenRoughness);
 }
 
 SHARED_END

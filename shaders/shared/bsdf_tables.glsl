@@ -11,16 +11,15 @@
 #ifndef VKP_BSDF_TABLES_GLSL
 #define VKP_BSDF_TABLES_GLSL
 #include "compat.glsl"
+// Host only for now (tests and the reference): as a GLSL constant array the table made lavapipe's
+// shader compiles take minutes; the GPU needs it in a buffer binding (docs/materials.md).
+#ifdef __cplusplus
 SHARED_BEGIN
 const uint kBsdfTableSize = 32u;
 const uint kTableGgxAlbedo = 0u;
 const uint kTableSheenAlbedo = 1u;
 const uint kTableGgxAverageAlbedo = 2048u;
-#ifdef __cplusplus
 const float kBsdfTables[2080] = {
-#else
-const float kBsdfTables[2080] = float[2080](
-#endif
 // BEGIN VALUES
 0.999990f, 0.999999f, 1.000000f, 1.000000f, 1.000000f, 1.000000f, 1.000000f, 1.000000f,
 1.000000f, 1.000000f, 1.000000f, 1.000000f, 1.000000f, 1.000000f, 1.000000f, 1.000000f,
@@ -283,11 +282,7 @@ const float kBsdfTables[2080] = float[2080](
 0.870874f, 0.846349f, 0.819779f, 0.791367f, 0.761355f, 0.730017f, 0.697652f, 0.664574f,
 0.631102f, 0.597549f, 0.564212f, 0.531364f, 0.499249f, 0.468076f, 0.438017f, 0.409207f
 // END VALUES
-#ifdef __cplusplus
 };
-#else
-);
-#endif
 
 INLINE float bsdfTableValue(uint table, uint x, uint y) {
     return kBsdfTables[table * kBsdfTableSize * kBsdfTableSize + y * kBsdfTableSize + x];
@@ -314,4 +309,5 @@ INLINE float ggxAverageAlbedo(float roughness) {
 }
 
 SHARED_END
+#endif
 #endif
