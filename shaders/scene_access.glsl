@@ -123,6 +123,8 @@ vec3 offsetRayOrigin(vec3 p, vec3 n, vec3 dir) {
     return p + (dot(dir, n) >= 0.0f ? n : -n) * rayEpsilon(p);
 }
 
+#include "material_extensions.glsl"
+
 vec3 emittedRadiance(GpuMaterial m, vec4 uv) {
     vec3 e = m.emissive;
     if (m.emissiveTexture >= 0 && (e.r > 0.0f || e.g > 0.0f || e.b > 0.0f))
@@ -184,7 +186,6 @@ SurfaceHit surfaceAt(uint tri, float b1, float b2, vec3 rayDir) {
 // The material's parameters at a surface point: uv holds both TEXCOORD sets (SurfaceHit.uv).
 // COLOR_0 multiplies the base colour (the callers: bsdfParamsAtHit).
 BsdfParams bsdfParamsAt(GpuMaterial m, vec4 uv) {
-    BsdfParams p;
     vec4 base = m.baseColor;
     if (m.baseColorTexture >= 0) base *= sampleTexture(m.baseColorTexture, uv);
     float metallic = m.metallic;
@@ -194,12 +195,11 @@ BsdfParams bsdfParamsAt(GpuMaterial m, vec4 uv) {
         roughness *= mr.g;  // glTF: roughness in G, metalness in B
         metallic *= mr.b;
     }
-    p.baseColor = base.rgb;
-    p.metallic = clamp(metallic, 0.0f, 1.0f);
-    p.roughness = clamp(roughness, 0.0f, 1.0f);
+    BsdfParams p = makeBsdfParams(base.rgb, clamp(metallic, 0.0f, 1.0f), clamp(roughness, 0.0f, 1.0f));
     p.transmission = clamp(m.transmission, 0.0f, 1.0f);
-    p.ior = max(m.ior, 1.0f);
+    p.ior = m.ior;
     p.thinWalled = (m.flags & kMaterialThinWalled) != 0u ? 1u : 0u;
+    materialExtensionsAt(m, uv, p);
     return p;
 }
 

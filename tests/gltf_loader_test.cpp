@@ -154,6 +154,40 @@ TEST_F(GltfLoader, MaterialsAndExtensions) {
     EXPECT_FLOAT_EQ(m.attenuationDistance, 2.0f);
 }
 
+// KHR_materials_specular, clearcoat and sheen factors (docs/materials.md); the extensions that
+// are not rendered are named in one warning line each.
+TEST_F(GltfLoader, SpecularClearcoatSheenAndUnrenderedExtensions) {
+    json doc = triangleDoc(true, true);
+    doc["materials"] = {{{"name", "fancy"},
+                         {"emissiveFactor", {1, 1, 1}},  // the scene needs a light
+                         {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.25}, {"specularColorFactor", {2, 1, 0.5}}}},
+                                         {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.75}, {"clearcoatRoughnessFactor", 0.3}}},
+                                         {"KHR_materials_sheen", {{"sheenColorFactor", {0.5, 0.4, 0.3}}, {"sheenRoughnessFactor", 0.6}}},
+                                         {"KHR_materials_iridescence", {{"iridescenceFactor", 1}}}}}}};
+    testing::internal::CaptureStderr();
+    const Scene s = loadGltf(write(doc));
+    std::istringstream stderrLines(testing::internal::GetCapturedStderr());
+    std::vector<std::string> warnings;
+    for (std::string line; std::getline(stderrLines, line);) warnings.push_back(line);
+    const Material& m = s.materials.at(0);
+    EXPECT_FLOAT_EQ(m.specular, 0.25f);
+    EXPECT_EQ(m.specularColor, glm::vec3(2.0f, 1.0f, 0.5f));  // not bounded by 1
+    EXPECT_FLOAT_EQ(m.clearcoat, 0.75f);
+    EXPECT_FLOAT_EQ(m.clearcoatRoughness, 0.3f);
+    EXPECT_EQ(m.sheenColor, glm::vec3(0.5f, 0.4f, 0.3f));
+    EXPECT_FLOAT_EQ(m.sheenRoughness, 0.6f);
+    int named = 0;
+    for (const std::string& w : warnings)
+        if (w.find("fancy") != std::string::npos && w.find("KHR_materials_iridescence") != std::string::npos) ++named;
+    EXPECT_EQ(named, 1);
+    // Without the extensions: the glTF defaults (full specular, no coat, no sheen).
+    const Material d;
+    EXPECT_FLOAT_EQ(d.specular, 1.0f);
+    EXPECT_EQ(d.specularColor, glm::vec3(1.0f));
+    EXPECT_FLOAT_EQ(d.clearcoat, 0.0f);
+    EXPECT_EQ(d.sheenColor, glm::vec3(0.0f));
+}
+
 TEST_F(GltfLoader, PrimitiveWithoutMaterialGetsTheGltfDefault) {
     json doc = triangleDoc(true, true);
     doc["meshes"][0]["primitives"][0].erase("material");

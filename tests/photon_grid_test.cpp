@@ -121,11 +121,7 @@ TEST_F(PhotonGridTest, GathersMatchBruteForce) {
 
     gpu::GatherTestParams push{};
     push.grid = grid.view(1.0f);
-    push.bsdf.baseColor = glm::vec3(0.8f, 0.6f, 0.4f);
-    push.bsdf.metallic = 0.0f;
-    push.bsdf.roughness = 0.5f;
-    push.bsdf.transmission = 0.0f;
-    push.bsdf.ior = 1.5f;
+    push.bsdf = gpu::makeBsdfParams(glm::vec3(0.8f, 0.6f, 0.4f), 0.0f, 0.5f);
     push.count = static_cast<uint32_t>(queries.size());
     push.coneK = 1.1f;
     push.rejectedFlags = gpu::kPhotonPrimary;

@@ -12,6 +12,7 @@ Scene furnaceScene(float albedo, float emission) {
     m.metallic = 0.0f;
     m.roughness = 1.0f;
     m.ior = 1.0f;
+    m.specular = 0.0f;  // KHR_materials_specular 0: exactly Lambert
     m.emissive = glm::vec3(emission);
     m.doubleSided = true;
     scene.materials.push_back(m);
@@ -74,6 +75,7 @@ Scene shadowTestScene() {
     m.metallic = 0.0f;
     m.roughness = 1.0f;
     m.ior = 1.0f;
+    m.specular = 0.0f;  // KHR_materials_specular 0: exactly Lambert
     scene.materials.push_back(m);
     return scene;
 }

@@ -24,13 +24,7 @@ void main() {
     vec3 t;
     vec3 b;
     orthonormalBasis(n, t, b);
-    BsdfParams bsdf;
-    bsdf.baseColor = vec3(0.8f);
-    bsdf.metallic = 0.0f;
-    bsdf.roughness = 1.0f;
-    bsdf.transmission = 0.0f;
-    bsdf.ior = 1.5f;
-    bsdf.thinWalled = 0u;
+    BsdfParams bsdf = makeBsdfParams(vec3(0.8f), 0.0f, 1.0f);
     vec3 wo = vec3(0.0f, 0.0f, 1.0f);
     float value;
     if (push.mode == 0u) {

@@ -121,7 +121,8 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
 
     // The device first: its limits bound the scene before it is decoded.
     vk::Context context({options.validate, options.device});
-    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet);
+    Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet);
+    scene.energyCompensation = !options.noEnergyCompensation;
     const double loadSeconds = secondsSince(start);
     // Validate the camera choice before the expensive set-up.
     chooseCamera(scene, options.frame.cameraIndex, float(options.frame.width) / float(options.frame.height),

@@ -27,6 +27,7 @@ struct RenderCommandOptions {
     std::string device;
     bool validate = false;
     bool quiet = false;
+    bool noEnergyCompensation = false;  // the glTF spec's plain single-scattering GGX
 };
 
 struct PhotonsCommandOptions {

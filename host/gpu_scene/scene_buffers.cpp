@@ -38,6 +38,18 @@ gpu::GpuMaterial toGpu(const Material& m, bool emitterDoubleSided) {
     g.normalTexture = m.normalTexture;
     g.normalScale = m.normalScale;
     g.alphaCutoff = m.alphaCutoff;
+    g.specularColor = m.specularColor;
+    g.specular = m.specular;
+    g.sheenColor = m.sheenColor;
+    g.sheenRoughness = m.sheenRoughness;
+    g.clearcoat = m.clearcoat;
+    g.clearcoatRoughness = m.clearcoatRoughness;
+    g.specularTexture = m.specularTexture;
+    g.specularColorTexture = m.specularColorTexture;
+    g.sheenColorTexture = m.sheenColorTexture;
+    g.sheenRoughnessTexture = m.sheenRoughnessTexture;
+    g.clearcoatTexture = m.clearcoatTexture;
+    g.clearcoatRoughnessTexture = m.clearcoatRoughnessTexture;
     return g;
 }
 
@@ -68,6 +80,8 @@ SceneArrays buildSceneArrays(const Scene& scene) {
     a.nodes = bvh.nodes;
 
     for (const Material& m : scene.materials) a.materials.push_back(toGpu(m, m.doubleSided));
+    if (!scene.energyCompensation)
+        for (gpu::GpuMaterial& g : a.materials) g.flags |= gpu::kMaterialNoEnergyCompensation;
 
     a.triangles = gpuTriangles(scene.triangles, bvh);
     for (uint32_t i = 0; i < a.triangles.size(); ++i)  // the traversal's alpha test (gpu_types.glsl)

@@ -25,10 +25,7 @@ GuideGridAtPixel guideGridAtPixel(const Scene& scene, const SceneArrays& arrays,
     if (!hit.hit) throw InputError(fmt::format("--pixel {} {}: the camera ray meets no surface", x, y));
     const gpu::GpuTriangle& t = arrays.triangles[hit.triangle];
     const gpu::GpuMaterial& material = arrays.materials[arrays.shading[hit.triangle].material];
-    gpu::BsdfParams bsdf{};
-    bsdf.baseColor = glm::vec3(material.baseColor);
-    bsdf.metallic = material.metallic;
-    bsdf.roughness = material.roughness;
+    gpu::BsdfParams bsdf = gpu::makeBsdfParams(glm::vec3(material.baseColor), material.metallic, material.roughness);
     bsdf.transmission = material.transmission;
     bsdf.ior = material.ior;
     if (!gpu::storesPhotons(bsdf))

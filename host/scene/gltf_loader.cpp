@@ -386,7 +386,9 @@ private:
     // Every texture of the material reads a TEXCOORD set the primitive has (set 0 may be absent:
     // its coordinates are then zero, as before sets were checked).
     void checkTexCoordSets(const Material& m, const Vertices& v, const std::string& element) const {
-        for (const int view : {m.baseColorTexture, m.metallicRoughnessTexture, m.emissiveTexture, m.normalTexture}) {
+        for (const int view : {m.baseColorTexture, m.metallicRoughnessTexture, m.emissiveTexture, m.normalTexture,
+                               m.specularTexture, m.specularColorTexture, m.sheenColorTexture, m.sheenRoughnessTexture,
+                               m.clearcoatTexture, m.clearcoatRoughnessTexture}) {
             if (view < 0) continue;
             const int set = m_scene.textureViews[view].texCoord;
             if (set > 0 && v.uvs[set].empty())

@@ -126,6 +126,36 @@ void GltfMaterials::readExtensions(const tinygltf::Material& source, const std::
         m.transmission = static_cast<float>(numberOr(*e, "transmissionFactor", 0.0, name("KHR_materials_transmission")));
     if (const auto* e = extension(source.extensions, "KHR_materials_ior"))
         m.ior = static_cast<float>(numberOr(*e, "ior", 1.5, name("KHR_materials_ior")));
+    if (const auto* e = extension(source.extensions, "KHR_materials_specular")) {
+        const std::string specular = name("KHR_materials_specular");
+        m.specular = static_cast<float>(numberOr(*e, "specularFactor", 1.0, specular));
+        m.specularColor = vec3Or(*e, "specularColorFactor", glm::vec3(1.0f), specular);
+        m.specularTexture = extensionTexture(*e, "specularTexture", false, specular);
+        m.specularColorTexture = extensionTexture(*e, "specularColorTexture", true, specular);
+    }
+    if (const auto* e = extension(source.extensions, "KHR_materials_clearcoat")) {
+        const std::string coat = name("KHR_materials_clearcoat");
+        m.clearcoat = static_cast<float>(numberOr(*e, "clearcoatFactor", 0.0, coat));
+        m.clearcoatRoughness = static_cast<float>(numberOr(*e, "clearcoatRoughnessFactor", 0.0, coat));
+        m.clearcoatTexture = extensionTexture(*e, "clearcoatTexture", false, coat);
+        m.clearcoatRoughnessTexture = extensionTexture(*e, "clearcoatRoughnessTexture", false, coat);
+        if (e->IsObject() && e->Has("clearcoatNormalTexture"))
+            m_warn(fmt::format("{} ({}): clearcoatNormalTexture is ignored; the coat uses the surface normal", element, m.name));
+    }
+    if (const auto* e = extension(source.extensions, "KHR_materials_sheen")) {
+        const std::string sheen = name("KHR_materials_sheen");
+        m.sheenColor = vec3Or(*e, "sheenColorFactor", glm::vec3(0.0f), sheen);
+        m.sheenRoughness = static_cast<float>(numberOr(*e, "sheenRoughnessFactor", 0.0, sheen));
+        m.sheenColorTexture = extensionTexture(*e, "sheenColorTexture", true, sheen);
+        m.sheenRoughnessTexture = extensionTexture(*e, "sheenRoughnessTexture", false, sheen);
+    }
+    // Not rendered: one line per material, naming it.
+    for (const char* ext : {"KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_dispersion"})
+        if (extension(source.extensions, ext))
+            m_warn(fmt::format("{} ({}): {} is not rendered ({})", element, m.name, ext,
+                               std::string(ext).find("aniso") != std::string::npos ? "isotropic GGX instead"
+                               : std::string(ext).find("irid") != std::string::npos ? "no thin-film interference"
+                                                                                     : "one index of refraction for all wavelengths"));
     if (const auto* e = extension(source.extensions, "KHR_materials_volume")) {
         const std::string volume = name("KHR_materials_volume");
         m.thickness = static_cast<float>(numberOr(*e, "thicknessFactor", 0.0, volume));
@@ -139,7 +169,10 @@ void GltfMaterials::readExtensions(const tinygltf::Material& source, const std::
 void GltfMaterials::validate(const std::string& element, Material& m) {
     const float values[] = {m.baseColor.x, m.baseColor.y, m.baseColor.z, m.baseColor.w, m.metallic, m.roughness,
                             m.emissive.x,  m.emissive.y,  m.emissive.z,  m.transmission, m.ior, m.thickness,
-                            m.attenuationColor.x, m.attenuationColor.y, m.attenuationColor.z};
+                            m.attenuationColor.x, m.attenuationColor.y, m.attenuationColor.z,
+                            m.specular, m.specularColor.x, m.specularColor.y, m.specularColor.z,
+                            m.sheenColor.x, m.sheenColor.y, m.sheenColor.z, m.sheenRoughness,
+                            m.clearcoat, m.clearcoatRoughness};
     for (const float v : values)
         if (!std::isfinite(v) || v < 0.0f) fail(element, "material factors must be finite and non-negative");
     if (glm::any(glm::greaterThan(m.emissive, glm::vec3(float(kMaxRadiometric)))))
@@ -158,7 +191,34 @@ void GltfMaterials::validate(const std::string& element, Material& m) {
     clampUnit(m.metallic);
     clampUnit(m.roughness);
     clampUnit(m.transmission);
-    if (clamped) m_warn(element + ": factors above 1 (base colour, metallic, roughness, transmission, attenuation colour) clamped to 1");
+    clampUnit(m.specular);
+    for (int k = 0; k < 3; ++k) clampUnit(m.sheenColor[k]);
+    clampUnit(m.sheenRoughness);
+    clampUnit(m.clearcoat);
+    clampUnit(m.clearcoatRoughness);
+    if (clamped)
+        m_warn(element + ": factors above 1 (base colour, metallic, roughness, transmission, attenuation colour, specular, "
+                         "sheen, clearcoat) clamped to 1");
+}
+
+int GltfMaterials::extensionTexture(const tinygltf::Value& object, const char* key, bool srgb,
+                                    const std::string& element) {
+    if (!object.IsObject() || !object.Has(key)) return -1;
+    const tinygltf::Value& info = object.Get(key);
+    const std::string name = fmt::format("{}.{}", element, key);
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsNumber()) fail(name, "needs a texture index");
+    const double index = info.Get("index").GetNumberAsDouble();
+    if (index < 0.0 || index != std::floor(index) || index > 1.0e9) fail(name + ".index", "must be a non-negative integer");
+    int texCoord = 0;
+    if (info.Has("texCoord")) {
+        const tinygltf::Value& t = info.Get("texCoord");
+        if (!t.IsNumber() || t.GetNumberAsDouble() < 0.0 || t.GetNumberAsDouble() > 1.0e9) fail(name + ".texCoord", "must be a non-negative integer");
+        texCoord = static_cast<int>(t.GetNumberAsDouble());
+    }
+    tinygltf::ExtensionMap extensions;
+    if (info.Has("extensions") && info.Get("extensions").IsObject())
+        for (const std::string& k : info.Get("extensions").Keys()) extensions[k] = info.Get("extensions").Get(k);
+    return texture(static_cast<int>(index), texCoord, extensions, srgb, name);
 }
 
 int GltfMaterials::texture(int gltfTexture, int texCoord, const tinygltf::ExtensionMap& extensions, bool srgb,

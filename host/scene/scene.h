@@ -70,6 +70,18 @@ struct Material {
     int baseColorTexture = -1;      // indices into Scene::textureViews
     int metallicRoughnessTexture = -1;
     int emissiveTexture = -1;
+    float specular = 1.0f;          // KHR_materials_specular: specularFactor (0: pure Lambert)
+    glm::vec3 specularColor{1.0f};  // specularColorFactor
+    int specularTexture = -1;       // A channel
+    int specularColorTexture = -1;  // RGB, sRGB
+    glm::vec3 sheenColor{0.0f};     // KHR_materials_sheen: sheenColorFactor (0: no sheen)
+    float sheenRoughness = 0.0f;
+    int sheenColorTexture = -1;     // RGB, sRGB
+    int sheenRoughnessTexture = -1; // A channel
+    float clearcoat = 0.0f;         // KHR_materials_clearcoat: clearcoatFactor (0: no coat)
+    float clearcoatRoughness = 0.0f;
+    int clearcoatTexture = -1;      // R channel
+    int clearcoatRoughnessTexture = -1;  // G channel
     std::vector<std::string> extensions;  // the glTF extensions the material and its textures name
 };
 
@@ -135,6 +147,7 @@ struct Scene {
     SceneFileInfo file;
     size_t droppedDuplicateTriangles = 0;    // the same three world positions as an earlier one
     Environment environment;                 // --env (scene/environment.h), not from the file
+    bool energyCompensation = true;          // multiple-scattering GGX (render --no-energy-compensation)
 };
 
 }  // namespace vkp

@@ -1,22 +1,28 @@
-// The glTF metallic-roughness BSDF in a local frame (+z = shading normal on the side of wo):
-//  - opaque layer: Lambert diffuse ((1 - metallic) * baseColor, weighted by the dielectric's
-//    transmitted fraction (1 - F(wo))(1 - F(wi)), which keeps it reciprocal) plus a GGX microfacet
-//    specular lobe (Walter et al. 2007; height-correlated Smith masking; visible-normal sampling,
-//    Heitz 2018) whose Fresnel term mixes the exact dielectric Fresnel of `ior` with Schlick's
-//    approximation from F0 = baseColor for metals by `metallic`. With ior = 1 and metallic = 0
-//    the surface is exactly Lambertian (the furnace tests rely on it).
-//    Roughness below kDeltaRoughness becomes a perfect mirror.
+// The glTF 2.0 material BSDF (Appendix B and the KHR_materials_* extensions vkphoton reads) in a
+// local frame (+z = shading normal on the side of wo). docs/materials.md has the formulas.
+//  - opaque layer, glTF Appendix B with KHR_materials_specular and KHR_materials_ior:
+//      f = (1 - metallic) * dielectric + metallic * metal
+//      dielectric = (1 - max(Fd)) * baseColor / pi + Fd * specular_brdf
+//      metal      = Fm * specular_brdf
+//    with Fd = specular * (f0 + (1 - f0) (1 - VdotH)^5), f0 = min(((ior-1)/(ior+1))^2 specularColor, 1),
+//    Fm = baseColor + (1 - baseColor)(1 - VdotH)^5 (Schlick), and specular_brdf the GGX microfacet
+//    reflection D G2 / (4 |NdotL| |NdotV|) (shared/bsdf_microfacet.glsl). specular = 0 is exactly
+//    Lambert. Roughness below kDeltaRoughness makes the specular lobe a perfect mirror.
 //  - with probability `transmission` (KHR_materials_transmission) the hit is instead a smooth
 //    dielectric: exact Fresnel picks reflection or refraction (tinted by baseColor); thin-walled
 //    surfaces transmit straight through.
+// One code path for evaluation, sampling and pdf: sampling picks a lobe with a probability from
+// the lobes' estimated albedos at wo (bsdfLobeProbabilities), and returns the mixture pdf.
 #ifndef VKP_BSDF_GLSL
 #define VKP_BSDF_GLSL
 #include "compat.glsl"
 #include "constants.glsl"
 #include "sampling.glsl"
+#include "bsdf_microfacet.glsl"
+#include "bsdf_sheen.glsl"
+#include "bsdf_tables.glsl"  // host only for now
 SHARED_BEGIN
 
-const float kMinAlpha = 1.0e-4f;
 const float kDeltaRoughness = 0.02f;  // perceptual roughness below which the specular is a mirror
 
 const uint kLobeNone = 0u;
@@ -25,6 +31,11 @@ const uint kLobeGlossy = 2u;
 const uint kLobeDelta = 4u;          // a Dirac lobe: pdf is not a density, excluded from MIS
 const uint kLobeTransmission = 8u;
 
+const uint kBsdfNoEnergyCompensation = 1u;  // BsdfParams.flags: the spec's plain single-scattering GGX
+
+// Everything the BSDF reads at one surface point (material factors x textures). Fields after
+// thinWalled are appended for KHR_materials_specular/sheen/clearcoat; construct with
+// makeBsdfParams so that they start at the glTF defaults.
 struct BsdfParams {
     vec3 baseColor;
     float metallic;
@@ -32,7 +43,36 @@ struct BsdfParams {
     float transmission;
     float ior;
     uint thinWalled;      // 1: transmission goes straight through (no KHR_materials_volume)
+    vec3 specularColor;   // KHR_materials_specular: specularColorFactor x texture (F0 colour)
+    float specular;       // KHR_materials_specular: specularFactor x texture (weight, F90)
+    vec3 sheenColor;      // KHR_materials_sheen (later; zero = no sheen)
+    float sheenRoughness;
+    float clearcoat;      // KHR_materials_clearcoat (later; zero = no coat)
+    float clearcoatRoughness;
+    uint flags;           // kBsdf* bits
+    float pad0;
 };
+STATIC_ASSERT_SIZE(BsdfParams, 80)
+
+// The glTF defaults: a rough white dielectric of ior 1.5 with full specular, no extensions.
+INLINE BsdfParams makeBsdfParams(vec3 baseColor, float metallic, float roughness) {
+    BsdfParams p;
+    p.baseColor = baseColor;
+    p.metallic = metallic;
+    p.roughness = roughness;
+    p.transmission = 0.0f;
+    p.ior = 1.5f;
+    p.thinWalled = 0u;
+    p.specularColor = vec3(1.0f);
+    p.specular = 1.0f;
+    p.sheenColor = vec3(0.0f);
+    p.sheenRoughness = 0.0f;
+    p.clearcoat = 0.0f;
+    p.clearcoatRoughness = 0.0f;
+    p.flags = 0u;
+    p.pad0 = 0.0f;
+    return p;
+}
 
 struct BsdfSample {
     vec3 wi;              // local sampled direction
@@ -41,105 +81,131 @@ struct BsdfSample {
     uint lobe;
 };
 
-// GGX normal distribution for a local unit half vector h. Written with h's tangential part
-// (hx^2 + hy^2) instead of 1 - cos^2, which keeps the sharp peak of small alphas well conditioned.
-INLINE float ggxD(vec3 h, float alpha) {
-    if (h.z <= 0.0f) return 0.0f;
-    float a2 = alpha * alpha;
-    float d = (h.x * h.x + h.y * h.y) / a2 + h.z * h.z;
-    return 1.0f / (kPi * a2 * d * d);
-}
-
-INLINE float ggxLambda(vec3 w, float alpha) {
-    float cos2 = w.z * w.z;
-    if (cos2 <= 0.0f) return 0.0f;
-    float tan2 = max(0.0f, 1.0f - cos2) / cos2;
-    return 0.5f * (-1.0f + sqrt(1.0f + alpha * alpha * tan2));
-}
-
-INLINE float ggxG1(vec3 w, float alpha) {
-    return 1.0f / (1.0f + ggxLambda(w, alpha));
-}
-
-// Visible-normal sampling (Heitz, "Sampling the GGX Distribution of Visible Normals", JCGT 2018).
-INLINE vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u) {
-    vec3 vh = normalize(vec3(alpha * wo.x, alpha * wo.y, wo.z));
-    float lenSq = vh.x * vh.x + vh.y * vh.y;
-    vec3 t1 = lenSq > 0.0f ? vec3(-vh.y, vh.x, 0.0f) * inversesqrt(lenSq) : vec3(1.0f, 0.0f, 0.0f);
-    vec3 t2 = cross(vh, t1);
-    float r = sqrt(u.x);
-    float phi = kTwoPi * u.y;
-    float p1 = r * cos(phi);
-    float p2 = r * sin(phi);
-    float s = 0.5f * (1.0f + vh.z);
-    p2 = (1.0f - s) * sqrt(max(0.0f, 1.0f - p1 * p1)) + s * p2;
-    vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
-    return normalize(vec3(alpha * nh.x, alpha * nh.y, max(1.0e-6f, nh.z)));
-}
-
-// pdf of wi = reflect(wo, h) under visible-normal sampling: G1(wo) D(h) / (4 wo.z).
-INLINE float ggxReflectionPdf(vec3 wo, vec3 wi, float alpha) {
-    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
-    vec3 h = normalize(wo + wi);
-    return ggxG1(wo, alpha) * ggxD(h, alpha) / (4.0f * wo.z);
-}
-
-INLINE float schlickWeight(float cosTheta) {
-    float m = clamp(1.0f - cosTheta, 0.0f, 1.0f);
-    float m2 = m * m;
-    return m2 * m2 * m;
-}
-
-INLINE vec3 fresnelSchlick(vec3 f0, float cosTheta) {
-    return f0 + (vec3(1.0f) - f0) * schlickWeight(cosTheta);
-}
-
-// Unpolarised Fresnel reflectance of a smooth dielectric; eta = n_incident / n_transmitted.
-INLINE float fresnelDielectric(float cosI, float eta) {
-    cosI = clamp(cosI, 0.0f, 1.0f);
-    float sin2T = eta * eta * (1.0f - cosI * cosI);
-    if (sin2T >= 1.0f) return 1.0f;
-    float cosT = sqrt(1.0f - sin2T);
-    float rs = (eta * cosI - cosT) / (eta * cosI + cosT);
-    float rp = (cosI - eta * cosT) / (cosI + eta * cosT);
-    return 0.5f * (rs * rs + rp * rp);
-}
-
-INLINE float dielectricF0(float ior) {
-    float r = (ior - 1.0f) / (ior + 1.0f);
-    return r * r;
-}
-
 INLINE float bsdfAlpha(BsdfParams p) {
     return max(p.roughness * p.roughness, kMinAlpha);
+}
+
+INLINE float clearcoatAlpha(BsdfParams p) {
+    return max(p.clearcoatRoughness * p.clearcoatRoughness, kMinAlpha);
 }
 
 INLINE bool specularIsDelta(BsdfParams p) {
     return p.roughness < kDeltaRoughness;
 }
 
-// Fresnel reflectance of the opaque layer's specular lobe at cos(wo, h).
-INLINE vec3 specularFresnel(BsdfParams p, float cosTheta) {
-    float dielectric = fresnelDielectric(cosTheta, 1.0f / p.ior);
-    return mix(vec3(dielectric), fresnelSchlick(p.baseColor, cosTheta), p.metallic);
+INLINE bool clearcoatIsDelta(BsdfParams p) {
+    return p.clearcoatRoughness < kDeltaRoughness;
 }
 
-// Fraction of light that passes the dielectric coating into the diffuse base.
-INLINE float diffuseTransmittance(BsdfParams p, float cosTheta) {
-    return 1.0f - fresnelDielectric(cosTheta, 1.0f / p.ior);
+INLINE bool energyCompensationOn(BsdfParams p) {
+    return (p.flags & kBsdfNoEnergyCompensation) == 0u;
+}
+
+// KHR_materials_specular's dielectric Fresnel at cos(V, H): specular * (f0 + (1 - f0)(1 - c)^5).
+INLINE vec3 dielectricFresnel(BsdfParams p, float cosTheta) {
+    vec3 f0 = min(vec3(dielectricF0(p.ior)) * p.specularColor, vec3(1.0f));
+    return p.specular * fresnelSchlick(f0, cosTheta);
+}
+
+// Fresnel of the opaque layer's specular lobe at cos(V, H): the dielectric's and the metal's
+// (conductor_fresnel, f0 = baseColor) mixed by metallic.
+INLINE vec3 specularFresnel(BsdfParams p, float cosTheta) {
+    return mix(dielectricFresnel(p, cosTheta), fresnelSchlick(p.baseColor, cosTheta), p.metallic);
+}
+
+// KHR_materials_clearcoat's Fresnel (ior 1.5: f0 = 0.04) times the coat's weight. vkphoton uses
+// cos(V, H) like Appendix B's fresnel_mix, not the extension's non-normative NdotV, so the coated
+// BSDF stays reciprocal (photons and importons rely on it).
+INLINE float clearcoatFresnel(BsdfParams p, float cosTheta) {
+    return p.clearcoat * (0.04f + 0.96f * schlickWeight(cosTheta));
+}
+
+// The diffuse lobe's weight: the dielectric's share (1 - metallic) of the opaque layer, less what
+// the specular layer reflects, (1 - max(Fd(VdotH))) (fresnel_mix).
+INLINE float diffuseWeight(BsdfParams p, float cosTheta) {
+    return (1.0f - p.metallic) * (1.0f - maxComponent(dielectricFresnel(p, cosTheta)));
 }
 
 INLINE vec3 diffuseAlbedo(BsdfParams p) {
     return (1.0f - p.metallic) * p.baseColor;
 }
 
-// Probability of sampling the specular lobe of the opaque layer, from estimated lobe albedos.
+// KHR_materials_sheen's albedo scaling of the layer under the sheen for one direction.
+// NOT YET: the albedo E_s comes from a table (bsdf_tables.glsl) that the GPU cannot read yet (a
+// 2080-float GLSL constant array makes lavapipe's shader compile explode); until the table has a
+// buffer binding, the base under the sheen is not dimmed (the sheen adds light).
+INLINE float sheenScaling(BsdfParams p, float cosTheta) {
+    return 1.0f;
+}
+
+// Kulla-Conty multiple scattering of the GGX specular lobe: f_ms = Fms (1 - E(mu_o))(1 - E(mu_i))
+// / (pi (1 - E_avg)) with Fms = Favg^2 E_avg / (1 - Favg (1 - E_avg)) per component, Favg the
+// hemispherical average of the Schlick Fresnel (f0 + (1 - f0) / 21, times the specular weight for
+// dielectrics). Returns Fms / (pi (1 - E_avg)); zero when compensation is off or nothing is lost.
+// NOT YET ON: needs the E(mu, r) table on the GPU (see sheenScaling); returns 0 until then.
+INLINE vec3 multipleScatteringColour(BsdfParams p) {
+    return vec3(0.0f);
+}
+
+INLINE float ggxLoss(BsdfParams p, float cosTheta) {
+    return 0.0f;
+}
+
+#ifdef __cplusplus
+// The compensation as it will run once the tables are bound (host reference, tests).
+INLINE vec3 multipleScatteringColourWithTables(BsdfParams p) {
+    if (!energyCompensationOn(p) || specularIsDelta(p)) return vec3(0.0f);
+    float eAvg = ggxAverageAlbedo(p.roughness);
+    if (eAvg >= 0.9999f) return vec3(0.0f);
+    vec3 f0 = min(vec3(dielectricF0(p.ior)) * p.specularColor, vec3(1.0f));
+    vec3 fd = p.specular * (f0 + (vec3(1.0f) - f0) * (1.0f / 21.0f));
+    vec3 fm = p.baseColor + (vec3(1.0f) - p.baseColor) * (1.0f / 21.0f);
+    vec3 kd = fd * fd * eAvg / (vec3(1.0f) - fd * (1.0f - eAvg));
+    vec3 km = fm * fm * eAvg / (vec3(1.0f) - fm * (1.0f - eAvg));
+    return mix(kd, km, p.metallic) * (kInvPi / (1.0f - eAvg));
+}
+#endif
+
+// Probabilities with which sampleBsdf's opaque layer picks its lobes, from the lobes' albedos
+// estimated at wo. A lobe that can reflect light keeps at least a tenth of its share of a uniform
+// choice, so a poor estimate costs variance, never bias. `diffuse` is the cosine-sampled lobe,
+// which also carries the multiple-scattering term.
+struct BsdfLobeProbabilities {
+    float diffuse;
+    float specular;
+    float sheen;
+    float clearcoat;
+};
+
+INLINE BsdfLobeProbabilities bsdfLobeProbabilities(BsdfParams p, float cosO) {
+    float coat = clearcoatFresnel(p, cosO);
+    float under = (1.0f - coat) * sheenScaling(p, cosO);
+    float eDiffuse = under * (luminance(p.baseColor) * diffuseWeight(p, 1.0f) +
+                              luminance(multipleScatteringColour(p)) * kPi * ggxLoss(p, cosO));
+    float eSpecular = under * luminance(specularFresnel(p, cosO));
+    float eSheen = maxComponent(p.sheenColor) > 0.0f
+                       ? (1.0f - coat) * luminance(p.sheenColor) * 0.5f
+                       : 0.0f;
+    float eCoat = coat;
+    float lobeCount = (eDiffuse > 0.0f ? 1.0f : 0.0f) + (eSpecular > 0.0f ? 1.0f : 0.0f) +
+                      (eSheen > 0.0f ? 1.0f : 0.0f) + (eCoat > 0.0f ? 1.0f : 0.0f);
+    BsdfLobeProbabilities q;
+    q.diffuse = 0.0f;
+    q.specular = 0.0f;
+    q.sheen = 0.0f;
+    q.clearcoat = 0.0f;
+    if (lobeCount == 0.0f) return q;
+    float total = eDiffuse + eSpecular + eSheen + eCoat;
+    if (eDiffuse > 0.0f) q.diffuse = 0.9f * eDiffuse / total + 0.1f / lobeCount;
+    if (eSheen > 0.0f) q.sheen = 0.9f * eSheen / total + 0.1f / lobeCount;
+    if (eCoat > 0.0f) q.clearcoat = 0.9f * eCoat / total + 0.1f / lobeCount;
+    if (eSpecular > 0.0f) q.specular = max(0.0f, 1.0f - q.diffuse - q.sheen - q.clearcoat);
+    return q;
+}
+
+// Kept for callers that only need the specular lobe's share.
 INLINE float specularSelectProbability(BsdfParams p, float cosO) {
-    float spec = luminance(specularFresnel(p, cosO));
-    float diff = luminance(diffuseAlbedo(p)) * diffuseTransmittance(p, cosO);
-    if (diff <= 0.0f) return 1.0f;
-    if (spec <= 0.0f) return 0.0f;
-    return clamp(spec / (spec + diff), 0.1f, 0.9f);
+    return bsdfLobeProbabilities(p, cosO).specular;
 }
 
 // Below this perceptual roughness a metal's glossy lobe is too narrow for photon density
@@ -150,20 +216,32 @@ const float kPhotonGlossyRoughness = 0.2f;
 // becomes a visible point and ends a final gather ray. Otherwise (smooth glass, mirrors, polished
 // metal) paths go on through it and photons that left it are caustic photons.
 INLINE bool storesPhotons(BsdfParams p) {
-    bool mirrorLike = p.metallic >= 1.0f && (specularIsDelta(p) || p.roughness < kPhotonGlossyRoughness);
+    bool mirrorLike = p.metallic >= 1.0f && (specularIsDelta(p) || p.roughness < kPhotonGlossyRoughness) &&
+                      maxComponent(p.sheenColor) <= 0.0f;
     return p.transmission < 1.0f && !mirrorLike;
 }
 
 // Non-delta part of the BSDF (f, without the cosine) for local wo, wi; both on the +z side.
 INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
-    vec3 f = diffuseAlbedo(p) * (kInvPi * diffuseTransmittance(p, wo.z) * diffuseTransmittance(p, wi.z));
+    vec3 h = normalize(wo + wi);
+    float cosH = dot(wo, h);
+    // glTF base: diffuse + GGX specular (+ multiple scattering).
+    vec3 f = p.baseColor * (kInvPi * diffuseWeight(p, cosH));
     if (!specularIsDelta(p)) {
-        float alpha = bsdfAlpha(p);
-        vec3 h = normalize(wo + wi);
-        float g2 = 1.0f / (1.0f + ggxLambda(wo, alpha) + ggxLambda(wi, alpha));
-        vec3 fr = specularFresnel(p, dot(wo, h));
-        f = f + fr * (ggxD(h, alpha) * g2 / (4.0f * wo.z * wi.z));
+        f = f + specularFresnel(p, cosH) * ggxReflection(wo, wi, bsdfAlpha(p));
+        vec3 ms = multipleScatteringColour(p);
+        if (maxComponent(ms) > 0.0f) f = f + ms * (ggxLoss(p, wo.z) * ggxLoss(p, wi.z));
+    }
+    // Sheen over the base, clearcoat over both.
+    if (maxComponent(p.sheenColor) > 0.0f) {
+        f = f * min(sheenScaling(p, wo.z), sheenScaling(p, wi.z)) +
+            p.sheenColor * charlieSheen(wo, wi, sheenAlpha(p.sheenRoughness));
+    }
+    if (p.clearcoat > 0.0f) {
+        float fc = clearcoatFresnel(p, cosH);
+        f = f * (1.0f - fc);
+        if (!clearcoatIsDelta(p)) f = f + vec3(fc * ggxReflection(wo, wi, clearcoatAlpha(p)));
     }
     return f * (1.0f - p.transmission);
 }
@@ -173,16 +251,19 @@ INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
 // surface is left out).
 INLINE vec3 diffuseReflectance(BsdfParams p, vec3 wo) {
     if (wo.z <= 0.0f) return vec3(0.0f);
-    return diffuseAlbedo(p) * (kInvPi * diffuseTransmittance(p, wo.z) * diffuseTransmittance(p, 1.0f)) *
-           (1.0f - p.transmission);
+    vec3 h = normalize(wo + vec3(0.0f, 0.0f, 1.0f));
+    float cosH = dot(wo, h);
+    float layers = (1.0f - clearcoatFresnel(p, cosH)) * min(sheenScaling(p, wo.z), sheenScaling(p, 1.0f));
+    return p.baseColor * (kInvPi * diffuseWeight(p, cosH) * layers * (1.0f - p.transmission));
 }
 
 // Solid-angle pdf with which sampleBsdf produces wi through its non-delta lobes.
 INLINE float pdfBsdf(BsdfParams p, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
-    float pSpec = specularSelectProbability(p, wo.z);
-    float pdf = (1.0f - pSpec) * cosineHemispherePdf(wi.z);
-    if (!specularIsDelta(p)) pdf = pdf + pSpec * ggxReflectionPdf(wo, wi, bsdfAlpha(p));
+    BsdfLobeProbabilities q = bsdfLobeProbabilities(p, wo.z);
+    float pdf = q.diffuse * cosineHemispherePdf(wi.z) + q.sheen * (0.5f * kInvPi);
+    if (!specularIsDelta(p)) pdf = pdf + q.specular * ggxReflectionPdf(wo, wi, bsdfAlpha(p));
+    if (q.clearcoat > 0.0f && !clearcoatIsDelta(p)) pdf = pdf + q.clearcoat * ggxReflectionPdf(wo, wi, clearcoatAlpha(p));
     return pdf * (1.0f - p.transmission);
 }
 
@@ -191,8 +272,9 @@ INLINE float pdfBsdf(BsdfParams p, vec3 wo, vec3 wi) {
 INLINE BsdfSample sampleDielectric(BsdfParams p, vec3 wo, bool entering, bool radiance, vec2 u) {
     BsdfSample s;
     s.pdf = 0.0f;
-    float eta = entering ? 1.0f / p.ior : p.ior;
-    if (p.thinWalled != 0u) eta = 1.0f / p.ior;
+    float ior = max(p.ior, 1.0f);
+    float eta = entering ? 1.0f / ior : ior;
+    if (p.thinWalled != 0u) eta = 1.0f / ior;
     float fr = fresnelDielectric(wo.z, eta);
     if (u.x < fr) {
         s.wi = vec3(-wo.x, -wo.y, wo.z);
@@ -223,29 +305,48 @@ INLINE BsdfSample sampleBsdf(BsdfParams p, vec3 wo, bool entering, bool radiance
     s.weight = vec3(0.0f);
     s.wi = vec3(0.0f, 0.0f, 1.0f);
     if (wo.z <= 0.0f) return s;
-    float pSpec = specularSelectProbability(p, wo.z);
+    BsdfLobeProbabilities q = bsdfLobeProbabilities(p, wo.z);
     float uLobe = (u.x - p.transmission) / max(1.0f - p.transmission, 1.0e-6f);
-    bool delta = specularIsDelta(p);
-    if (uLobe < pSpec) {
-        if (delta) {
-            s.wi = vec3(-wo.x, -wo.y, wo.z);
-            s.weight = specularFresnel(p, wo.z) / pSpec;
+    vec3 mirror = vec3(-wo.x, -wo.y, wo.z);
+    if (uLobe < q.clearcoat) {
+        if (clearcoatIsDelta(p)) {
+            s.wi = mirror;
+            s.weight = vec3(clearcoatFresnel(p, wo.z) / q.clearcoat);
             s.lobe = kLobeDelta;
             return s;
         }
-        vec3 h = sampleGgxVisibleNormal(wo, bsdfAlpha(p), vec2(u.y, u.z));
-        s.wi = reflect(-wo, h);
+        s.wi = reflect(-wo, sampleGgxVisibleNormal(wo, clearcoatAlpha(p), vec2(u.y, u.z)));
         s.lobe = kLobeGlossy;
-    } else {
+    } else if (uLobe < q.clearcoat + q.specular) {
+        if (specularIsDelta(p)) {
+            // The mirror's light passes the coat and the sheen twice (along wo = wi's mirror).
+            float layers = (1.0f - clearcoatFresnel(p, wo.z)) * sheenScaling(p, wo.z);
+            s.wi = mirror;
+            s.weight = specularFresnel(p, wo.z) * (layers / q.specular);
+            s.lobe = kLobeDelta;
+            return s;
+        }
+        s.wi = reflect(-wo, sampleGgxVisibleNormal(wo, bsdfAlpha(p), vec2(u.y, u.z)));
+        s.lobe = kLobeGlossy;
+    } else if (uLobe < q.clearcoat + q.specular + q.sheen) {
+        // Uniform hemisphere: the sheen lobe is broad and strongest towards grazing.
+        float z = u.y;
+        float r = sqrt(max(0.0f, 1.0f - z * z));
+        float phi = kTwoPi * u.z;
+        s.wi = vec3(r * cos(phi), r * sin(phi), z);
+        s.lobe = kLobeDiffuse;
+    } else if (q.diffuse > 0.0f) {
         s.wi = sampleCosineHemisphere(vec2(u.y, u.z));
         s.lobe = kLobeDiffuse;
+    } else {
+        return s;
     }
     if (s.wi.z <= 0.0f) {
         s.lobe = kLobeNone;
         return s;
     }
-    // Both non-delta lobes could have produced wi: weight by the full mixture pdf (delta
-    // specular excluded, it has probability zero of producing this direction).
+    // Every non-delta lobe could have produced wi: weight by the full mixture pdf (delta lobes
+    // are excluded, they have probability zero of producing this direction).
     s.pdf = pdfBsdf(p, wo, s.wi);
     if (s.pdf <= 0.0f) {
         s.lobe = kLobeNone;

@@ -56,6 +56,7 @@ const uint kMaterialDoubleSided = 1u;
 const uint kMaterialThinWalled = 2u;  // transmissive without KHR_materials_volume thickness
 const uint kMaterialAlphaMask = 4u;   // alphaMode MASK: a cut-out where alpha < alphaCutoff
 const uint kMaterialAlphaBlend = 8u;  // alphaMode BLEND: stochastic coverage = alpha
+const uint kMaterialNoEnergyCompensation = 16u;  // the spec's single-scattering GGX (docs/materials.md)
 
 struct GpuMaterial {
     vec4 baseColor;         // linear RGBA factor
@@ -75,8 +76,21 @@ struct GpuMaterial {
     float normalScale;
     float alphaCutoff;
     uint pad1;
+    // KHR_materials_specular / sheen / clearcoat (docs/materials.md); textures -1 when absent.
+    vec3 specularColor;     // specularColorFactor (F0 colour of the dielectric)
+    float specular;         // specularFactor (dielectric specular weight and F90)
+    vec3 sheenColor;        // sheenColorFactor; zero: no sheen
+    float sheenRoughness;   // sheenRoughnessFactor
+    float clearcoat;        // clearcoatFactor; zero: no coat
+    float clearcoatRoughness;
+    int specularTexture;          // A channel
+    int specularColorTexture;     // RGB, sRGB
+    int sheenColorTexture;        // RGB, sRGB
+    int sheenRoughnessTexture;    // A channel
+    int clearcoatTexture;         // R channel
+    int clearcoatRoughnessTexture;  // G channel
 };
-STATIC_ASSERT_SIZE(GpuMaterial, 96)
+STATIC_ASSERT_SIZE(GpuMaterial, 160)
 
 const uint kLightPoint = 0u;
 const uint kLightSpot = 1u;

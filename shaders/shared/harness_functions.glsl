@@ -35,13 +35,11 @@ INLINE uvec4 floatBits(vec4 v) {
 }
 
 INLINE BsdfParams harnessBsdfParams(HarnessInput in_) {
-    BsdfParams p;
-    p.baseColor = vec3(in_.b.x, in_.b.y, in_.b.z);
-    p.metallic = in_.b.w;
-    p.roughness = in_.a.w;
-    p.transmission = 0.0f;
+    BsdfParams p = makeBsdfParams(vec3(in_.b.x, in_.b.y, in_.b.z), in_.b.w, in_.a.w);
     p.ior = 1.0f + float(in_.u.y % 100u) * 0.01f;
-    p.thinWalled = 0u;
+    // KHR_materials_specular: weight 0, 0.25 .. 1 and an F0 colour up to 2 in green.
+    p.specular = float((in_.u.y >> 8u) % 5u) * 0.25f;
+    p.specularColor = vec3(1.0f, float((in_.u.y >> 12u) % 5u) * 0.5f, 1.0f);
     return p;
 }
 

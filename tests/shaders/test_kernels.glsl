@@ -38,7 +38,7 @@ struct GatherTestParams {
     uint requiredFlags;
     uint rejectedFlags;
 };
-STATIC_ASSERT_SIZE(GatherTestParams, 64)
+STATIC_ASSERT_SIZE(GatherTestParams, 112)
 
 // shadow_visibility_test.comp: the scene's 0..7, then; push constants: RasterDirectParams.
 const uint kShadowTestLightBinding = 8u;    // GpuLight: the raster lights
