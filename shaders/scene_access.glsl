@@ -21,6 +21,8 @@ layout(std430, set = 0, binding = kSceneTexelsBinding) readonly buffer Texels { 
 
 #include "shared/intersect.glsl"
 #include "shared/bvh_traverse.glsl"
+#include "shared/light_selection.glsl"
+#include "shared/spherical_triangle.glsl"
 
 // Distance by which rays leave a surface at p, scaled by p's magnitude (float spacing grows
 // with it).
@@ -76,6 +78,7 @@ struct SurfaceHit {
     uint material;
     float emitterPdfArea;
     bool frontFace;         // the ray arrived on the front (counter-clockwise) side
+    uint triangle;          // index in BVH order
 };
 
 SurfaceHit surfaceAt(uint tri, float b1, float b2, vec3 rayDir) {
@@ -94,6 +97,7 @@ SurfaceHit surfaceAt(uint tri, float b1, float b2, vec3 rayDir) {
     hit.material = s.material;
     hit.emitterPdfArea = s.emitterPdfArea;
     hit.frontFace = dot(rayDir, hit.geometricNormal) < 0.0f;
+    hit.triangle = tri;
     return hit;
 }
 
@@ -167,20 +171,30 @@ LightSample punctualLightSample(GpuLight light, vec3 x) {
     return ls;
 }
 
-LightSample sampleLight(uint index, vec3 x, vec2 u) {
+// A sample of light `index`, chosen with probability selectPdf (shared/light_selection.glsl), as
+// seen from x: emissive triangles by solid angle (where `solidAngle` allows it) or by area
+// (shared/spherical_triangle.glsl).
+LightSample sampleLight(uint index, float selectPdf, bool solidAngle, vec3 x, vec2 u) {
     GpuLight light = lights[index];
     if (light.type != kLightTriangle) {
         LightSample ls = punctualLightSample(light, x);
-        ls.pdf = light.selectPdf;
+        ls.pdf = selectPdf;
         return ls;
     }
     LightSample ls;
     ls.delta = false;
-    ls.pdf = light.selectPdf;
+    ls.pdf = 0.0f;
     ls.radiance = vec3(0.0f);
     GpuTriangle t = triangles[light.triangle];
     GpuTriangleShading s = shading[light.triangle];
-    vec2 b = sampleTriangleBarycentrics(u);
+    vec2 b;
+    if (useSphericalSampling(triangleSolidAngle(t.v0.xyz, t.v1.xyz, t.v2.xyz, x), solidAngle)) {
+        bool ok;
+        b = sampleSphericalTriangle(t.v0.xyz, t.v1.xyz, t.v2.xyz, x, u, ok);
+        if (!ok) return ls;
+    } else {
+        b = sampleTriangleBarycentrics(u);
+    }
     vec3 p = (1.0f - b.x - b.y) * t.v0.xyz + b.x * t.v1.xyz + b.y * t.v2.xyz;
     vec3 c = cross(t.v1.xyz - t.v0.xyz, t.v2.xyz - t.v0.xyz);
     float area = 0.5f * length(c);
@@ -198,7 +212,7 @@ LightSample sampleLight(uint index, vec3 x, vec2 u) {
     }
     vec2 uv = (1.0f - b.x - b.y) * s.uv01.xy + b.x * s.uv01.zw + b.y * s.uv2;
     ls.radiance = emittedRadiance(m, uv);
-    ls.pdf = light.selectPdf / area * dist2 / abs(cosLight);
+    ls.pdf = selectPdf * triangleLightPdf(t.v0.xyz, t.v1.xyz, t.v2.xyz, x, p, solidAngle);
     return ls;
 }
 

@@ -422,7 +422,8 @@ bool hasTemporaryFiles(const fs::path& dir) {
 // Every numeric flag of every subcommand, and how to reach a check of it (the integrator).
 const std::map<std::string, std::vector<std::string>> kNumericFlags = {
     {"render", {"--spp", "--width", "--height", "--seed", "--max-depth", "--time-limit", "--camera",
-                "--area-light-samples", "--max-memory", "--exposure", "--fov"}},
+                "--area-light-samples", "--max-memory", "--exposure", "--fov", "--light-photons", "--light-cell-k",
+                "--light-cell-floor", "--light-cell-size"}},
     {"render --integrator photon", {"--photons", "--caustic-photons", "--gather-rays", "--gather-k", "--radiance-photons",
                                     "--radius", "--alpha", "--q", "--importons", "--deposit-epsilon", "--density-accuracy",
                                     "--density-rounds"}},

@@ -100,6 +100,7 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     checkWritable(exrPath);
     checkWritable(pngPath);
     if (!options.statsJson.empty()) checkWritable(options.statsJson);
+    options.lightSampling.check();
     // Signals from here on stop the work and write what there is (app/interrupt.h).
     installInterruptHandler();
 
@@ -114,7 +115,7 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     if (!options.quiet)
         fmt::print(stderr, "vkphoton: {} ({} triangles) on {}{}\n", printable(options.scene.string()),
                    scene.triangles.size(), context.deviceName(), context.validationEnabled() ? " with validation" : "");
-    Renderer renderer(context, scene);
+    Renderer renderer(context, scene, options.lightSampling);
     FrameSettings frameSettings = options.frame;
     frameSettings.timeLimitFrom = start;  // --time-limit counts from the start of the command
     const std::unique_ptr<Integrator> integrator = config.create(renderer.gpuScene());

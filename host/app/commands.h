@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "gpu_scene/light_tree.h"
 #include "image/view_transform.h"
 #include "render/deposit_options.h"
 #include "render/frame.h"
@@ -18,6 +19,7 @@ struct RenderCommandOptions {
     std::filesystem::path statsJson;    // empty: none
     FrameSettings frame;
     DisplaySettings display;            // the PNG's exposure and view transform
+    LightSampling lightSampling;        // --light-sampler, --triangle-sampling
     double maxMemoryGiB = 0.0;          // --max-memory: 0 = the memory available
     std::string device;
     bool validate = false;
