@@ -3,8 +3,11 @@
 //   area         power selection, emissive triangles by area (the behaviour before issue 16)
 //   power        power selection, emissive triangles by solid angle
 //   bvh          the light BVH, emissive triangles by solid angle
+//   photon       photon light cells mixed with the BVH (default --light-cell-* settings)
+// The reference is rendered with --reference-method (bvh by default: unbiased, and far less noisy
+// than power where most lights are occluded).
 // Usage: build/bench/light_sampler_bench [SCENE] [--size N --reference-spp N --reference FILE.exr
-//          --spp 4,16,64 --seconds S --methods area,power,bvh --seeds K --device D]
+//          --spp 4,16,64 --seconds S --methods area,power,bvh,photon --reference-method M --seeds K --device D]
 // With --seconds, each method renders for that long (--time-limit) and reports the spp it reached.
 #include <map>
 #include <string>
@@ -29,7 +32,7 @@ int main(int argc, char** argv) {
     double seconds = 0.0;
     std::vector<uint32_t> spps{4, 16, 64};
     std::vector<std::string> methods{"area", "power", "bvh"};
-    std::string device, referencePath;
+    std::string device, referencePath, referenceMethod = "bvh";
     app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
     app.add_option("--size", size, "image size")->capture_default_str();
     app.add_option("--reference-spp", referenceSpp, "path-traced reference samples per pixel")->capture_default_str();
@@ -37,7 +40,10 @@ int main(int argc, char** argv) {
     app.add_option("--spp", spps, "sample counts")->delimiter(',');
     app.add_option("--seconds", seconds, "equal time: render each method this long instead of --spp");
     app.add_option("--methods", methods, "area, power, bvh")->delimiter(',')
-        ->check(CLI::IsMember({"area", "power", "bvh"}));
+        ->check(CLI::IsMember({"area", "power", "bvh", "photon"}));
+    app.add_option("--reference-method", referenceMethod, "light sampling of the reference")
+        ->check(CLI::IsMember({"area", "power", "bvh", "photon"}))
+        ->capture_default_str();
     app.add_option("--seeds", seeds, "independent renders per row (relMSE averaged)")->capture_default_str();
     app.add_option("--max-depth", maxDepth)->capture_default_str();
     app.add_option("--device", device);
@@ -50,18 +56,22 @@ int main(int argc, char** argv) {
         base.height = size;
         base.maxDepth = maxDepth;
         fmt::print("scene: {}, {}x{}, device: {}\n", scenePath, size, size, context.deviceName());
-        ImageRgb reference;
-        {
-            Renderer renderer(context, scene, {LightSampler::Power});
-            reference = bench::referenceImage(renderer, base, referenceSpp, referencePath);
-        }
         const std::map<std::string, LightSampling> sampling{
             {"area", {LightSampler::Power, TriangleSampling::Area}},
             {"power", {LightSampler::Power, TriangleSampling::SolidAngle}},
-            {"bvh", {LightSampler::Bvh, TriangleSampling::SolidAngle}}};
+            {"bvh", {LightSampler::Bvh, TriangleSampling::SolidAngle}},
+            {"photon", {LightSampler::Photon, TriangleSampling::SolidAngle}}};
+        ImageRgb reference;
+        {
+            Renderer renderer(context, scene, sampling.at(referenceMethod));
+            reference = bench::referenceImage(renderer, base, referenceSpp, referencePath);
+        }
         fmt::print("| method | spp | s | relMSE |\n|---|---|---|---|\n");
         for (const std::string& method : methods) {
+            const auto prepare = Clock::now();
             Renderer renderer(context, scene, sampling.at(method));
+            const double prepareSeconds = secondsSince(prepare);  // light BVH, photon cells
+            if (prepareSeconds > 0.05) fmt::print("({} set-up: {:.2f} s)\n", method, prepareSeconds);
             auto row = [&](uint32_t spp, double limit) {
                 double error = 0.0, time = 0.0, done = 0.0;
                 for (uint32_t k = 0; k < seeds; ++k) {

@@ -40,7 +40,7 @@ struct TriangleCase {
     glm::vec3 v0, v1, v2, p;
 };
 
-// Triangles seen from in front, obliquely, from close by and from afar (0.008 to ~2 sr).
+// Triangles seen from in front, obliquely, from close by and from afar (0.008 to 2.9 sr).
 const TriangleCase kTriangles[] = {
     {{-1.0f, 1.0f, -1.0f}, {1.0f, 1.0f, -1.0f}, {0.0f, 1.0f, 1.0f}, {0.0f, 0.0f, 0.0f}},
     {{0.6f, 0.2f, 0.0f}, {0.9f, 0.8f, 0.2f}, {0.4f, 0.6f, 0.7f}, {0.0f, 0.0f, 0.0f}},
