@@ -158,9 +158,11 @@ int runCommandLine(int argc, const char* const* argv) {
     renderCmd->add_option("--light-sampler", render.lightSampling.sampler,
                           "How next-event estimation chooses a light: power (in proportion to emitted power) or "
                           "bvh (a light BVH by importance at the shading point, Conty Estevez & Kulla 2018) or photon (per "
-                          "cell, the lights whose primary photons arrive there, Keller & Wald 2000, mixed with bvh)")
+                          "cell, the lights whose primary photons arrive there, Keller & Wald 2000, mixed with bvh); "
+                          "default: bvh for scenes with more than 16 lights (emissive triangles count one each), "
+                          "else power")
         ->transform(oneOf(lightSamplers))
-        ->option_text(choiceText(lightSamplers, render.lightSampling.sampler));
+        ->option_text("power|bvh|photon [auto]");
     const std::vector<std::pair<std::string, TriangleSampling>> triangleSamplings{
         {"solid-angle", TriangleSampling::SolidAngle}, {"area", TriangleSampling::Area}};
     renderCmd->add_option("--triangle-sampling", render.lightSampling.triangles,
@@ -259,6 +261,7 @@ int runCommandLine(int argc, const char* const* argv) {
             requireNonEmpty(*renderCmd, "--stats-json", render.statsJson);
             checkRange("--max-memory", render.maxMemoryGiB, 0.0, 1.0e6);
             render.frame.nextEventEstimation = !bsdfOnly;
+            render.lightSamplerAuto = renderCmd->get_option("--light-sampler")->count() == 0;
             render.frame.check();
             render.display.check();
             const IntegratorConfig& config = *configs.at(integratorName);

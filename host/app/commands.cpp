@@ -22,6 +22,7 @@
 #include "render/renderer.h"
 #include "gpu_scene/scene_buffers.h"
 #include "scene/gltf_loader.h"
+#include "shared/sampling.glsl"
 #include "util/check_range.h"
 #include "util/errors.h"
 #include "util/printable.h"
@@ -89,6 +90,13 @@ void GuideGridCommandOptions::check() const {
     guide.check();
 }
 
+LightSampler autoLightSampler(const Scene& scene) {
+    size_t lights = scene.lights.size();
+    for (const Triangle& t : scene.triangles)
+        if (gpu::luminance(scene.materials[t.material].emissive) > 0.0f) ++lights;
+    return lights > kAutoBvhLights ? LightSampler::Bvh : LightSampler::Power;
+}
+
 int runRender(const RenderCommandOptions& options, const IntegratorConfig& config) {
     const auto start = Clock::now();
     const std::filesystem::path exrPath = options.output.empty() ? defaultOutput(options.scene) : options.output;
@@ -115,7 +123,9 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     if (!options.quiet)
         fmt::print(stderr, "vkphoton: {} ({} triangles) on {}{}\n", printable(options.scene.string()),
                    scene.triangles.size(), context.deviceName(), context.validationEnabled() ? " with validation" : "");
-    Renderer renderer(context, scene, options.lightSampling);
+    LightSampling lightSampling = options.lightSampling;
+    if (options.lightSamplerAuto) lightSampling.sampler = autoLightSampler(scene);
+    Renderer renderer(context, scene, lightSampling);
     FrameSettings frameSettings = options.frame;
     frameSettings.timeLimitFrom = start;  // --time-limit counts from the start of the command
     const std::unique_ptr<Integrator> integrator = config.create(renderer.gpuScene());

@@ -13,13 +13,23 @@
 
 namespace vkp {
 
+// Without --light-sampler: the light BVH for scenes with more lights than this, else power.
+constexpr size_t kAutoBvhLights = 16;
+// The light sampler a render without --light-sampler uses for `scene`.
+LightSampler autoLightSampler(const Scene& scene);
+
 struct RenderCommandOptions {
     std::filesystem::path scene;
     std::filesystem::path output;       // .exr; empty: out/<scene name>.exr
     std::filesystem::path statsJson;    // empty: none
     FrameSettings frame;
     DisplaySettings display;            // the PNG's exposure and view transform
-    LightSampling lightSampling;        // --light-sampler, --triangle-sampling
+    // --light-sampler, --triangle-sampling, the photon cells' flags. Without --light-sampler the
+    // choice is automatic (lightSamplerAuto): bvh for scenes with more than kAutoBvhLights lights,
+    // power for fewer (docs/benchmarks.md: bvh 6.5x lower relMSE at equal time on rooms-10x10,
+    // the same per sample but slower on the Cornell box's single quad).
+    LightSampling lightSampling;
+    bool lightSamplerAuto = false;
     double maxMemoryGiB = 0.0;          // --max-memory: 0 = the memory available
     std::string device;
     bool validate = false;
