@@ -261,11 +261,11 @@ int runCommandLine(int argc, const char* const* argv) {
             requireNonEmpty(*renderCmd, "--stats-json", render.statsJson);
             checkRange("--max-memory", render.maxMemoryGiB, 0.0, 1.0e6);
             render.frame.nextEventEstimation = !bsdfOnly;
-            render.lightSamplerAuto = renderCmd->get_option("--light-sampler")->count() == 0;
             render.frame.check();
             render.display.check();
             const IntegratorConfig& config = *configs.at(integratorName);
             config.check();
+            render.lightSamplerAuto = renderCmd->get_option("--light-sampler")->count() == 0;
             return runRender(render, config);
         }
         if (photonsCmd->parsed()) {
