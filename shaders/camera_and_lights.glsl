@@ -6,8 +6,9 @@
 
 #include "path_vertex.glsl"
 
-// Next-event estimation at a non-delta path vertex: one light chosen by power, one sample on
-// it, a shadow ray. With `mis` the contribution of area lights is weighted by the power heuristic
+// Next-event estimation at a non-delta path vertex: one light chosen by the light sampler
+// (selectLight, shared/light_selection.glsl) at the vertex's position and shading normal, one
+// sample on it, a shadow ray. With `mis` the contribution of area lights is weighted by the power heuristic
 // against BSDF sampling (the caller then MIS-weights emission found by BSDF rays); without it the
 // estimate stands alone. Lights whose type bit (1 << type) is set in skipTypes contribute nothing:
 // another pass (the raster direct light) adds their full expectation, so dropping them keeps the
@@ -16,9 +17,11 @@ vec3 directLight(PathVertex v, uint lightCount, bool mis, uint skipTypes, inout 
     float uPick = nextSample(rng);
     vec2 uLight = nextSample2(rng);
     if (lightCount == 0u) return vec3(0.0f);
-    uint index = pickLight(uPick, lightCount);
+    LightChoice choice = selectLight(lightCount, v.hit.position, v.n, uPick);
+    if (choice.pdf <= 0.0f) return vec3(0.0f);
+    uint index = choice.index;
     if ((skipTypes & (1u << lights[index].type)) != 0u) return vec3(0.0f);
-    LightSample ls = sampleLight(index, v.hit.position, uLight);
+    LightSample ls = sampleLight(index, choice.pdf, triangleSolidAngleSampling(lightCount), v.hit.position, uLight);
     if (ls.pdf <= 0.0f) return vec3(0.0f);
     vec3 wi = toLocal(ls.wi, v.t, v.b, v.n);
     vec3 sideNormal = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
@@ -30,22 +33,29 @@ vec3 directLight(PathVertex v, uint lightCount, bool mis, uint skipTypes, inout 
     return f * wi.z * ls.radiance * (weight / ls.pdf);
 }
 
-// MIS weight (power heuristic) of emission that a BSDF-sampled ray along dir with solid-angle pdf
-// `bsdfPdf` found at vertex v, against next-event estimation of that point.
-float emissionMisWeight(PathVertex v, vec3 dir, float bsdfPdf) {
-    float cosLight = abs(dot(dir, v.hit.geometricNormal));
-    float lightPdf = v.hit.emitterPdfArea * v.distance * v.distance / max(cosLight, 1.0e-8f);
+// MIS weight (power heuristic) of emission that a BSDF-sampled ray with solid-angle pdf `bsdfPdf`
+// found at vertex v, against next-event estimation of that point from the vertex the ray left
+// (its position `from` and shading normal `fromNormal`, as directLight saw them there): the
+// light's selection pdf there times the pdf of its sample (solid angle or area).
+float emissionMisWeight(PathVertex v, float bsdfPdf, uint lightCount, vec3 from, vec3 fromNormal) {
+    float lightIndex = triangles[v.hit.triangle].v1.w;
+    if (lightIndex < 0.0f) return 1.0f;  // not in the light list: only BSDF sampling finds it
+    float selectPdf = selectLightPdf(lightCount, from, fromNormal, uint(lightIndex));
+    GpuTriangle t = triangles[v.hit.triangle];
+    float lightPdf = selectPdf * triangleLightPdf(t.v0.xyz, t.v1.xyz, t.v2.xyz, from, v.hit.position,
+                                                  triangleSolidAngleSampling(lightCount));
     return powerHeuristic(bsdfPdf, lightPdf);
 }
 
 // Environment light arriving along a camera-path ray that left the scene along dir: in full
 // behind the camera and delta bounces (`mis` false), else weighted by the power heuristic against
-// next-event estimation of the environment (bsdfPdf: the solid-angle pdf of the escaping ray).
-vec3 escapedRadiance(uint lightCount, vec3 dir, bool mis, float bsdfPdf) {
+// next-event estimation of the environment (bsdfPdf: the solid-angle pdf of the escaping ray;
+// from, fromNormal: the vertex it left and its shading normal, as emissionMisWeight takes them).
+vec3 escapedRadiance(uint lightCount, vec3 dir, bool mis, float bsdfPdf, vec3 from, vec3 fromNormal) {
     int index = environmentLightIndex(lightCount);
     if (index < 0) return vec3(0.0f);
     vec3 le = environmentRadiance(lights[index], dir);
-    return mis ? le * environmentMisWeight(lightCount, dir, bsdfPdf) : le;
+    return mis ? le * environmentMisWeight(lightCount, dir, bsdfPdf, from, fromNormal) : le;
 }
 
 #endif

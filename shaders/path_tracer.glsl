@@ -45,6 +45,8 @@ struct PathState {
     vec3 radiance;
     float lastPdf;     // solid-angle pdf of the last BSDF sample (for MIS at emitters)
     bool lastDelta;    // camera rays and delta lobes: emission is added unweighted
+    vec3 lastPosition; // the last vertex and its shading normal, where MIS recomputes the light pdf
+    vec3 lastNormal;
     float reference;   // guide-driven Russian roulette: the pixel's estimated value (< 0: not yet)
     uint depth;
     Sampler rng;
@@ -62,6 +64,8 @@ PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
     st.radiance = vec3(0.0f);
     st.lastPdf = 0.0f;
     st.lastDelta = true;
+    st.lastPosition = vec3(0.0f);
+    st.lastNormal = vec3(0.0f);
     st.reference = -1.0f;
     st.depth = 0u;
     return st;
@@ -150,7 +154,8 @@ bool extendPath(inout PathState st) {
     PathVertex v;
     if (!traceVertex(st.ray, v)) {
         // Escaped: the environment light (none when the scene has no environment).
-        st.radiance += st.throughput * escapedRadiance(params.lightCount, st.ray.dir, useNee && !st.lastDelta, st.lastPdf);
+        st.radiance += st.throughput * escapedRadiance(params.lightCount, st.ray.dir, useNee && !st.lastDelta, st.lastPdf,
+                                                        st.lastPosition, st.lastNormal);
         return false;
     }
     st.throughput *= v.transmittance;
@@ -159,7 +164,7 @@ bool extendPath(inout PathState st) {
         vec3 le = emittedRadiance(v.material, v.hit.uv);
         if (le.r + le.g + le.b > 0.0f) {
             float weight = 1.0f;
-            if (useNee && !st.lastDelta) weight = emissionMisWeight(v, st.ray.dir, st.lastPdf);
+            if (useNee && !st.lastDelta) weight = emissionMisWeight(v, st.lastPdf, params.lightCount, st.lastPosition, st.lastNormal);
             if (rasterCoversEmission(params.flags, st.depth, st.lastDelta)) weight = 0.0f;
             st.radiance += st.throughput * le * weight;
         }
@@ -188,6 +193,8 @@ bool extendPath(inout PathState st) {
     st.throughput *= bs.weight;
     st.lastDelta = (bs.lobe & kLobeDelta) != 0u;
     st.lastPdf = bs.pdf;
+    st.lastPosition = v.hit.position;
+    st.lastNormal = v.n;
     spawnRay(v, bs, st.ray);
 
     // Russian roulette: by the guide's estimate where there is one and --guide-rr is on (guiding.glsl),

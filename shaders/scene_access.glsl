@@ -22,6 +22,8 @@ layout(std430, set = 0, binding = kSceneTexelsBinding) readonly buffer Texels { 
 
 #include "shared/hash.glsl"
 #include "shared/photon.glsl"
+#include "shared/light_selection.glsl"
+#include "shared/spherical_triangle.glsl"
 
 float srgbToLinear(float c) {
     return c <= 0.04045f ? c / 12.92f : pow((c + 0.055f) / 1.055f, 2.4f);
@@ -141,6 +143,7 @@ struct SurfaceHit {
     uint material;
     float emitterPdfArea;
     bool frontFace;         // the ray arrived on the front (counter-clockwise) side
+    uint triangle;          // index in BVH order
 };
 
 // The normal map's normal (glTF: tangent space +X along the tangent, +Y along
@@ -180,6 +183,7 @@ SurfaceHit surfaceAt(uint tri, float b1, float b2, vec3 rayDir) {
     hit.material = s.material;
     hit.emitterPdfArea = s.emitterPdfArea;
     hit.frontFace = dot(rayDir, hit.geometricNormal) < 0.0f;
+    hit.triangle = tri;
     return hit;
 }
 
@@ -299,14 +303,20 @@ vec3 sampleEnvironment(GpuLight light, vec2 u, out vec3 radiance, out float pdf)
 
 // MIS weight (power heuristic) of environment light that a BSDF-sampled ray with solid-angle pdf
 // bsdfPdf found escaping along dir, against next-event estimation of the environment.
-float environmentMisWeight(uint lightCount, vec3 dir, float bsdfPdf) {
+// The selection pdf is the light sampler's at the vertex the ray left (`from`, shading normal
+// `fromNormal`), as next-event estimation saw it there.
+float environmentMisWeight(uint lightCount, vec3 dir, float bsdfPdf, vec3 from, vec3 fromNormal) {
     int index = environmentLightIndex(lightCount);
     if (index < 0) return 1.0f;
     GpuLight light = lights[index];
-    return powerHeuristic(bsdfPdf, light.selectPdf * environmentPdf(light, dir));
+    float selectPdf = selectLightPdf(lightCount, from, fromNormal, uint(index));
+    return powerHeuristic(bsdfPdf, selectPdf * environmentPdf(light, dir));
 }
 
-LightSample sampleLight(uint index, vec3 x, vec2 u) {
+// A sample of light `index`, chosen with probability selectPdf (shared/light_selection.glsl), as
+// seen from x: emissive triangles by solid angle (where `solidAngle` allows it) or by area
+// (shared/spherical_triangle.glsl).
+LightSample sampleLight(uint index, float selectPdf, bool solidAngle, vec3 x, vec2 u) {
     GpuLight light = lights[index];
     if (light.type == kLightEnvironment) {
         LightSample ls;
@@ -315,21 +325,28 @@ LightSample sampleLight(uint index, vec3 x, vec2 u) {
         ls.position = vec3(0.0f);
         float pdf;
         ls.wi = sampleEnvironment(light, u, ls.radiance, pdf);
-        ls.pdf = light.selectPdf * pdf;
+        ls.pdf = selectPdf * pdf;
         return ls;
     }
     if (light.type != kLightTriangle) {
         LightSample ls = punctualLightSample(light, x);
-        ls.pdf = light.selectPdf;
+        ls.pdf = selectPdf;
         return ls;
     }
     LightSample ls;
     ls.delta = false;
-    ls.pdf = light.selectPdf;
+    ls.pdf = 0.0f;
     ls.radiance = vec3(0.0f);
     GpuTriangle t = triangles[light.triangle];
     GpuTriangleShading s = shading[light.triangle];
-    vec2 b = sampleTriangleBarycentrics(u);
+    vec2 b;
+    if (useSphericalSampling(triangleSolidAngle(t.v0.xyz, t.v1.xyz, t.v2.xyz, x), solidAngle)) {
+        bool ok;
+        b = sampleSphericalTriangle(t.v0.xyz, t.v1.xyz, t.v2.xyz, x, u, ok);
+        if (!ok) return ls;
+    } else {
+        b = sampleTriangleBarycentrics(u);
+    }
     vec3 p = (1.0f - b.x - b.y) * t.v0.xyz + b.x * t.v1.xyz + b.y * t.v2.xyz;
     vec3 c = cross(t.v1.xyz - t.v0.xyz, t.v2.xyz - t.v0.xyz);
     float area = 0.5f * length(c);
@@ -346,7 +363,7 @@ LightSample sampleLight(uint index, vec3 x, vec2 u) {
         return ls;
     }
     ls.radiance = emittedRadiance(m, interpolatedUv(s, b.x, b.y));
-    ls.pdf = light.selectPdf / area * dist2 / abs(cosLight);
+    ls.pdf = selectPdf * triangleLightPdf(t.v0.xyz, t.v1.xyz, t.v2.xyz, x, p, solidAngle);
     return ls;
 }
 

@@ -42,6 +42,8 @@ void findVisiblePoint() {
     vec3 radiance = vec3(0.0f);
     bool lastDelta = true;  // the camera ray, then: was the last bounce a delta lobe
     float lastPdf = 0.0f;   // solid-angle pdf of the last bounce (polished metal)
+    vec3 lastPosition = vec3(0.0f);  // that bounce's vertex and shading normal (MIS light pdf)
+    vec3 lastNormal = vec3(0.0f);
     GpuVisiblePoint vp;  // all fields written, so invalid points are zero bytes but for pixel
     vp.position = vec3(0.0f);
     vp.material = 0u;
@@ -59,14 +61,14 @@ void findVisiblePoint() {
         PathVertex v;
         if (!traceVertex(ray, v)) {
             // The environment, weighted like emission against a polished-metal vertex's estimate.
-            radiance += throughput * escapedRadiance(params.lightCount, ray.dir, !lastDelta, lastPdf);
+            radiance += throughput * escapedRadiance(params.lightCount, ray.dir, !lastDelta, lastPdf, lastPosition, lastNormal);
             break;
         }
         throughput *= v.transmittance;
         // Emission behind delta bounces counts in full; behind a polished-metal bounce it is
         // weighted against that vertex's next-event estimate.
         if (emitsTowards(v.material, v.hit.frontFace)) {
-            float weight = lastDelta ? 1.0f : emissionMisWeight(v, ray.dir, lastPdf);
+            float weight = lastDelta ? 1.0f : emissionMisWeight(v, lastPdf, params.lightCount, lastPosition, lastNormal);
             if (rasterCoversEmission(params.flags, depth, lastDelta)) weight = 0.0f;
             radiance += throughput * emittedRadiance(v.material, v.hit.uv) * weight;
         }
@@ -96,6 +98,8 @@ void findVisiblePoint() {
         throughput *= bs.weight;
         lastDelta = (bs.lobe & kLobeDelta) != 0u;
         lastPdf = bs.pdf;
+        lastPosition = v.hit.position;
+        lastNormal = v.n;
         spawnRay(v, bs, ray);
     }
     if (rasterDirectLightOn(params.flags)) radiance += rasterDirect[pixel].rgb;

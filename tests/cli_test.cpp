@@ -96,6 +96,29 @@ TEST(Cli, UnknownDeviceExitsWithTwo) {
     EXPECT_NE(r.output.find("no-such-gpu"), std::string::npos) << r.output;
 }
 
+// --light-sampler: without it, the light BVH for many lights (rooms-10x10: 200 triangles) and power
+// for few (the Cornell box's quad); given, as told, with the photon cells' statistics.
+TEST(Cli, LightSamplerDefaultFollowsTheLightCount) {
+    const fs::path dir = tempDir("light-sampler");
+    const std::string rooms = std::string(VKPHOTON_SCENES) + "/rooms-10x10.gltf";
+    const std::vector<std::tuple<std::string, std::string, std::string>> cases{
+        {rooms, "", "bvh"}, {kBox, "", "power"}, {kBox, "--light-sampler bvh", "bvh"},
+        {kBox, "--light-sampler photon --light-photons 2000 --light-cell-k 4", "photon"}};
+    for (const auto& [scene, flags, mode] : cases) {
+        const fs::path stats = dir / "stats.json";
+        const RunResult r = runVkphoton("render " + scene + " --quiet --spp 1 --width 8 --height 8 " + flags + " -o " +
+                                        (dir / "x.exr").string() + " --stats-json " + stats.string());
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        std::ifstream in(stats);
+        const nlohmann::json j = nlohmann::json::parse(in);
+        EXPECT_EQ(j["light_sampler"]["mode"], mode) << scene << " " << flags;
+        if (mode == "photon") {
+            EXPECT_GT(j["light_sampler"]["cells"]["cells"].get<int>(), 0);
+            EXPECT_LE(j["light_sampler"]["cells"]["meanCandidates"].get<double>(), 4.0);
+        }
+    }
+}
+
 TEST(Cli, RenderWritesExrPngAndStats) {
     const fs::path dir = tempDir("render");
     const fs::path exr = dir / "sub" / "box.exr";
@@ -422,7 +445,8 @@ bool hasTemporaryFiles(const fs::path& dir) {
 // Every numeric flag of every subcommand, and how to reach a check of it (the integrator).
 const std::map<std::string, std::vector<std::string>> kNumericFlags = {
     {"render", {"--spp", "--width", "--height", "--seed", "--max-depth", "--time-limit", "--camera",
-                "--area-light-samples", "--max-memory", "--exposure", "--fov", "--env-strength", "--env-rotation", "--scene"}},
+                "--area-light-samples", "--max-memory", "--exposure", "--fov", "--env-strength", "--env-rotation", "--scene",
+                "--light-photons", "--light-cell-k", "--light-cell-floor", "--light-cell-size"}},
     {"render --integrator photon", {"--photons", "--caustic-photons", "--gather-rays", "--gather-k", "--radiance-photons",
                                     "--radius", "--alpha", "--q", "--importons", "--deposit-epsilon", "--density-accuracy",
                                     "--density-rounds"}},

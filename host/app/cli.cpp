@@ -198,6 +198,37 @@ int runCommandLine(int argc, const char* const* argv) {
     renderCmd->add_option("--exposure", render.display.exposureEv,
                           "Exposure of the PNG in stops: the radiance is scaled by 2^EV before the view transform")
         ->capture_default_str();
+    const std::vector<std::pair<std::string, LightSampler>> lightSamplers{{"power", LightSampler::Power},
+                                                                          {"bvh", LightSampler::Bvh},
+                                                                          {"photon", LightSampler::Photon}};
+    renderCmd->add_option("--light-sampler", render.lightSampling.sampler,
+                          "How next-event estimation chooses a light: power (in proportion to emitted power) or "
+                          "bvh (a light BVH by importance at the shading point, Conty Estevez & Kulla 2018) or photon (per "
+                          "cell, the lights whose primary photons arrive there, Keller & Wald 2000, mixed with bvh); "
+                          "default: bvh for scenes with more than 16 lights (emissive triangles count one each), "
+                          "else power")
+        ->transform(oneOf(lightSamplers))
+        ->option_text("power|bvh|photon [auto]");
+    const std::vector<std::pair<std::string, TriangleSampling>> triangleSamplings{
+        {"solid-angle", TriangleSampling::SolidAngle}, {"area", TriangleSampling::Area}};
+    renderCmd->add_option("--triangle-sampling", render.lightSampling.triangles,
+                          "How next-event estimation samples an emissive triangle: solid-angle (uniform over the "
+                          "solid angle it subtends, Arvo 1995; by area where that is tiny) or area (by area only)")
+        ->transform(oneOf(triangleSamplings))
+        ->option_text(choiceText(triangleSamplings, render.lightSampling.triangles));
+    renderCmd->add_option("--light-photons", render.lightSampling.cellPhotons,
+                          "--light-sampler photon: photon paths whose primary hits fill the light cells")
+        ->capture_default_str();
+    renderCmd->add_option("--light-cell-k", render.lightSampling.cellK,
+                          "--light-sampler photon: candidate lights per cell at most")
+        ->capture_default_str();
+    renderCmd->add_option("--light-cell-floor", render.lightSampling.cellFloor,
+                          "--light-sampler photon: probability of choosing by the light BVH instead of the cell "
+                          "(> 0 keeps the estimate unbiased)")
+        ->capture_default_str();
+    renderCmd->add_option("--light-cell-size", render.lightSampling.cellSize,
+                          "--light-sampler photon: cell size in metres (0: the scene's largest extent / 40)")
+        ->capture_default_str();
     std::string integratorHelp = "The integrator:";
     std::string integratorChoices;
     for (const IntegratorKind& kind : integratorKinds()) {
@@ -296,6 +327,7 @@ int runCommandLine(int argc, const char* const* argv) {
             if (renderCmd->get_option("--aov")->count() > 0) render.aov = parseAovList(aovList);
             const IntegratorConfig& config = *configs.at(integratorName);
             config.check();
+            render.lightSamplerAuto = renderCmd->get_option("--light-sampler")->count() == 0;
             return runRender(render, config);
         }
         if (photonsCmd->parsed()) {

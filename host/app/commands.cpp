@@ -25,6 +25,7 @@
 #include "render/renderer.h"
 #include "gpu_scene/scene_buffers.h"
 #include "scene/gltf_loader.h"
+#include "shared/sampling.glsl"
 #include "util/check_range.h"
 #include "util/errors.h"
 #include "util/printable.h"
@@ -102,6 +103,13 @@ void GuideGridCommandOptions::check() const {
     guide.check();
 }
 
+LightSampler autoLightSampler(const Scene& scene) {
+    size_t lights = scene.lights.size();
+    for (const Triangle& t : scene.triangles)
+        if (gpu::luminance(scene.materials[t.material].emissive) > 0.0f) ++lights;
+    return lights > kAutoBvhLights ? LightSampler::Bvh : LightSampler::Power;
+}
+
 int runRender(const RenderCommandOptions& options, const IntegratorConfig& config) {
     const auto start = Clock::now();
     const std::filesystem::path exrPath = options.output.empty() ? defaultOutput(options.scene) : options.output;
@@ -116,6 +124,7 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     // `vkphoton merge` joins the beauty image only; parts with AOV layers would lose them.
     if (options.aov.any() && options.frame.crop)
         throw InputError("--aov cannot be combined with --tile or --crop: vkphoton merge joins the image only");
+    options.lightSampling.check();
     // Signals from here on stop the work and write what there is (app/interrupt.h).
     installInterruptHandler();
 
@@ -131,7 +140,9 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     if (!options.quiet)
         fmt::print(stderr, "vkphoton: {} ({} triangles) on {}{}\n", printable(options.scene.string()),
                    scene.triangles.size(), context.deviceName(), context.validationEnabled() ? " with validation" : "");
-    Renderer renderer(context, scene);
+    LightSampling lightSampling = options.lightSampling;
+    if (options.lightSamplerAuto) lightSampling.sampler = autoLightSampler(scene);
+    Renderer renderer(context, scene, lightSampling);
     FrameSettings frameSettings = options.frame;
     frameSettings.timeLimitFrom = start;  // --time-limit counts from the start of the command
     const std::unique_ptr<Integrator> integrator = config.create(renderer.gpuScene());

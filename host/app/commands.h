@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "gpu_scene/light_tree.h"
 #include "image/view_transform.h"
 #include "render/deposit_options.h"
 #include "render/frame.h"
@@ -14,6 +15,11 @@
 
 namespace vkp {
 
+// Without --light-sampler: the light BVH for scenes with more lights than this, else power.
+constexpr size_t kAutoBvhLights = 16;
+// The light sampler a render without --light-sampler uses for `scene`.
+LightSampler autoLightSampler(const Scene& scene);
+
 struct RenderCommandOptions {
     std::filesystem::path scene;
     std::filesystem::path output;       // .exr; empty: out/<scene name>.exr
@@ -22,6 +28,12 @@ struct RenderCommandOptions {
     DisplaySettings display;            // the PNG's exposure and view transform
     AovSettings aov;                    // --aov: extra EXR channels
     EnvironmentSettings environment;   // --env, --env-strength, --env-rotation
+    // --light-sampler, --triangle-sampling, the photon cells' flags. Without --light-sampler the
+    // choice is automatic (lightSamplerAuto): bvh for scenes with more than kAutoBvhLights lights,
+    // power for fewer (docs/benchmarks.md: bvh 6.5x lower relMSE at equal time on rooms-10x10,
+    // the same per sample but slower on the Cornell box's single quad).
+    LightSampling lightSampling;
+    bool lightSamplerAuto = false;
     double maxMemoryGiB = 0.0;          // --max-memory: 0 = the memory available
     int sceneIndex = -1;                // --scene: the glTF scene; -1: the file's default
     std::string device;

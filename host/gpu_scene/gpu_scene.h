@@ -10,8 +10,9 @@ namespace vk { class Context; }
 
 class GpuScene {
 public:
-    // Builds the BVH and uploads the scene; `scene` must outlive this object.
-    GpuScene(vk::Context& context, const Scene& scene);
+    // Builds the BVH and uploads the scene; `scene` must outlive this object. `lightSampling`:
+    // how next-event estimation chooses and samples lights (--light-sampler).
+    GpuScene(vk::Context& context, const Scene& scene, LightSampling lightSampling = {});
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;
 
@@ -20,6 +21,9 @@ public:
     const SceneArrays& arrays() const { return m_arrays; }
     const SceneBuffers& buffers() const { return m_buffers; }
     double uploadSeconds() const { return m_uploadSeconds; }
+    // Replaces the light-selection data (SceneArrays::lightCdf) and its buffer: --light-sampler
+    // photon's cells (render/light_cells.h), before any kernel binds the scene.
+    void replaceLightSelection(std::vector<float> data);
 
 private:
     vk::Context& m_context;

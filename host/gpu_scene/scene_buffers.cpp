@@ -72,7 +72,7 @@ void packVertexData(const Triangle& t, gpu::GpuTriangleShading& s) {
 
 }  // namespace
 
-SceneArrays buildSceneArrays(const Scene& scene) {
+SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling) {
     SceneArrays a;
     const auto start = std::chrono::steady_clock::now();
     const Bvh bvh = buildBvh(scene.triangles);
@@ -177,6 +177,13 @@ SceneArrays buildSceneArrays(const Scene& scene) {
             a.shading[a.lights[i].triangle].emitterPdfArea = static_cast<float>(pdf) / area;
         }
     }
+    for (gpu::GpuTriangle& t : a.triangles) t.v1.w = -1.0f;
+    for (size_t i = 0; i < a.lights.size(); ++i)
+        if (a.lights[i].type == gpu::kLightTriangle) a.triangles[a.lights[i].triangle].v1.w = static_cast<float>(i);
+    a.lightSampling = sampling;
+    a.lightTree = appendLightSelection(
+        a.lightCdf, buildLightTree(a.lights, a.triangles, a.shading, a.materials, power),
+        static_cast<uint32_t>(a.lights.size()), sampling);
 
     std::vector<uint32_t> imageOffset;
     for (const Texture& tex : scene.textures) {
@@ -241,6 +248,10 @@ std::vector<const vk::Buffer*> SceneBuffers::bindings() const {
     b[gpu::kSceneTexturesBinding] = &m_textures;
     b[gpu::kSceneTexelsBinding] = &m_texels;
     return b;
+}
+
+void SceneBuffers::replaceLightSelection(vk::Context& context, const std::vector<float>& data) {
+    m_lightCdf = vk::makeStorageBuffer(context, "light CDF", data);
 }
 
 uint64_t SceneBuffers::bytes() const {

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "gpu_scene/light_tree.h"
 #include "scene/scene.h"
 #include "shared/gpu_types.glsl"
 #include "shared/kernels/scene.glsl"
@@ -21,19 +22,24 @@ struct SceneArrays {
     std::vector<gpu::GpuTriangleShading> shading;   // BVH order
     std::vector<gpu::GpuMaterial> materials;
     std::vector<gpu::GpuLight> lights;
-    std::vector<float> lightCdf;                    // inclusive prefix sums of selectPdf, last = 1
+    std::vector<float> lightCdf;                    // inclusive prefix sums of selectPdf, last = 1; then
+                                                    // the selection data (shared/light_selection.glsl)
     std::vector<gpu::GpuTexture> textures;
     std::vector<uint32_t> texels;
     double totalLightPower = 0.0;                   // watts, sum over all lights
     double bvhBuildSeconds = 0.0;
+    LightSampling lightSampling;                    // what lightCdf's header selects (--light-sampler)
+    LightTreeStats lightTree;                       // the selection data after the CDF
 };
 
 // Builds the BVH and the GPU arrays. Lights are selected for next-event estimation in proportion
 // to their emitted power (emissive triangles: pi * luminance(Le) * area, twice if double-sided,
 // Le averaged over the emissive texture's texels the triangle reads (textured_emission.h);
 // point/spot: 4 pi * luminance(I); directional: luminance(E) * pi * r^2 of the scene's bounding
-// sphere).
-SceneArrays buildSceneArrays(const Scene& scene);
+// sphere) by default; `sampling` picks the light-selection mode next-event estimation uses and how
+// it samples triangles (gpu_scene/light_tree.h); the light BVH is built for every mode. Each emissive triangle's
+// GpuTriangle.v1.w holds its light index (as a float), -1 elsewhere.
+SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling = {});
 
 // The most triangles a device can hold: its largest per-triangle buffer (the shading
 // attributes) within maxStorageBufferRange; the BVH needs fewer bytes per triangle.
@@ -50,6 +56,8 @@ public:
     // The scene buffers in binding order (kSceneBindingCount of them, from binding 0).
     std::vector<const vk::Buffer*> bindings() const;
     uint32_t lightCount() const { return m_lightCount; }
+    // Uploads new light-selection data (the CDF, then shared/light_selection.glsl's layout).
+    void replaceLightSelection(vk::Context& context, const std::vector<float>& data);
     uint64_t bytes() const;
 
 private:

@@ -11,7 +11,11 @@
 
 namespace vkp {
 
-Renderer::Renderer(vk::Context& context, const Scene& scene) : m_scene(context, scene) {}
+Renderer::Renderer(vk::Context& context, const Scene& scene, LightSampling lightSampling)
+    : m_scene(context, scene, lightSampling) {
+    lightSampling.check();
+    if (lightSampling.sampler == LightSampler::Photon) m_lightCells = prepareLightCells(m_scene, lightSampling);
+}
 
 RenderResult Renderer::render(const FrameSettings& settings, Integrator& integrator, const ProgressCallback& progress,
                               const std::atomic<bool>* stop) {
@@ -63,6 +67,25 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     stats.set("scene_stats.triangles", m_scene.arrays().triangles.size());
     stats.set("scene_stats.lights", m_scene.arrays().lights.size());
     stats.set("scene_stats.gpuBytes", m_scene.buffers().bytes());
+    const LightTreeStats& tree = m_scene.arrays().lightTree;
+    stats.set("light_sampler.mode", std::string(lightSamplerName(m_scene.arrays().lightSampling.sampler)));
+    stats.set("light_sampler.triangleSampling",
+              std::string(m_scene.arrays().lightSampling.triangles == TriangleSampling::Area ? "area" : "solid-angle"));
+    stats.set("light_sampler.lights", m_scene.arrays().lights.size());
+    stats.set("light_sampler.treeLights", tree.treeLights);
+    stats.set("light_sampler.infiniteLights", tree.infiniteLights);
+    stats.set("light_sampler.treeNodes", tree.nodes);
+    stats.set("light_sampler.treeDepth", tree.depth);
+    stats.set("light_sampler.bytes", m_scene.arrays().lightCdf.size() * sizeof(float));
+    if (m_lightCells) {
+        stats.set("light_sampler.cells.photons", m_lightCells->photons);
+        stats.set("light_sampler.cells.cells", m_lightCells->cells);
+        stats.set("light_sampler.cells.buckets", m_lightCells->buckets);
+        stats.set("light_sampler.cells.meanCandidates", m_lightCells->meanCandidates);
+        stats.set("light_sampler.cells.bytes", m_lightCells->bytes);
+        stats.set("light_sampler.cells.cellSize", double(m_lightCells->cellSize));
+        stats.set("light_sampler.cells.seconds", m_lightCells->seconds);
+    }
     stats.set("timings.bvhSeconds", m_scene.arrays().bvhBuildSeconds);
     stats.set("timings.uploadSeconds", m_scene.uploadSeconds());
     stats.set("timings.renderSeconds", renderSeconds);

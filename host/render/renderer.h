@@ -6,9 +6,11 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <utility>
 
 #include "gpu_scene/gpu_scene.h"
+#include "render/light_cells.h"
 #include "image/image.h"
 #include "render/frame.h"
 #include "render/integrator.h"
@@ -35,8 +37,9 @@ using ProgressCallback = std::function<void(const RenderProgress&)>;
 
 class Renderer {
 public:
-    // Builds the BVH and uploads the scene once for every render that follows.
-    Renderer(vk::Context& context, const Scene& scene);
+    // Builds the BVH and uploads the scene once for every render that follows, with next-event
+    // estimation choosing and sampling lights by `lightSampling`.
+    Renderer(vk::Context& context, const Scene& scene, LightSampling lightSampling = {});
 
     const GpuScene& gpuScene() const { return m_scene; }
 
@@ -53,6 +56,7 @@ public:
 
 private:
     GpuScene m_scene;
+    std::optional<LightCellStats> m_lightCells;  // --light-sampler photon
 };
 
 }  // namespace vkp

@@ -1,0 +1,146 @@
+// --light-sampler on the GPU: every sampler estimates the same image. The path tracer's mean
+// radiance with the light BVH equals power sampling's (two-sample test over seeds) on scenes with
+// 1, 4 and 200 lights (rooms-10x10: 100 quads); the photon integrator's visible points too.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "gpu_test_support.h"
+#include "image/image.h"
+#include "render/integrators/path_integrator.h"
+#include "render/renderer.h"
+#include "scene/gltf_loader.h"
+#include "test_scenes.h"
+
+namespace vkp {
+namespace {
+
+// An open-topped grey box with one single-sided emissive triangle under its missing lid; with
+// `more`, a point light, a spot and a sun besides (4 lights, one of them outside the light BVH).
+Scene boxScene(bool more) {
+    Scene scene = test::shadowTestScene();
+    test::addBox(scene, glm::vec3(-2.0f, 0.0f, -2.0f), glm::vec3(2.0f, 3.0f, 2.0f), true);
+    // Inward-facing: flip the box's triangles so the camera inside sees their fronts.
+    for (Triangle& t : scene.triangles) std::swap(t.p[1], t.p[2]);
+    Material emitter;
+    emitter.name = "emitter";
+    emitter.emissive = glm::vec3(20.0f, 16.0f, 12.0f);
+    scene.materials.push_back(emitter);
+    Triangle light;
+    light.p[0] = glm::vec3(-0.5f, 2.9f, -0.5f);
+    light.p[1] = glm::vec3(0.5f, 2.9f, -0.5f);
+    light.p[2] = glm::vec3(0.0f, 2.9f, 0.6f);
+    light.material = 1;
+    for (glm::vec3& n : light.n) n = glm::vec3(0.0f, -1.0f, 0.0f);
+    scene.triangles.push_back(light);
+    for (const Triangle& t : scene.triangles)
+        for (const glm::vec3& p : t.p) scene.bounds.grow(p);
+    for (Triangle& t : scene.triangles)
+        for (glm::vec3& n : t.n) n = glm::normalize(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
+    if (more) {
+        test::addPointLight(scene, glm::vec3(1.0f, 1.5f, 1.0f), glm::vec3(3.0f));
+        test::addSunAndSpot(scene, glm::vec3(1.0f), glm::vec3(20.0f));
+    }
+    scene.cameras.push_back(test::lookAt(glm::vec3(0.0f, 1.5f, 1.8f), glm::vec3(0.0f, 0.8f, -2.0f)));
+    return scene;
+}
+
+struct Moments {
+    double mean = 0.0;
+    double standardError = 0.0;
+};
+
+Moments meanOverSeeds(const Scene& scene, LightSampling sampling, uint32_t size, uint32_t spp, int seeds,
+                      uint32_t maxDepth = 3) {
+    Renderer renderer(test::gpu(), scene, sampling);
+    double sum = 0.0, sumSq = 0.0;
+    for (int seed = 0; seed < seeds; ++seed) {
+        FrameSettings s;
+        s.width = size;
+        s.height = size;
+        s.samplesPerPixel = spp;
+        s.seed = 300 + seed;
+        s.maxDepth = maxDepth;
+        const RenderResult r = renderer.render<PathIntegrator>(s);
+        EXPECT_EQ(r.stats.get<uint64_t>("counters.nonFiniteSamples"), 0u);
+        const double m = meanValue(r.image);
+        sum += m;
+        sumSq += m * m;
+    }
+    Moments m;
+    m.mean = sum / seeds;
+    m.standardError = std::sqrt(std::max(0.0, (sumSq - seeds * m.mean * m.mean) / (seeds - 1)) / seeds);
+    return m;
+}
+
+void expectSameMean(const Scene& scene, const std::string& name, uint32_t size, uint32_t spp,
+                    LightSampling a = {LightSampler::Power}, LightSampling b = {LightSampler::Bvh},
+                    uint32_t maxDepth = 3) {
+    constexpr int kSeeds = 6;
+    const Moments power = meanOverSeeds(scene, a, size, spp, kSeeds, maxDepth);
+    const Moments bvh = meanOverSeeds(scene, b, size, spp, kSeeds, maxDepth);
+    const double se = std::sqrt(power.standardError * power.standardError + bvh.standardError * bvh.standardError);
+    ASSERT_GT(power.mean, 0.0);
+    // 5 standard errors of the difference (t, 10 dof: ~0.05% two-sided) plus 0.5% for float noise.
+    EXPECT_NEAR(bvh.mean, power.mean, 5.0 * se + 0.005 * power.mean)
+        << name << ": bvh " << bvh.mean << " +- " << bvh.standardError << " vs power " << power.mean << " +- "
+        << power.standardError;
+}
+
+class LightSamplerRender : public test::GpuTest {};
+
+// Solid-angle sampling of the emissive triangles estimates the same direct light as the area
+// sampling it replaced (depth 1: direct light only, where the two differ most), and the same image.
+TEST_F(LightSamplerRender, SolidAngleMeanEqualsAreaSamplingOnTheCornellBox) {
+    const Scene scene = loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-box.gltf");
+    const LightSampling area{LightSampler::Power, TriangleSampling::Area};
+    const LightSampling solidAngle{LightSampler::Power, TriangleSampling::SolidAngle};
+    expectSameMean(scene, "cornell-box direct", 32, 16, area, solidAngle, 1);
+    expectSameMean(scene, "cornell-box", 32, 16, area, solidAngle, 3);
+}
+
+TEST_F(LightSamplerRender, BvhMeanEqualsPowerWithOneLight) {
+    const Scene scene = boxScene(false);
+    ASSERT_EQ(buildSceneArrays(scene).lights.size(), 1u);
+    expectSameMean(scene, "one light", 32, 16);
+}
+
+TEST_F(LightSamplerRender, BvhMeanEqualsPowerWithFourLights) {
+    const Scene scene = boxScene(true);
+    ASSERT_EQ(buildSceneArrays(scene).lights.size(), 4u);
+    expectSameMean(scene, "four lights", 32, 16);
+}
+
+TEST_F(LightSamplerRender, BvhMeanEqualsPowerInTheHundredRooms) {
+    const Scene scene = loadGltf(std::string(VKPHOTON_SCENES) + "/rooms-10x10.gltf");
+    ASSERT_EQ(buildSceneArrays(scene).lights.size(), 200u);  // 100 quads
+    expectSameMean(scene, "rooms-10x10", 32, 16);
+}
+
+// Photon light cells (Keller & Wald section 3 with a floor) estimate the same image as power sampling
+// in the hundred rooms and behind the slit (door-slit: the camera's room is lit only through it).
+TEST_F(LightSamplerRender, PhotonCellsMeanEqualsPower) {
+    LightSampling photon{LightSampler::Photon};
+    photon.cellPhotons = 50000;
+    for (const char* name : {"rooms-10x10", "door-slit"}) {
+        const Scene scene = loadGltf(std::string(VKPHOTON_SCENES) + "/" + name + ".gltf");
+        expectSameMean(scene, name, 32, 16, {LightSampler::Power}, photon);
+    }
+}
+
+// Same seed, same sampler: the same image bit for bit.
+TEST_F(LightSamplerRender, BvhIsReproducible) {
+    const Scene scene = boxScene(true);
+    Renderer renderer(test::gpu(), scene, {LightSampler::Bvh});
+    FrameSettings s;
+    s.width = 16;
+    s.height = 16;
+    s.samplesPerPixel = 4;
+    const RenderResult a = renderer.render<PathIntegrator>(s);
+    const RenderResult b = renderer.render<PathIntegrator>(s);
+    EXPECT_EQ(a.image.pixels, b.image.pixels);
+    EXPECT_EQ(a.stats.get<std::string>("light_sampler.mode"), "bvh");
+}
+
+}  // namespace
+}  // namespace vkp
