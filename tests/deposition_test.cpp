@@ -245,7 +245,11 @@ TEST_F(DepositionTest, RendersAgreeWithKeepingEveryPhoton) {
         const auto allStored = all.stats.get<uint64_t>("photons.globalStored");
         for (const DepositMode mode : {DepositMode::Importance, DepositMode::Density}) {
             const RenderResult kept = renderer.render<PhotonIntegrator>(boxFrame(seed), boxPhotons(mode));
-            EXPECT_LT(kept.stats.get<uint64_t>("photons.globalStored"), allStored);
+            // At most every photon: in the Cornell box the camera sees every wall, and with glTF's
+            // brighter Appendix B material importance reaches all of them, so importance
+            // deposition may keep every photon here. That it drops photons where the camera does
+            // not look is tested on rooms-10x10 above.
+            EXPECT_LE(kept.stats.get<uint64_t>("photons.globalStored"), allStored) << depositModeName(mode);
             EXPECT_EQ(kept.stats.get<uint64_t>("photons.globalDeposits"), allStored);
             EXPECT_GT(kept.stats.get<double>("photons.importanceScale"), 0.0);
             const double a = meanLuminance(all.image);

@@ -68,7 +68,7 @@ TEST(SceneReport, CountsAndExtensions) {
     EXPECT_EQ(extensions.size(), 5u);
     EXPECT_EQ(extensions["KHR_lights_punctual"], std::make_pair(std::string("read"), true));
     EXPECT_EQ(extensions["KHR_materials_emissive_strength"], std::make_pair(std::string("read"), false));
-    EXPECT_EQ(extensions["KHR_materials_clearcoat"], std::make_pair(std::string("ignored"), false));
+    EXPECT_EQ(extensions["KHR_materials_clearcoat"], std::make_pair(std::string("read"), false));  // read since issue 12
     EXPECT_EQ(extensions["KHR_texture_transform"], std::make_pair(std::string("read"), false));
     EXPECT_EQ(extensions["EXT_vkphoton_test_unknown"], std::make_pair(std::string("ignored"), false));
 }
