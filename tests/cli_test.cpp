@@ -19,6 +19,7 @@
 #include <regex>
 #include <set>
 
+#include "cli_runner.h"
 #include "image/exr.h"
 #include "image/image.h"
 
@@ -27,32 +28,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct RunResult {
-    int exitCode = -1;
-    std::string output;  // stdout and stderr
-};
+using test::RunResult;
+using test::runVkphoton;
 
-// `environment`: assignments put before the command ("VK_ICD_FILENAMES=...").
-RunResult runVkphoton(const std::string& args, const std::string& environment = "") {
-    const std::string command = (environment.empty() ? "" : "env " + environment + " ") + std::string(VKPHOTON_BINARY) +
-                                " " + args + " 2>&1";
-    RunResult result;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return result;
-    char buffer[4096];
-    size_t n;
-    while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
-    const int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
-
-fs::path tempDir(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("vkphoton-cli-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path tempDir(const std::string& name) { return test::freshTempDir("cli", name); }
 
 const std::string kBox = std::string(VKPHOTON_SCENES) + "/cornell-box.gltf";
 

@@ -12,6 +12,7 @@
 #include <unistd.h>
 #include <sys/wait.h>
 
+#include "cli_runner.h"
 #include "image/exr.h"
 #include "image/image.h"
 #include "render/crop_window.h"
@@ -22,30 +23,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct RunResult {
-    int exitCode = -1;
-    std::string output;
-};
+using test::RunResult;
 
-RunResult vkphoton(const std::string& args) {
-    const std::string command = std::string(VKPHOTON_BINARY) + " " + args + " 2>&1";
-    RunResult result;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return result;
-    char buffer[4096];
-    size_t n;
-    while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
-    const int status = pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
-}
+RunResult vkphoton(const std::string& args) { return test::runVkphoton(args); }
 
-fs::path tempDir(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("vkphoton-tiles-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
+fs::path tempDir(const std::string& name) { return test::freshTempDir("tiles", name); }
 
 const std::string kBox = std::string(VKPHOTON_SCENES) + "/cornell-box.gltf";
 const std::string kGlass = std::string(VKPHOTON_SCENES) + "/cornell-glass.gltf";
