@@ -9,27 +9,19 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "gpu_ray_rates.h"
 #include "median.h"
 #include "gpu_scene/scene_buffers.h"
 #include "render/integrators/path_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/errors.h"
-#include "vk/buffer.h"
-#include "shaders/bench_kernels.glsl"
-#include "vk/kernel.h"
 #include "vk/context.h"
 #include "vk/shader_registry.h"
 
 namespace vkp::embedded {
 extern const vk::ShaderEntry* const vkphoton_bench_shaders_table[];
 }
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-}  // namespace
 
 int main(int argc, char** argv) {
     using namespace vkp;
@@ -53,31 +45,9 @@ int main(int argc, char** argv) {
         vk::Context context({false, device});
         const SceneArrays arrays = buildSceneArrays(scene);
         const SceneBuffers buffers(context, arrays);
-        const uint64_t rayPixels = uint64_t(raySize) * raySize;
-        vk::Buffer result(context, "hit counts", rayPixels * sizeof(uint32_t), vk::kStorageUsage);
-        vk::Kernel<gpu::RayBenchKernel> kernel(context);
-        kernel.bind(buffers.bindings());
-        kernel.bind(gpu::kRayBenchResultBinding, result);
-        gpu::RayBenchParams push{makeGpuCamera(chooseCamera(scene, -1), raySize, raySize), raySize, raySize, 0, 0};
-
-        auto timeMode = [&](uint32_t mode) {
-            std::vector<double> times;
-            for (uint32_t r = 0; r < repeat + 1; ++r) {  // the first run warms up (JIT, caches)
-                push.mode = mode;
-                push.seed = r;
-                const auto start = Clock::now();
-                context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, rayPixels, push); });
-                if (r > 0) times.push_back(std::chrono::duration<double>(Clock::now() - start).count());
-            }
-            return bench::median(times);
-        };
-        const double cameraSeconds = timeMode(0);
-        const double bounceSeconds = timeMode(1);
-        const auto hits = result.download<uint32_t>();
-        uint64_t bounceRays = 0;
-        for (uint32_t h : hits) bounceRays += h >= 1;
-        const double cameraMrays = rayPixels / cameraSeconds / 1e6;
-        const double bounceMrays = bounceRays / std::max(bounceSeconds - cameraSeconds, 1e-9) / 1e6;
+        const bench::RayRates rays = bench::measureGpuRayRates(context, scene, buffers, raySize, repeat);
+        const double cameraMrays = rays.cameraMrays;
+        const double bounceMrays = rays.bounceMrays;
 
         const uint64_t pixels = uint64_t(width) * height;
         Renderer renderer(context, scene);
