@@ -211,6 +211,49 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
     return stats;
 }
 
+PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots) {
+    if (m_settings.deposit.mode != gpu::kDepositAll)
+        throw std::logic_error("PhotonMap::buildFromSlots: deposit mode all only");
+    const uint64_t slotCount = uint64_t(m_settings.paths) * m_settings.maxDeposits;
+    if (slots.size() < slotCount * sizeof(gpu::GpuPhoton)) throw std::logic_error("PhotonMap::buildFromSlots: slots too small");
+    if (slotCount > m_capacity)
+        throw InputError(fmt::format("{} photon slots exceed the map's capacity {} (selective update)", slotCount, m_capacity));
+    PhotonMapStats stats;
+    auto start = Clock::now();
+    gpu::PhotonCompactParams params{};
+    params.capacity = m_capacity;
+    params.requiredFlags = m_settings.requiredFlags;
+    params.rejectedFlags = m_settings.rejectedFlags;
+    const PhotonCompaction compaction(m_context, slots, static_cast<uint32_t>(slotCount), m_map, m_state, params);
+    m_context.submitAndWait([&](VkCommandBuffer cmd) {
+        m_map.fillZero(cmd);
+        m_state.fillZero(cmd);
+        vk::transferToComputeBarrier(cmd);
+        vk::computeBarrier(cmd);
+        compaction.record(cmd, static_cast<uint32_t>(slotCount));
+        vk::computeToHostBarrier(cmd);
+    });
+    m_photonPower = static_cast<float>(m_totalPower / m_settings.paths);
+    uint32_t state[gpu::kPhotonMapStateSize];
+    m_state.download(state, sizeof(state));
+    stats.stored = state[gpu::kPhotonMapStateCount];
+    stats.dropped = state[gpu::kPhotonMapStateDropped];
+    stats.candidates = stats.stored + stats.dropped;
+    m_lastStored = stats.stored;
+    stats.chunks = 1;
+    stats.traceSeconds = secondsSince(start);
+    start = Clock::now();
+    if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(stats.stored));
+    stats.cellSize = m_grid->settings().cellSize;
+    m_context.submitAndWait([&](VkCommandBuffer cmd) {
+        vk::computeBarrier(cmd);
+        m_grid->record(cmd);
+        vk::computeToHostBarrier(cmd);
+    });
+    stats.gridSeconds = secondsSince(start);
+    return stats;
+}
+
 uint64_t PhotonMap::bytes() const {
     return m_lastStored * sizeof(gpu::GpuPhoton) + m_grid->cellStart().size();
 }

@@ -79,6 +79,11 @@ public:
     // Traces settings.paths paths with Halton indices firstPath... into a fresh map and builds
     // its grid (progressive passes call it again with fresh index ranges).
     PhotonMapStats build(uint32_t firstPath);
+    // Compacts per-path slots traced elsewhere (settings.paths paths, path i in slots
+    // i * maxDeposits + k: the selective update's persistent slots, render/selective_photon_update.h)
+    // into the map and builds its grid. Deposit mode all only (the importance decision is the
+    // tracing side's). The stats' traced counters stay zero.
+    PhotonMapStats buildFromSlots(const vk::Buffer& slots);
 
     const PhotonGrid& grid() const { return *m_grid; }
     // Watts carried by a photon of relative power 1 (total light power / paths of one build).
