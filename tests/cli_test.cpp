@@ -381,7 +381,7 @@ TEST(Cli, InfoDescribesTheSceneWithoutAVulkanDevice) {
     RunResult r = runVkphoton("info " + kAnnotated, noVulkan);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* expected : {"triangles    2", "materials    2", "glowing coat (emissive)", "1 point, 1 spot, 0 directional",
-                                 "cameras      0", "animations   2 (3 channels): not played", "nodes        4",
+                                 "cameras      0", "animations   2 (3 channels): played by render --frames", "nodes        4",
                                  "KHR_texture_transform", "textures     1, 8 bytes decoded", "EXT_vkphoton_test_unknown"})
         EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
 
