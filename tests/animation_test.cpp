@@ -191,7 +191,7 @@ TEST(AnimationInput, BadAnimationsGiveClearMessages) {
                   .find("CUBICSPLINE needs 6"),
               std::string::npos);
     EXPECT_NE(message(writeAnimated(dir, "interp.gltf", {0, 1}, {0, 0, 0, 1, 1, 1}, kTranslation, "VEC3", "SMOOTH"))
-                  .find("unknown interpolation"),
+                  .find("interpolation"),
               std::string::npos);
     // The message names the file and the element; the CLI exits 2.
     const fs::path bad = writeAnimated(dir, "count2.gltf", {0, 1, 2}, {0, 0, 0, 1, 1, 1}, kTranslation);

@@ -139,6 +139,17 @@ public:
         return base;
     }
 
+    // The default material, made now when a primitive needs it: flatten() starts each walk from
+    // the materials as they are here (loadGltf makes it lazily, at the same index).
+    void prepareDefaultMaterial() {
+        for (const tinygltf::Mesh& mesh : m_model.meshes)
+            for (const tinygltf::Primitive& primitive : mesh.primitives)
+                if (primitive.material < 0) {
+                    m_materials->defaultMaterial();
+                    return;
+                }
+    }
+
     const tinygltf::Model& model() const { return m_model; }
     void warnAbout(const std::string& message) const { warn(message); }
 
@@ -598,6 +609,7 @@ GltfSceneSource::GltfSceneSource(const std::filesystem::path& path, const GltfLi
     withFileName(path, [&] {
         m_state = std::make_unique<State>(path, limits);
         m_state->prepare();
+        m_state->prepareDefaultMaterial();
         m_animation.emplace(m_state->model(), [this](const std::string& message) { m_state->warnAbout(message); });
         return 0;
     });
