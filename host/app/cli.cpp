@@ -189,6 +189,16 @@ int runCommandLine(int argc, const char* const* argv) {
         ->type_name("X0,Y0,X1,Y1")
         ->excludes(tileOption);
     renderCmd->add_flag("--quiet", render.quiet, "No progress output");
+    std::string framesText;  // parsed after CLI11 (render/frame_sequence.h)
+    renderCmd->add_option("--frames", framesText,
+                          "Render the frames FIRST..LAST (inclusive) of the file's glTF animations; -o needs a run of "
+                          "'#' for the frame number (out/frame-####.exr) [default -o: out/SCENE-####.exr]")
+        ->type_name("FIRST:LAST");
+    renderCmd->add_option("--fps", render.fps, "--frames: frames per second (frame f is at f / FPS seconds)")
+        ->capture_default_str();
+    renderCmd->add_option("--animation", render.animation,
+                          "--frames: play only glTF animation N [default: all animations together]")
+        ->check(CLI::NonNegativeNumber);
     const auto views = viewTransformChoices();
     renderCmd->add_option("--tonemap", render.display.view,
                           "The PNG's view transform: agx (Blender 4's AgX), aces-fit (Narkowicz's ACES fit), clamp "
@@ -325,6 +335,9 @@ int runCommandLine(int argc, const char* const* argv) {
             render.display.check();
             render.environment.check();
             if (renderCmd->get_option("--aov")->count() > 0) render.aov = parseAovList(aovList);
+            if (renderCmd->get_option("--frames")->count() > 0) render.frames = parseFrameRange(framesText);
+            else if (renderCmd->get_option("--fps")->count() > 0 || renderCmd->get_option("--animation")->count() > 0)
+                throw InputError("--fps and --animation need --frames");
             const IntegratorConfig& config = *configs.at(integratorName);
             config.check();
             render.lightSamplerAuto = renderCmd->get_option("--light-sampler")->count() == 0;
