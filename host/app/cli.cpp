@@ -199,6 +199,21 @@ int runCommandLine(int argc, const char* const* argv) {
     renderCmd->add_option("--animation", render.animation,
                           "--frames: play only glTF animation N [default: all animations together]")
         ->check(CLI::NonNegativeNumber);
+    std::string photonUpdate = "selective";
+    renderCmd->add_option("--photon-update", photonUpdate,
+                          "--frames: selective retraces only the photon groups the motion changed (Dmitriev et al. "
+                          "2002), full retraces every path each frame")
+        ->check(CLI::IsMember({"selective", "full"}))
+        ->capture_default_str();
+    renderCmd->add_option("--photon-budget", render.photonBudget,
+                          "--frames, selective: photon paths traced per map and frame, pilots included [default: "
+                          "paths / 8 + one pilot per group]")
+        ->check(CLI::PositiveNumber);
+    renderCmd->add_option("--photon-groups", render.photonGroups,
+                          "--frames, selective: photon groups (path i in group i mod N; keep N a product of powers "
+                          "of 2, 3, 5, 7, 11)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     const auto views = viewTransformChoices();
     renderCmd->add_option("--tonemap", render.display.view,
                           "The PNG's view transform: agx (Blender 4's AgX), aces-fit (Narkowicz's ACES fit), clamp "
@@ -336,7 +351,13 @@ int runCommandLine(int argc, const char* const* argv) {
             render.environment.check();
             if (renderCmd->get_option("--aov")->count() > 0) render.aov = parseAovList(aovList);
             if (renderCmd->get_option("--frames")->count() > 0) render.frames = parseFrameRange(framesText);
-            else if (renderCmd->get_option("--fps")->count() > 0 || renderCmd->get_option("--animation")->count() > 0)
+            render.photonUpdateFull = photonUpdate == "full";
+            if (!render.frames && (renderCmd->get_option("--photon-update")->count() > 0 ||
+                                   renderCmd->get_option("--photon-budget")->count() > 0 ||
+                                   renderCmd->get_option("--photon-groups")->count() > 0))
+                throw InputError("--photon-update, --photon-budget and --photon-groups need --frames");
+            if (!render.frames &&
+                (renderCmd->get_option("--fps")->count() > 0 || renderCmd->get_option("--animation")->count() > 0))
                 throw InputError("--fps and --animation need --frames");
             const IntegratorConfig& config = *configs.at(integratorName);
             config.check();

@@ -44,6 +44,9 @@ struct RenderCommandOptions {
     std::optional<FrameRange> frames;   // --frames FIRST:LAST: an animation's frames (app/frames_command.h)
     double fps = 24.0;                  // --fps: frame f is at f / fps seconds
     int animation = -1;                 // --animation N: only that glTF animation; -1: all together
+    bool photonUpdateFull = false;      // --photon-update full: retrace every photon path per frame
+    uint32_t photonBudget = 0;          // --photon-budget: selective paths per map and frame; 0: paths / 8 + pilots
+    uint32_t photonGroups = 2310;       // --photon-groups: selective update's Halton-periodic groups
 };
 
 struct PhotonsCommandOptions {

@@ -11,6 +11,7 @@
 #include "image/png.h"
 #include "render/frame_update.h"
 #include "render/renderer.h"
+#include "render/selective_frame_update.h"
 #include "scene/gltf_loader.h"
 #include "util/errors.h"
 #include "util/printable.h"
@@ -79,7 +80,17 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
             frameSettings.view.fovDegrees = glm::degrees(fixed.yfov);
         }
     }
-    FrameUpdate update;  // full retrace per frame; a selective update subclasses it
+    // --photon-update: full retrace per frame, or the selective update (render/selective_frame_update.h).
+    std::unique_ptr<FrameUpdate> updateOwner;
+    if (options.photonUpdateFull) {
+        updateOwner = std::make_unique<FrameUpdate>();
+    } else {
+        SelectiveUpdateOptions selective;
+        selective.budget = options.photonBudget;
+        selective.groups = options.photonGroups;
+        updateOwner = std::make_unique<SelectiveFrameUpdate>(context, selective);
+    }
+    FrameUpdate& update = *updateOwner;
     nlohmann::json frames = nlohmann::json::array();
     nlohmann::json lastStats;
     uint32_t written = 0;

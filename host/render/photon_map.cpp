@@ -48,7 +48,7 @@ float evenSpreadRadius(uint32_t k, uint64_t photons, double area) {
 
 PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers,
                      const PhotonMapSettings& settings)
-    : m_totalPower(arrays.totalLightPower), m_context(context), m_buffers(buffers), m_settings(settings),
+    : m_totalPower(arrays.totalLightPower), m_context(context), m_scene(scene), m_arrays(arrays), m_buffers(buffers), m_settings(settings),
       m_tracer(context, scene, arrays, buffers) {
     if (settings.paths == 0 || settings.maxDeposits == 0)
         throw InputError("a photon map needs at least one path and one deposit per path");

@@ -86,6 +86,11 @@ public:
     PhotonMapStats buildFromSlots(const vk::Buffer& slots);
 
     const PhotonGrid& grid() const { return *m_grid; }
+    const PhotonMapSettings& settings() const { return m_settings; }
+    // The scene the map traces in (a selective update traces the map's paths itself).
+    const Scene& scene() const { return m_scene; }
+    const SceneArrays& arrays() const { return m_arrays; }
+    const SceneBuffers& buffers() const { return m_buffers; }
     // Watts carried by a photon of relative power 1 (total light power / paths of one build).
     float photonPower() const { return m_photonPower; }
     uint32_t capacity() const { return m_capacity; }
@@ -100,6 +105,8 @@ private:
     gpu::PhotonDepositParams depositParams(uint32_t firstPath, uint32_t paths, uint32_t round) const;
 
     vk::Context& m_context;
+    const Scene& m_scene;
+    const SceneArrays& m_arrays;
     const SceneBuffers& m_buffers;
     PhotonMapSettings m_settings;
     PhotonTracer m_tracer;

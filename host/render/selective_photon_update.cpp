@@ -64,7 +64,7 @@ void SelectivePhotonUpdate::copyPaths(PhotonTracer& tracer, uint32_t firstPath, 
 void SelectivePhotonUpdate::traceGroup(PhotonTracer& tracer, uint32_t group) {
     PhotonSettings s;
     s.paths = pathsInGroup(group);
-    s.firstPath = group;
+    s.firstPath = m_settings.firstPath + group;
     s.pathStride = m_settings.groups;
     s.maxDeposits = m_settings.maxDeposits;
     s.seed = m_settings.seed;
@@ -92,7 +92,7 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
         for (uint32_t done = 0; done < m_settings.paths; done += kFullChunkPaths) {
             PhotonSettings s;
             s.paths = std::min(kFullChunkPaths, m_settings.paths - done);
-            s.firstPath = done;
+            s.firstPath = m_settings.firstPath + done;
             s.maxDeposits = m_settings.maxDeposits;
             s.seed = m_settings.seed;
             tracer.trace(s);
@@ -113,6 +113,7 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
     {
         PhotonSettings s;
         s.paths = m_pilotPaths;
+        s.firstPath = m_settings.firstPath;
         s.maxDeposits = m_settings.maxDeposits;
         s.seed = m_settings.seed;
         tracer.trace(s);
