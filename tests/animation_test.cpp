@@ -228,7 +228,7 @@ TEST(AnimationFrames, RestPoseIsBitIdenticalAndStatsListFrames) {
                                "--gather-rays 0 --quiet --validate";
     auto run = runVkphoton(fmt::format("render {} {} -o {}/still.exr", scene, common, dir.string()));
     ASSERT_EQ(run.exitCode, 0) << run.output;
-    run = runVkphoton(fmt::format("render {} {} --frames 0:1 -o {}/f-###.exr --stats-json {}/s.json", scene, common,
+    run = runVkphoton(fmt::format("render {} {} --frames 0:1 -o {}/f-###.exr --photon-update full --stats-json {}/s.json", scene, common,
                                   dir.string(), dir.string()));
     ASSERT_EQ(run.exitCode, 0) << run.output;
     ASSERT_TRUE(fs::exists(dir / "f-000.png"));
@@ -251,6 +251,39 @@ TEST(AnimationFrames, RestPoseIsBitIdenticalAndStatsListFrames) {
         EXPECT_GT(f["sceneUpdateSeconds"].get<double>(), 0.0);
     }
     EXPECT_DOUBLE_EQ(stats["frames"][1]["time"].get<double>(), 1.0 / 24.0);
+}
+
+// --photon-update selective (the default) against full: frame 0 traces every path either way; later
+// frames trace fewer paths (pilots + retraced groups) and their images agree within noise.
+TEST(AnimationFrames, SelectiveUpdateTracesFewerPathsAndAgreesWithFull) {
+    const fs::path dir = freshTempDir("animation", "selective");
+    const std::string scene = std::string(VKPHOTON_SCENES) + "/cornell-moving.gltf";
+    const std::string common = "--width 24 --height 24 --spp 4 --integrator photon --photons 8000 --caustic-photons 2000 "
+                               "--gather-rays 0 --quiet --validate --frames 0:3";
+    auto run = runVkphoton(fmt::format("render {} {} -o {}/s-#.exr --photon-budget 2000 --stats-json {}/s.json", scene,
+                                       common, dir.string(), dir.string()));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    run = runVkphoton(fmt::format("render {} {} -o {}/f-#.exr --photon-update full --stats-json {}/f.json", scene,
+                                  common, dir.string(), dir.string()));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    std::ifstream sin(dir / "s.json"), fin(dir / "f.json");
+    const json sel = json::parse(sin), full = json::parse(fin);
+    ASSERT_EQ(sel["frames"].size(), 4u);
+    EXPECT_EQ(sel["frames"][0]["photonPathsTraced"].get<uint64_t>(), 10000u);
+    EXPECT_EQ(pixels(dir / "s-0.exr"), pixels(dir / "f-0.exr"));
+    for (int i = 1; i < 4; ++i) {
+        const json& s = sel["frames"][i];
+        EXPECT_EQ(full["frames"][i]["photonPathsTraced"].get<uint64_t>(), 10000u);
+        EXPECT_LE(s["photonPathsTraced"].get<uint64_t>(), 4000u);  // budget 2000 per map, two maps
+        EXPECT_GT(s["photonPathsTraced"].get<uint64_t>(), 0u);
+        const std::vector<float> a = pixels(dir / fmt::format("s-{}.exr", i)), b = pixels(dir / fmt::format("f-{}.exr", i));
+        double sa = 0.0, sb = 0.0;
+        for (size_t k = 0; k < a.size(); ++k) {
+            sa += a[k];
+            sb += b[k];
+        }
+        EXPECT_NEAR(sa / sb, 1.0, 0.05) << "frame " << i;
+    }
 }
 
 }  // namespace

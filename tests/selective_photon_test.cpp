@@ -22,7 +22,7 @@ Scene boxScene(glm::vec3 boxLo) {
     Scene scene = test::shadowTestScene();
     test::addQuad(scene, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2});  // floor, facing up
     test::addQuad(scene, {-2, 3, -2}, {2, 3, -2}, {2, 3, 2}, {-2, 3, 2});  // ceiling, facing down
-    test::addBox(scene, boxLo, boxLo + glm::vec3(0.6f));
+    test::addBox(scene, boxLo, boxLo + glm::vec3(1.0f));
     test::addPointLight(scene, {0.0f, 2.0f, 0.0f}, glm::vec3(10.0f));
     return scene;
 }
@@ -54,8 +54,8 @@ class SelectivePhoton : public test::GpuTest {};
 // After the motion stops and every group has been retraced since, the persistent slots equal a full
 // trace of the final scene bit for bit, and so does the compacted map.
 TEST_F(SelectivePhoton, ConvergesToTheFullRetraceBitIdentically) {
-    GpuSceneData a(boxScene({-1.2f, 0.0f, -0.3f}));
-    GpuSceneData b(boxScene({0.6f, 0.0f, -0.3f}));
+    GpuSceneData a(boxScene({-1.5f, 0.0f, -0.5f}));
+    GpuSceneData b(boxScene({0.5f, 0.0f, -0.5f}));
     SelectivePhotonUpdate selective(test::gpu(), settings(kGroups + 20 * 16));
     selective.update(a.scene, a.arrays, a.buffers, false);
     const uint64_t firstStill = selective.frame() + 1;
@@ -92,7 +92,7 @@ TEST_F(SelectivePhoton, ConvergesToTheFullRetraceBitIdentically) {
     PhotonMap built(test::gpu(), b.scene, b.arrays, b.buffers, ms);
     built.build(0);
     PhotonMap fromSlots(test::gpu(), b.scene, b.arrays, b.buffers, ms);
-    const PhotonMapStats st = fromSlots.buildFromSlots(selective.slots());
+    const PhotonMapStats st = fromSlots.buildFromSlots(selective.slots(), 0);
     EXPECT_GT(st.stored, 0u);
     EXPECT_TRUE(samePhotons(fromSlots.downloadPhotons(), built.downloadPhotons()));
     EXPECT_EQ(fromSlots.photonPower(), built.photonPower());
@@ -101,8 +101,8 @@ TEST_F(SelectivePhoton, ConvergesToTheFullRetraceBitIdentically) {
 // A pilot whose photons change with the move marks its group; a group whose pilot is unchanged is
 // not marked.
 TEST_F(SelectivePhoton, ChangedPilotsMarkTheirGroupsOnly) {
-    GpuSceneData a(boxScene({-1.2f, 0.0f, -0.3f}));
-    GpuSceneData b(boxScene({0.6f, 0.0f, -0.3f}));
+    GpuSceneData a(boxScene({-1.5f, 0.0f, -0.5f}));
+    GpuSceneData b(boxScene({0.5f, 0.0f, -0.5f}));
     SelectivePhotonUpdate fullA(test::gpu(), settings()), fullB(test::gpu(), settings());
     fullA.update(a.scene, a.arrays, a.buffers, true);
     fullB.update(b.scene, b.arrays, b.buffers, true);
@@ -127,8 +127,8 @@ TEST_F(SelectivePhoton, ChangedPilotsMarkTheirGroupsOnly) {
 
 // The per-frame budget holds (pilots included) and the statistics count what was traced.
 TEST_F(SelectivePhoton, BudgetAndStatistics) {
-    GpuSceneData a(boxScene({-1.2f, 0.0f, -0.3f}));
-    GpuSceneData b(boxScene({0.6f, 0.0f, -0.3f}));
+    GpuSceneData a(boxScene({-1.5f, 0.0f, -0.5f}));
+    GpuSceneData b(boxScene({0.5f, 0.0f, -0.5f}));
     const uint32_t groupPaths = kPaths / kGroups;
     const uint32_t budget = kGroups + 5 * groupPaths + groupPaths / 2;
     SelectivePhotonUpdate selective(test::gpu(), settings(budget));

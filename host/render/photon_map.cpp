@@ -211,9 +211,10 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
     return stats;
 }
 
-PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots) {
-    if (m_settings.deposit.mode != gpu::kDepositAll)
-        throw std::logic_error("PhotonMap::buildFromSlots: deposit mode all only");
+PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t firstPath) {
+    const bool deposit = m_settings.deposit.mode != gpu::kDepositAll;
+    if (m_settings.deposit.mode == gpu::kDepositDensity)
+        throw std::logic_error("PhotonMap::buildFromSlots: density control needs rounds of tracing");
     const uint64_t slotCount = uint64_t(m_settings.paths) * m_settings.maxDeposits;
     if (slots.size() < slotCount * sizeof(gpu::GpuPhoton)) throw std::logic_error("PhotonMap::buildFromSlots: slots too small");
     if (slotCount > m_capacity)
@@ -224,26 +225,50 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots) {
     params.capacity = m_capacity;
     params.requiredFlags = m_settings.requiredFlags;
     params.rejectedFlags = m_settings.rejectedFlags;
-    const PhotonCompaction compaction(m_context, slots, static_cast<uint32_t>(slotCount), m_map, m_state, params);
-    m_context.submitAndWait([&](VkCommandBuffer cmd) {
-        m_map.fillZero(cmd);
-        m_state.fillZero(cmd);
-        vk::transferToComputeBarrier(cmd);
-        vk::computeBarrier(cmd);
-        compaction.record(cmd, static_cast<uint32_t>(slotCount));
-        vk::computeToHostBarrier(cmd);
-    });
-    m_photonPower = static_cast<float>(m_totalPower / m_settings.paths);
+    const uint32_t count = static_cast<uint32_t>(slotCount);
     uint32_t state[gpu::kPhotonMapStateSize];
-    m_state.download(state, sizeof(state));
+    auto compact = [&](const vk::Buffer& from, const PhotonDeposit* decide) {
+        const PhotonCompaction compaction(m_context, from, count, m_map, m_state, params);
+        m_context.submitAndWait([&](VkCommandBuffer cmd) {
+            m_map.fillZero(cmd);
+            m_state.fillZero(cmd);
+            if (decide) decide->recordClear(cmd);
+            vk::transferToComputeBarrier(cmd);
+            vk::computeBarrier(cmd);
+            if (decide) {
+                decide->record(cmd, m_settings.deposit.importons->lookupParams(m_settings.requiredFlags, m_settings.rejectedFlags),
+                               depositParams(firstPath, m_settings.paths, 0));
+                vk::computeBarrier(cmd);
+            }
+            compaction.record(cmd, count);
+            vk::computeToHostBarrier(cmd);
+        });
+        m_state.download(state, sizeof(state));
+    };
+    if (!deposit) {
+        compact(slots, nullptr);
+        stats.candidates = state[gpu::kPhotonMapStateCount] + state[gpu::kPhotonMapStateDropped];
+    } else {
+        compact(slots, nullptr);  // the candidates before the decision (they set the cell size)
+        stats.candidates = state[gpu::kPhotonMapStateCount] + state[gpu::kPhotonMapStateDropped];
+        // The decision writes into its slots: a copy keeps the persistent slots undecided.
+        vk::Buffer scratch(m_context, "decided photon slots", slotCount * sizeof(gpu::GpuPhoton), vk::kStorageUsage);
+        m_context.submitAndWait([&](VkCommandBuffer cmd) {
+            const VkBufferCopy region{0, 0, slotCount * sizeof(gpu::GpuPhoton)};
+            vkCmdCopyBuffer(cmd, slots.handle(), scratch.handle(), 1, &region);
+        });
+        const PhotonDeposit decide(m_context, m_buffers, m_settings.deposit.importons->table(), scratch, count, m_map,
+                                   *m_grid);
+        compact(scratch, &decide);
+    }
+    m_photonPower = static_cast<float>(m_totalPower / m_settings.paths);
     stats.stored = state[gpu::kPhotonMapStateCount];
     stats.dropped = state[gpu::kPhotonMapStateDropped];
-    stats.candidates = stats.stored + stats.dropped;
     m_lastStored = stats.stored;
     stats.chunks = 1;
     stats.traceSeconds = secondsSince(start);
     start = Clock::now();
-    if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(stats.stored));
+    if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
     stats.cellSize = m_grid->settings().cellSize;
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
         vk::computeBarrier(cmd);

@@ -79,11 +79,12 @@ public:
     // Traces settings.paths paths with Halton indices firstPath... into a fresh map and builds
     // its grid (progressive passes call it again with fresh index ranges).
     PhotonMapStats build(uint32_t firstPath);
-    // Compacts per-path slots traced elsewhere (settings.paths paths, path i in slots
-    // i * maxDeposits + k: the selective update's persistent slots, render/selective_photon_update.h)
-    // into the map and builds its grid. Deposit mode all only (the importance decision is the
-    // tracing side's). The stats' traced counters stay zero.
-    PhotonMapStats buildFromSlots(const vk::Buffer& slots);
+    // Compacts per-path slots traced elsewhere (settings.paths paths with Halton indices
+    // firstPath..., path i in slots i * maxDeposits + k: the selective update's persistent slots,
+    // render/selective_photon_update.h) into the map and builds its grid. With --deposit
+    // importance the deposit decision runs on a copy of the slots against the current importons
+    // (as build() decides; density control is not supported). The stats' traced counters stay zero.
+    PhotonMapStats buildFromSlots(const vk::Buffer& slots, uint32_t firstPath);
 
     const PhotonGrid& grid() const { return *m_grid; }
     const PhotonMapSettings& settings() const { return m_settings; }

@@ -12,6 +12,20 @@ namespace {
 // map is retraced in full every frame.
 constexpr size_t kMaxPersistentMaps = 8;
 
+// At least this many paths per group: fewer groups for small maps (else every path would be a pilot).
+constexpr uint32_t kMinGroupPaths = 16;
+
+// `groups`, divided by its smallest prime factors until every group holds kMinGroupPaths paths
+// (2310 -> 1155 -> 385 -> 77 -> 11 -> 1): it stays a product of the Halton bases (Eq. 5).
+uint32_t groupsFor(uint32_t groups, uint32_t paths) {
+    while (groups > 1 && uint64_t(groups) * kMinGroupPaths > paths) {
+        uint32_t factor = 2;
+        while (groups % factor != 0) ++factor;
+        groups /= factor;
+    }
+    return std::max(groups, 1u);
+}
+
 }  // namespace
 
 SelectiveFrameUpdate::SelectiveFrameUpdate(vk::Context& context, const SelectiveUpdateOptions& options)
@@ -23,7 +37,7 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
     const PhotonMapSettings& ms = map.settings();
     const auto key = std::make_tuple(firstPath, ms.paths, ms.maxDeposits, ms.seed);
     auto it = m_maps.find(key);
-    if (ms.deposit.mode != gpu::kDepositAll || (it == m_maps.end() && m_maps.size() >= kMaxPersistentMaps))
+    if (ms.deposit.mode == gpu::kDepositDensity || (it == m_maps.end() && m_maps.size() >= kMaxPersistentMaps))
         return FrameUpdate::buildPhotonMap(map, firstPath, info);
     if (it == m_maps.end()) {
         SelectiveSettings s;
@@ -31,7 +45,7 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
         s.maxDeposits = ms.maxDeposits;
         s.seed = ms.seed;
         s.firstPath = firstPath;
-        s.groups = std::min(m_options.groups, ms.paths);
+        s.groups = groupsFor(m_options.groups, ms.paths);
         s.pilotsPerGroup = m_options.pilotsPerGroup;
         s.budget = m_options.budget;
         it = m_maps.emplace(key, std::make_unique<SelectivePhotonUpdate>(m_context, s)).first;
@@ -39,7 +53,7 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
     const auto start = Clock::now();
     const SelectiveFrameStats frame = it->second->update(map.scene(), map.arrays(), map.buffers(), info.firstFrame);
     const double traceSeconds = secondsSince(start);
-    PhotonMapStats stats = map.buildFromSlots(it->second->slots());
+    PhotonMapStats stats = map.buildFromSlots(it->second->slots(), firstPath);
     stats.traced.emitted = frame.photonPathsTraced;
     stats.traceSeconds += traceSeconds;
     m_counts.photonPathsTraced += frame.photonPathsTraced;

@@ -1,8 +1,8 @@
 // --photon-update selective: the frames loop's FrameUpdate (render/frame_update.h) that keeps one
 // SelectivePhotonUpdate per photon map of the integrator (told apart by their paths, deposits,
 // seed and first Halton index) across the frames, and fills each frame's PhotonMap from its
-// persistent slots (PhotonMap::buildFromSlots). Maps with importance-driven deposition are
-// retraced in full (their deposit decision reads the frame's importons; docs/photon-mapping.md).
+// persistent slots (PhotonMap::buildFromSlots, which redoes an importance deposit decision
+// against the frame's importons). Density-controlled maps are retraced in full every frame.
 #pragma once
 
 #include <map>
@@ -12,9 +12,8 @@
 #include "render/frame_update.h"
 #include "render/selective_photon_update.h"
 
-namespace vk { class Context; }
-
 namespace vkp {
+namespace vk { class Context; }
 
 struct SelectiveUpdateOptions {
     uint32_t budget = 0;          // --photon-budget: paths per map and frame, pilots included; 0: paths / 8 + pilots
