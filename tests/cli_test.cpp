@@ -430,7 +430,7 @@ const std::map<std::string, std::vector<std::string>> kNumericFlags = {
                                     "--radius", "--alpha", "--q", "--importons", "--deposit-epsilon", "--density-accuracy",
                                     "--density-rounds"}},
     {"render --integrator guided", {"--guide-photons", "--guide-k", "--guide-adapt", "--guide-mix"}},
-    {"render --frames 0:0", {"--fps", "--animation"}},
+    {"render --frames 0:0", {"--fps", "--animation", "--photon-budget", "--photon-groups"}},
     {"photons", {"--photons", "--max-deposits", "--seed", "--importons", "--deposit-epsilon", "--density-accuracy",
                  "--density-rounds", "--width", "--height", "--camera", "--max-memory", "--fov", "--env-strength",
                  "--env-rotation", "--scene"}},
