@@ -33,13 +33,22 @@ class GltfBuilder:
             self.data.append(0)
         offset = len(self.data)
         self.data.extend(payload)
-        self.doc["bufferViews"].append({"buffer": 0, "byteOffset": offset, "byteLength": len(payload), "target": target})
+        view = {"buffer": 0, "byteOffset": offset, "byteLength": len(payload)}
+        if target is not None:
+            view["target"] = target
+        self.doc["bufferViews"].append(view)
         return len(self.doc["bufferViews"]) - 1
 
-    def _accessor(self, values, kind):
+    def _accessor(self, values, kind, target=34962):
+        if kind == "TIME":  # animation key times: float SCALAR with min and max (glTF requires them)
+            payload = b"".join(struct.pack("<f", v) for v in values)
+            acc = {"bufferView": self._view(payload, None), "componentType": 5126, "count": len(values),
+                   "type": "SCALAR", "min": [min(values)], "max": [max(values)]}
+            self.doc["accessors"].append(acc)
+            return len(self.doc["accessors"]) - 1
         if kind == "VEC3":
             payload = b"".join(struct.pack("<3f", *v) for v in values)
-            view = self._view(payload, 34962)
+            view = self._view(payload, target)
             acc = {"bufferView": view, "componentType": 5126, "count": len(values), "type": "VEC3"}
             acc["min"] = [min(v[i] for v in values) for i in range(3)]
             acc["max"] = [max(v[i] for v in values) for i in range(3)]
@@ -71,11 +80,19 @@ class GltfBuilder:
                                "NORMAL": self._accessor(normals, "VEC3")},
                 "indices": self._accessor(indices, "SCALAR"), "material": material}
         self.doc["meshes"].append({"name": name, "primitives": [prim]})
-        self.node({"name": name, "mesh": len(self.doc["meshes"]) - 1})
+        return self.node({"name": name, "mesh": len(self.doc["meshes"]) - 1})
 
     def node(self, node):
         self.doc["nodes"].append(node)
         self.doc["scenes"][0]["nodes"].append(len(self.doc["nodes"]) - 1)
+        return len(self.doc["nodes"]) - 1
+
+    def animate_translation(self, name, node, times, translations, interpolation="LINEAR"):
+        """A glTF animation moving `node` through `translations` (VEC3) at `times` (seconds)."""
+        sampler = {"input": self._accessor(times, "TIME"), "output": self._accessor(translations, "VEC3", None),
+                   "interpolation": interpolation}
+        self.doc.setdefault("animations", []).append(
+            {"name": name, "samplers": [sampler], "channels": [{"sampler": 0, "target": {"node": node, "path": "translation"}}]})
 
     def camera(self, position, yfov=0.6911, aspect=1.0, rotation=None):
         self.doc["cameras"] = [{"type": "perspective", "perspective": {"yfov": yfov, "aspectRatio": aspect, "znear": 0.01}}]
@@ -179,7 +196,7 @@ def sphere_mesh(b, name, center, radius, material, segments=48, rings=24):
                 indices += [a, c, a + 1]
             if r != rings - 1:
                 indices += [a + 1, c, c + 1]
-    b.mesh(name, positions, normals, indices, material)
+    return b.mesh(name, positions, normals, indices, material)
 
 
 def cornell_room(b, light_faces_up=False):
@@ -234,6 +251,27 @@ def cornell_glass(path):
     sphere_mesh(b, "glass-sphere", (0.35, radius, 0.25), radius, glass)
     mirror = b.material("chrome", (0.95, 0.95, 0.95), metallic=1.0, roughness=0.05)
     sphere_mesh(b, "metal-sphere", (-0.45, 0.3, -0.4), 0.3, mirror)
+    b.write(path)
+
+
+def cornell_moving(path):
+    """The glass sphere of cornell-glass.gltf moving left to right under the light and back (2 s, LINEAR
+    translation keys at 0, 1 and 2 s), so its caustic sweeps across the floor; the tall box stays."""
+    b = GltfBuilder()
+    white = cornell_room(b)
+    box_mesh(b, "tall-box", (-0.5, 0, -0.55), (0.5, 1.0, 0.4), 0.29, white)
+    radius = 0.25
+    glass = b.material("glass", (1.0, 1.0, 1.0), metallic=0.0, roughness=0.0, extensions={
+        "KHR_materials_transmission": {"transmissionFactor": 1.0},
+        "KHR_materials_ior": {"ior": 1.5},
+        "KHR_materials_volume": {"thicknessFactor": 2 * radius},
+    })
+    sphere = sphere_mesh(b, "glass-sphere", (0.0, 0.0, 0.0), radius, glass)
+    # Keys exact in float, so frame 0 (and 48 at 24 fps) equal the still pose bit for bit.
+    y, z = 0.5, 0.25
+    start, middle = (-0.625, y, z), (0.625, y, z)
+    b.doc["nodes"][sphere]["translation"] = list(start)  # the still render's pose: frame 0's
+    b.animate_translation("sphere-moves", sphere, [0.0, 1.0, 2.0], [start, middle, start])
     b.write(path)
 
 
@@ -395,6 +433,7 @@ def main():
     cornell_box(os.path.join(args.out, "cornell-box.gltf"))
     cornell_ceiling(os.path.join(args.out, "cornell-ceiling.gltf"))
     cornell_glass(os.path.join(args.out, "cornell-glass.gltf"))
+    cornell_moving(os.path.join(args.out, "cornell-moving.gltf"))
     rooms_10x10(os.path.join(args.out, "rooms-10x10.gltf"))
     door_slit(os.path.join(args.out, "door-slit.gltf"))
     spheres_outdoor(os.path.join(args.out, "spheres-outdoor.gltf"))

@@ -117,7 +117,7 @@ EmittedPhoton emitPhoton(uint index, vec2 uPosition, vec2 uDirection, float uSid
 void main() {
     uint local = gl_GlobalInvocationID.x;
     if (local >= params.pathCount || params.lightCount == 0u) return;
-    Sampler rng = makeSampler(params.firstPath + local, hashCombine(params.seed, kPhotonStream));
+    Sampler rng = makeSampler(params.firstPath + local * max(params.pathStride, 1u), hashCombine(params.seed, kPhotonStream));
     float uLight = nextSample(rng);
     vec2 uPosition = nextSample2(rng);
     vec2 uDirection = nextSample2(rng);

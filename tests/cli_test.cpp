@@ -381,7 +381,7 @@ TEST(Cli, InfoDescribesTheSceneWithoutAVulkanDevice) {
     RunResult r = runVkphoton("info " + kAnnotated, noVulkan);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* expected : {"triangles    2", "materials    2", "glowing coat (emissive)", "1 point, 1 spot, 0 directional",
-                                 "cameras      0", "animations   2 (3 channels): not played", "nodes        4",
+                                 "cameras      0", "animations   2 (3 channels): played by render --frames", "nodes        4",
                                  "KHR_texture_transform", "textures     1, 8 bytes decoded", "EXT_vkphoton_test_unknown"})
         EXPECT_NE(r.output.find(expected), std::string::npos) << expected << "\n" << r.output;
 
@@ -430,6 +430,7 @@ const std::map<std::string, std::vector<std::string>> kNumericFlags = {
                                     "--radius", "--alpha", "--q", "--importons", "--deposit-epsilon", "--density-accuracy",
                                     "--density-rounds"}},
     {"render --integrator guided", {"--guide-photons", "--guide-k", "--guide-adapt", "--guide-mix"}},
+    {"render --frames 0:0", {"--fps", "--animation", "--photon-budget", "--photon-groups"}},
     {"photons", {"--photons", "--max-deposits", "--seed", "--importons", "--deposit-epsilon", "--density-accuracy",
                  "--density-rounds", "--width", "--height", "--camera", "--max-memory", "--fov", "--env-strength",
                  "--env-rotation", "--scene"}},

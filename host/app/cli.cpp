@@ -189,6 +189,31 @@ int runCommandLine(int argc, const char* const* argv) {
         ->type_name("X0,Y0,X1,Y1")
         ->excludes(tileOption);
     renderCmd->add_flag("--quiet", render.quiet, "No progress output");
+    std::string framesText;  // parsed after CLI11 (render/frame_sequence.h)
+    renderCmd->add_option("--frames", framesText,
+                          "Render the frames FIRST..LAST (inclusive) of the file's glTF animations; -o needs a run of "
+                          "'#' for the frame number (out/frame-####.exr) [default -o: out/SCENE-####.exr]")
+        ->type_name("FIRST:LAST");
+    renderCmd->add_option("--fps", render.fps, "--frames: frames per second (frame f is at f / FPS seconds)")
+        ->capture_default_str();
+    renderCmd->add_option("--animation", render.animation,
+                          "--frames: play only glTF animation N [default: all animations together]")
+        ->check(CLI::NonNegativeNumber);
+    std::string photonUpdate = "selective";
+    renderCmd->add_option("--photon-update", photonUpdate,
+                          "--frames: selective retraces only the photon groups the motion changed (Dmitriev et al. "
+                          "2002), full retraces every path each frame")
+        ->check(CLI::IsMember({"selective", "full"}))
+        ->capture_default_str();
+    renderCmd->add_option("--photon-budget", render.photonBudget,
+                          "--frames, selective: photon paths traced per map and frame, pilots included [default: "
+                          "paths / 8 + one pilot per group]")
+        ->check(CLI::PositiveNumber);
+    renderCmd->add_option("--photon-groups", render.photonGroups,
+                          "--frames, selective: photon groups (path i in group i mod N; keep N a product of powers "
+                          "of 2, 3, 5, 7, 11)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     const auto views = viewTransformChoices();
     renderCmd->add_option("--tonemap", render.display.view,
                           "The PNG's view transform: agx (Blender 4's AgX), aces-fit (Narkowicz's ACES fit), clamp "
@@ -325,6 +350,15 @@ int runCommandLine(int argc, const char* const* argv) {
             render.display.check();
             render.environment.check();
             if (renderCmd->get_option("--aov")->count() > 0) render.aov = parseAovList(aovList);
+            if (renderCmd->get_option("--frames")->count() > 0) render.frames = parseFrameRange(framesText);
+            render.photonUpdateFull = photonUpdate == "full";
+            if (!render.frames && (renderCmd->get_option("--photon-update")->count() > 0 ||
+                                   renderCmd->get_option("--photon-budget")->count() > 0 ||
+                                   renderCmd->get_option("--photon-groups")->count() > 0))
+                throw InputError("--photon-update, --photon-budget and --photon-groups need --frames");
+            if (!render.frames &&
+                (renderCmd->get_option("--fps")->count() > 0 || renderCmd->get_option("--animation")->count() > 0))
+                throw InputError("--fps and --animation need --frames");
             const IntegratorConfig& config = *configs.at(integratorName);
             config.check();
             render.lightSamplerAuto = renderCmd->get_option("--light-sampler")->count() == 0;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/frames_command.h"
 #include "app/interrupt.h"
 #include "app/progress.h"
 #include "image/atomic_file.h"
@@ -111,6 +112,7 @@ LightSampler autoLightSampler(const Scene& scene) {
 }
 
 int runRender(const RenderCommandOptions& options, const IntegratorConfig& config) {
+    if (options.frames) return runRenderFrames(options, config);
     const auto start = Clock::now();
     const std::filesystem::path exrPath = options.output.empty() ? defaultOutput(options.scene) : options.output;
     if (exrPath.extension() != ".exr")

@@ -8,6 +8,7 @@
 #include "image/view_transform.h"
 #include "render/deposit_options.h"
 #include "render/frame.h"
+#include "render/frame_sequence.h"
 #include "render/integrator_registry.h"
 #include "render/aov.h"
 #include "render/path_guide.h"
@@ -40,6 +41,12 @@ struct RenderCommandOptions {
     bool validate = false;
     bool quiet = false;
     bool noEnergyCompensation = false;  // the glTF spec's plain single-scattering GGX
+    std::optional<FrameRange> frames;   // --frames FIRST:LAST: an animation's frames (app/frames_command.h)
+    double fps = 24.0;                  // --fps: frame f is at f / fps seconds
+    int animation = -1;                 // --animation N: only that glTF animation; -1: all together
+    bool photonUpdateFull = false;      // --photon-update full: retrace every photon path per frame
+    uint32_t photonBudget = 0;          // --photon-budget: selective paths per map and frame; 0: paths / 8 + pilots
+    uint32_t photonGroups = 2310;       // --photon-groups: selective update's Halton-periodic groups
 };
 
 struct PhotonsCommandOptions {

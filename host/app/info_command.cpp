@@ -77,7 +77,7 @@ void printText(const json& r) {
                        cameras[i]["yfovDegrees"].get<double>());
     const json& a = r["animations"];
     fmt::print("animations   {} ({} channels){}\n", a["count"].get<uint64_t>(), a["channels"].get<uint64_t>(),
-               a["count"].get<uint64_t>() ? ": not played, the scene renders in its rest pose" : "");
+               a["count"].get<uint64_t>() ? ": played by render --frames; a still render shows the static node poses" : "");
     fmt::print("nodes        {} ({} skins)\n", r["nodes"].get<uint64_t>(), r["skins"].get<uint64_t>());
     const json& extensions = r["extensions"];
     fmt::print("extensions   {}\n", extensions.size());

@@ -119,6 +119,8 @@ Frame makeFrame(const Scene& scene, const FrameSettings& settings) {
     frame.nextEventEstimation = settings.nextEventEstimation;
     frame.pixelCentres = settings.pixelCentres;
     frame.crop = settings.crop;
+    frame.photonUpdate = settings.photonUpdate;
+    frame.update = settings.update;
     frame.camera = chooseCamera(scene, settings.cameraIndex, float(settings.width) / float(settings.height), settings.view);
     frame.gpuCamera = makeGpuCamera(frame.camera, settings.width, settings.height);
     return frame;

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "render/crop_window.h"
+#include "render/frame_update.h"
 #include "render/render_control.h"
 #include "scene/scene.h"
 #include "shared/gpu_types.glsl"
@@ -53,6 +54,10 @@ struct FrameSettings {
     std::optional<Clock::time_point> timeLimitFrom;
     // --crop / --tile: render only this window of the width x height frame (render/crop_window.h).
     std::optional<CropWindow> crop;
+    // --frames: the sequence's photon-map update (render/frame_update.h) and which frame this is;
+    // null: a still render (the maps are built by PhotonMap::build).
+    FrameUpdate* photonUpdate = nullptr;
+    FrameUpdateInfo update;
 
     // Throws InputError naming the flag of a value out of range.
     void check() const;
@@ -90,6 +95,8 @@ struct Frame {
     bool pixelCentres = false;
     RenderControl control;  // the stop flag and the deadline: long phases check it between chunks
     std::optional<CropWindow> crop;  // --crop / --tile: the window the camera passes compute
+    FrameUpdate* photonUpdate = nullptr;  // --frames: how photon maps are (re)built (render/frame_update.h)
+    FrameUpdateInfo update;               // which frame of the sequence
 
     uint64_t pixels() const { return uint64_t(width) * height; }
     // The pixel indices the camera passes compute: the crop window's rows, else every pixel.

@@ -48,7 +48,7 @@ float evenSpreadRadius(uint32_t k, uint64_t photons, double area) {
 
 PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers,
                      const PhotonMapSettings& settings)
-    : m_totalPower(arrays.totalLightPower), m_context(context), m_buffers(buffers), m_settings(settings),
+    : m_totalPower(arrays.totalLightPower), m_context(context), m_scene(scene), m_arrays(arrays), m_buffers(buffers), m_settings(settings),
       m_tracer(context, scene, arrays, buffers) {
     if (settings.paths == 0 || settings.maxDeposits == 0)
         throw InputError("a photon map needs at least one path and one deposit per path");
@@ -199,6 +199,74 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
     m_lastStored = stats.stored;
     stats.traceSeconds = secondsSince(start);
 
+    start = Clock::now();
+    if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
+    stats.cellSize = m_grid->settings().cellSize;
+    m_context.submitAndWait([&](VkCommandBuffer cmd) {
+        vk::computeBarrier(cmd);
+        m_grid->record(cmd);
+        vk::computeToHostBarrier(cmd);
+    });
+    stats.gridSeconds = secondsSince(start);
+    return stats;
+}
+
+PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t firstPath) {
+    const bool deposit = m_settings.deposit.mode != gpu::kDepositAll;
+    if (m_settings.deposit.mode == gpu::kDepositDensity)
+        throw std::logic_error("PhotonMap::buildFromSlots: density control needs rounds of tracing");
+    const uint64_t slotCount = uint64_t(m_settings.paths) * m_settings.maxDeposits;
+    if (slots.size() < slotCount * sizeof(gpu::GpuPhoton)) throw std::logic_error("PhotonMap::buildFromSlots: slots too small");
+    if (slotCount > m_capacity)
+        throw InputError(fmt::format("{} photon slots exceed the map's capacity {} (selective update)", slotCount, m_capacity));
+    PhotonMapStats stats;
+    auto start = Clock::now();
+    gpu::PhotonCompactParams params{};
+    params.capacity = m_capacity;
+    params.requiredFlags = m_settings.requiredFlags;
+    params.rejectedFlags = m_settings.rejectedFlags;
+    const uint32_t count = static_cast<uint32_t>(slotCount);
+    uint32_t state[gpu::kPhotonMapStateSize];
+    auto compact = [&](const vk::Buffer& from, const PhotonDeposit* decide) {
+        const PhotonCompaction compaction(m_context, from, count, m_map, m_state, params);
+        m_context.submitAndWait([&](VkCommandBuffer cmd) {
+            m_map.fillZero(cmd);
+            m_state.fillZero(cmd);
+            if (decide) decide->recordClear(cmd);
+            vk::transferToComputeBarrier(cmd);
+            vk::computeBarrier(cmd);
+            if (decide) {
+                decide->record(cmd, m_settings.deposit.importons->lookupParams(m_settings.requiredFlags, m_settings.rejectedFlags),
+                               depositParams(firstPath, m_settings.paths, 0));
+                vk::computeBarrier(cmd);
+            }
+            compaction.record(cmd, count);
+            vk::computeToHostBarrier(cmd);
+        });
+        m_state.download(state, sizeof(state));
+    };
+    if (!deposit) {
+        compact(slots, nullptr);
+        stats.candidates = state[gpu::kPhotonMapStateCount] + state[gpu::kPhotonMapStateDropped];
+    } else {
+        compact(slots, nullptr);  // the candidates before the decision (they set the cell size)
+        stats.candidates = state[gpu::kPhotonMapStateCount] + state[gpu::kPhotonMapStateDropped];
+        // The decision writes into its slots: a copy keeps the persistent slots undecided.
+        vk::Buffer scratch(m_context, "decided photon slots", slotCount * sizeof(gpu::GpuPhoton), vk::kStorageUsage);
+        m_context.submitAndWait([&](VkCommandBuffer cmd) {
+            const VkBufferCopy region{0, 0, slotCount * sizeof(gpu::GpuPhoton)};
+            vkCmdCopyBuffer(cmd, slots.handle(), scratch.handle(), 1, &region);
+        });
+        const PhotonDeposit decide(m_context, m_buffers, m_settings.deposit.importons->table(), scratch, count, m_map,
+                                   *m_grid);
+        compact(scratch, &decide);
+    }
+    m_photonPower = static_cast<float>(m_totalPower / m_settings.paths);
+    stats.stored = state[gpu::kPhotonMapStateCount];
+    stats.dropped = state[gpu::kPhotonMapStateDropped];
+    m_lastStored = stats.stored;
+    stats.chunks = 1;
+    stats.traceSeconds = secondsSince(start);
     start = Clock::now();
     if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
     stats.cellSize = m_grid->settings().cellSize;

@@ -79,8 +79,19 @@ public:
     // Traces settings.paths paths with Halton indices firstPath... into a fresh map and builds
     // its grid (progressive passes call it again with fresh index ranges).
     PhotonMapStats build(uint32_t firstPath);
+    // Compacts per-path slots traced elsewhere (settings.paths paths with Halton indices
+    // firstPath..., path i in slots i * maxDeposits + k: the selective update's persistent slots,
+    // render/selective_photon_update.h) into the map and builds its grid. With --deposit
+    // importance the deposit decision runs on a copy of the slots against the current importons
+    // (as build() decides; density control is not supported). The stats' traced counters stay zero.
+    PhotonMapStats buildFromSlots(const vk::Buffer& slots, uint32_t firstPath);
 
     const PhotonGrid& grid() const { return *m_grid; }
+    const PhotonMapSettings& settings() const { return m_settings; }
+    // The scene the map traces in (a selective update traces the map's paths itself).
+    const Scene& scene() const { return m_scene; }
+    const SceneArrays& arrays() const { return m_arrays; }
+    const SceneBuffers& buffers() const { return m_buffers; }
     // Watts carried by a photon of relative power 1 (total light power / paths of one build).
     float photonPower() const { return m_photonPower; }
     uint32_t capacity() const { return m_capacity; }
@@ -95,6 +106,8 @@ private:
     gpu::PhotonDepositParams depositParams(uint32_t firstPath, uint32_t paths, uint32_t round) const;
 
     vk::Context& m_context;
+    const Scene& m_scene;
+    const SceneArrays& m_arrays;
     const SceneBuffers& m_buffers;
     PhotonMapSettings m_settings;
     PhotonTracer m_tracer;

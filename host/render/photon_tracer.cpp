@@ -42,6 +42,7 @@ PhotonCounters PhotonTracer::trace(const PhotonSettings& settings) {
     params.pathCount = settings.paths;
     params.maxDeposits = settings.maxDeposits;
     params.seed = settings.seed;
+    params.pathStride = std::max(settings.pathStride, 1u);
     params.lightCount = m_buffers.lightCount();
     params.totalPower = static_cast<float>(m_totalPower);
     m_context.submitAndWait([&](VkCommandBuffer cmd) {

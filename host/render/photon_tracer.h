@@ -18,6 +18,7 @@ struct PhotonSettings {
     uint32_t firstPath = 0;       // progressive passes use fresh Halton ranges
     uint32_t maxDeposits = 8;     // stored photons per path at most
     uint32_t seed = 0;
+    uint32_t pathStride = 1;      // Halton indices firstPath + j * pathStride (a selective-update group)
 };
 
 struct PhotonCounters {

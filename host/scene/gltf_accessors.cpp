@@ -164,6 +164,13 @@ std::vector<glm::vec2> readVec2Accessor(const tinygltf::Model& model, int access
 
 std::vector<glm::vec4> readVec4Accessor(const tinygltf::Model& model, int accessor) { return readFloats<4>(model, accessor); }
 
+std::vector<float> readScalarAccessor(const tinygltf::Model& model, int accessor) {
+    std::vector<float> out;
+    decode(model, accessor, 1, [&](size_t count) { out.resize(count); },
+           [&](size_t i, int, double v) { out[i] = static_cast<float>(v); });
+    return out;
+}
+
 std::vector<glm::vec4> readColorAccessor(const tinygltf::Model& model, int accessor) {
     const std::string name = fmt::format("accessors[{}]", accessor);
     if (accessor < 0 || static_cast<size_t>(accessor) >= model.accessors.size())

@@ -98,27 +98,60 @@ public:
           m_folder(path.has_parent_path() ? path.parent_path() : fs::path(".")), m_files(m_folder, limits) {}
 
     Scene load() {
+        prepare();
+        return flatten(nullptr, false);
+    }
+
+    // Parsing, materials and textures: everything but the node walk (done once per file).
+    void prepare() {
         parse();
         m_scene.source = m_path;
         m_materials.emplace(m_model, m_scene, [this](const std::string& message) { warn(message); });
         m_materials->convertAll();
         describeFile();
-        const int sceneIndex = m_limits.sceneIndex >= 0 ? m_limits.sceneIndex
-                               : m_model.defaultScene >= 0 ? m_model.defaultScene
-                                                           : 0;
-        const std::string sceneName = fmt::format("scenes[{}]", sceneIndex);
+        m_sceneIndex = m_limits.sceneIndex >= 0 ? m_limits.sceneIndex
+                       : m_model.defaultScene >= 0 ? m_model.defaultScene
+                                                   : 0;
+        const std::string sceneName = fmt::format("scenes[{}]", m_sceneIndex);
         if (m_model.scenes.empty()) fail("scenes", "the file has no scene, so no triangle geometry to render");
-        if (static_cast<size_t>(sceneIndex) >= m_model.scenes.size())
-            fail(m_limits.sceneIndex >= 0 ? fmt::format("--scene {}", sceneIndex) : sceneName,
+        if (static_cast<size_t>(m_sceneIndex) >= m_model.scenes.size())
+            fail(m_limits.sceneIndex >= 0 ? fmt::format("--scene {}", m_sceneIndex) : sceneName,
                  fmt::format("does not exist (the file has {} scene(s))", m_model.scenes.size()));
-        checkSize(m_model.scenes[sceneIndex].nodes, sceneName);
-        walk(m_model.scenes[sceneIndex].nodes);
+        checkSize(m_model.scenes[m_sceneIndex].nodes, sceneName);
+    }
+
+    // The scene's triangles, lights and cameras in world space, with the local transforms of
+    // `overrides` (indexed by node; nullopt or absent: the node's own) in place of the file's.
+    // keepBase false: the last flatten of this loader (no copy of the textures).
+    Scene flatten(const std::vector<std::optional<glm::dmat4>>* overrides, bool keepBase = true) {
+        const std::string sceneName = fmt::format("scenes[{}]", m_sceneIndex);
+        Scene base = keepBase ? m_scene : Scene{};  // materials, textures and file facts; no geometry yet
+        m_overrides = overrides;
+        m_skippedPrimitives = 0;
+        m_triangleKeys.clear();
+        walk(m_model.scenes[m_sceneIndex].nodes);
+        m_overrides = nullptr;
         if (m_scene.triangles.empty())
             fail(sceneName, m_skippedPrimitives ? "no triangle geometry to render (primitives of other modes are skipped)"
                                                 : "no triangle geometry to render");
         checkScale(sceneName);
-        return std::move(m_scene);
+        std::swap(base, m_scene);
+        return base;
     }
+
+    // The default material, made now when a primitive needs it: flatten() starts each walk from
+    // the materials as they are here (loadGltf makes it lazily, at the same index).
+    void prepareDefaultMaterial() {
+        for (const tinygltf::Mesh& mesh : m_model.meshes)
+            for (const tinygltf::Primitive& primitive : mesh.primitives)
+                if (primitive.material < 0) {
+                    m_materials->defaultMaterial();
+                    return;
+                }
+    }
+
+    const tinygltf::Model& model() const { return m_model; }
+    void warnAbout(const std::string& message) const { warn(message); }
 
 private:
     // Triangles the scene will have, from the accessors' counts alone (every node that references
@@ -260,7 +293,10 @@ private:
             if (seen[pending.node]) fail(element, "is reached twice from the scene (a node has one parent; no cycles)");
             seen[pending.node] = true;
             const tinygltf::Node& node = m_model.nodes[pending.node];
-            const glm::dmat4 world = pending.parent * localTransform(node, element);
+            const bool overridden = m_overrides && size_t(pending.node) < m_overrides->size() &&
+                                    (*m_overrides)[pending.node].has_value();
+            const glm::dmat4 world =
+                pending.parent * (overridden ? *(*m_overrides)[pending.node] : localTransform(node, element));
             if (!isFinite(world)) fail(element, "the world transform is not finite");
             visit(node, world, element);
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world});
@@ -543,9 +579,54 @@ private:
     size_t m_skippedPrimitives = 0;
     std::unordered_set<std::string> m_triangleKeys;
     std::string m_nodeElement, m_primitiveElement;  // what emitTriangles names
+    int m_sceneIndex = 0;
+    const std::vector<std::optional<glm::dmat4>>* m_overrides = nullptr;  // flatten()'s animated local transforms
 };
 
+// Loader errors start with the file; the parts above name only the element.
+template <typename F> auto withFileName(const std::filesystem::path& path, F&& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const InputError& e) {
+        throw InputError(fmt::format("{}: {}", path.string(), e.what()));
+    } catch (const RuntimeError& e) {
+        throw RuntimeError(fmt::format("{}: {}", path.string(), e.what()));
+    } catch (const std::bad_alloc&) {
+        throw InputError(fmt::format("{}: out of memory while loading (is the file hostile?)", path.string()));
+    } catch (const std::exception& e) {
+        throw InputError(fmt::format("{}: unreadable glTF: {}", path.string(), e.what()));
+    }
+}
+
 }  // namespace
+
+class GltfSceneSource::State : public Loader {
+public:
+    using Loader::Loader;
+};
+
+GltfSceneSource::GltfSceneSource(const std::filesystem::path& path, const GltfLimits& limits) : m_path(path) {
+    withFileName(path, [&] {
+        m_state = std::make_unique<State>(path, limits);
+        m_state->prepare();
+        m_state->prepareDefaultMaterial();
+        m_animation.emplace(m_state->model(), [this](const std::string& message) { m_state->warnAbout(message); });
+        return 0;
+    });
+}
+
+GltfSceneSource::~GltfSceneSource() = default;
+
+Scene GltfSceneSource::sceneAt(double seconds) {
+    return withFileName(m_path, [&] {
+        const std::vector<std::optional<glm::dmat4>> local = m_animation->localTransforms(seconds);
+        return m_state->flatten(&local);
+    });
+}
+
+Scene GltfSceneSource::stillScene() {
+    return withFileName(m_path, [&] { return m_state->flatten(nullptr); });
+}
 
 Scene loadGltf(const std::filesystem::path& path, const GltfLimits& limits) {
     // Every message starts with the file; the parts below name only the element.

@@ -3,7 +3,10 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
+#include <optional>
 
+#include "scene/animation.h"
 #include "scene/scene.h"
 
 namespace vkp {
@@ -44,5 +47,28 @@ constexpr double kMaxTotalPower = 1.0e30;
 // any bad input; never crashes on malformed files. Buffer and image URIs that are absolute, leave
 // the file's folder (".."), or contain shell expansion characters are refused.
 Scene loadGltf(const std::filesystem::path& path, const GltfLimits& limits = {});
+
+// A glTF file parsed once and kept (materials and textures converted), whose scene is flattened
+// again for each moment of its animations (docs/animation.md): no reparsing per frame. Errors as
+// loadGltf's; bad animations are InputErrors at construction.
+class GltfSceneSource {
+public:
+    GltfSceneSource(const std::filesystem::path& path, const GltfLimits& limits = {});
+    ~GltfSceneSource();
+    GltfSceneSource(const GltfSceneSource&) = delete;
+    GltfSceneSource& operator=(const GltfSceneSource&) = delete;
+
+    SceneAnimation& animation() { return *m_animation; }
+    // The scene with the selected animation(s) sampled at `seconds`.
+    Scene sceneAt(double seconds);
+    // The scene as loadGltf gives it: every node at its static TRS (no animation applied).
+    Scene stillScene();
+
+private:
+    class State;
+    std::filesystem::path m_path;
+    std::unique_ptr<State> m_state;
+    std::optional<SceneAnimation> m_animation;
+};
 
 }  // namespace vkp

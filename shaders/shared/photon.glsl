@@ -87,7 +87,8 @@ struct PhotonTraceParams {
     uint seed;
     uint lightCount;
     float totalPower;     // watts, luminance-weighted sum over the lights (SceneArrays)
-    uint pad0;
+    uint pathStride;      // 0 or 1: paths firstPath, firstPath+1, ...; N: firstPath + local * N (one
+                          // selective-update group, docs/photon-mapping.md); slots stay local * maxDeposits + k
     uint pad1;
 };
 STATIC_ASSERT_SIZE(PhotonTraceParams, 48)

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "render/deposition.h"
+#include "render/frame_update.h"
 #include "render/integrators/progressive_photon_integrator.h"
 #include "util/errors.h"
 #include "util/stopwatch.h"
@@ -85,7 +86,7 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
     }
     m_globalMap = std::make_unique<PhotonMap>(context, m_scene.scene(), m_scene.arrays(), m_scene.buffers(),
                                               globalSettings);
-    const PhotonMapStats globalStats = m_globalMap->build(0);
+    const PhotonMapStats globalStats = buildFramePhotonMap(frame, *m_globalMap, 0);
     m_stopReason = globalStats.stopReason;
     m_globalCellSize = globalStats.cellSize;
     reportMapBuild(m_stats, globalStats);
@@ -109,7 +110,7 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
         m_causticMap = std::make_unique<PhotonMap>(context, m_scene.scene(), m_scene.arrays(), m_scene.buffers(),
                                                    causticSettings);
         // Split by q, the global map's paths are the caustic map's first; else fresh Halton indices.
-        const PhotonMapStats causticStats = m_causticMap->build(splitByQ ? 0 : p.globalPaths);
+        const PhotonMapStats causticStats = buildFramePhotonMap(frame, *m_causticMap, splitByQ ? 0 : p.globalPaths);
         reportMapBuild(m_stats, causticStats);
         if (m_stopReason.empty()) m_stopReason = causticStats.stopReason;
         m_stats.set("photons.causticStored", causticStats.stored);

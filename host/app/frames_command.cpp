@@ -1,0 +1,182 @@
+#include "app/frames_command.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "app/interrupt.h"
+#include "app/progress.h"
+#include "image/atomic_file.h"
+#include "image/exr.h"
+#include "image/metrics.h"
+#include "image/png.h"
+#include "render/frame_update.h"
+#include "render/renderer.h"
+#include "render/selective_frame_update.h"
+#include "scene/gltf_loader.h"
+#include "util/errors.h"
+#include "util/printable.h"
+#include "util/stopwatch.h"
+#include "vk/context.h"
+
+namespace vkp {
+
+std::filesystem::path framesOutputPattern(const RenderCommandOptions& options) {
+    if (options.output.empty())
+        return std::filesystem::path("out") / (options.scene.stem().string() + "-####.exr");
+    if (!hasFramePattern(options.output))
+        throw InputError(fmt::format("-o {}: with --frames the file name needs a run of '#' for the frame number "
+                                     "(e.g. out/frame-####.exr)",
+                                     options.output.string()));
+    return options.output;
+}
+
+int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig& config) {
+    const auto start = Clock::now();
+    const FrameRange range = *options.frames;
+    if (!(options.fps > 0.0 && options.fps <= 1000.0))
+        throw InputError(fmt::format("--fps {}: must be in (0, 1000]", options.fps));
+    const std::filesystem::path pattern = framesOutputPattern(options);
+    if (pattern.extension() != ".exr")
+        throw InputError(fmt::format("-o {}: the output must end in .exr (a .png is written beside it)", pattern.string()));
+    for (const uint32_t f : {range.first, range.last}) {
+        std::filesystem::path exr = frameOutputPath(pattern, f), png = exr;
+        png.replace_extension(".png");
+        checkWritable(exr);
+        checkWritable(png);
+    }
+    if (!options.statsJson.empty()) checkWritable(options.statsJson);
+    if (options.aov.any()) throw InputError("--aov is not supported with --frames yet");
+    if (options.frame.crop) throw InputError("--tile and --crop cannot be combined with --frames");
+    options.lightSampling.check();
+    installInterruptHandler();
+
+    vk::Context context({options.validate, options.device});
+    GltfLimits limits = deviceSceneLimits(context, options.maxMemoryGiB);
+    limits.sceneIndex = options.sceneIndex;
+    GltfSceneSource source(options.scene, limits);
+    SceneAnimation& animation = source.animation();
+    animation.select(options.animation);
+    if (animation.empty())
+        fmt::print(stderr, "warning: {}: the file has no animations: every frame shows the still scene\n",
+                   printable(options.scene.string()));
+    const double loadSeconds = secondsSince(start);
+    if (!options.quiet)
+        fmt::print(stderr, "vkphoton: {} frames {}..{} at {} fps (animation {}, keys {:.3f}..{:.3f} s) on {}{}\n",
+                   printable(options.scene.string()), range.first, range.last, options.fps,
+                   options.animation < 0 ? std::string("all") : std::to_string(options.animation),
+                   animation.startTime(), animation.endTime(), context.deviceName(),
+                   context.validationEnabled() ? " with validation" : "");
+
+    // Without a camera in the file, every frame keeps the framing of the still scene (the
+    // bounds of a moving scene change from frame to frame; the view must not follow them).
+    FrameSettings frameSettings = options.frame;
+    {
+        const Scene still = source.stillScene();
+        if (still.cameras.empty()) {
+            const Camera fixed = chooseCamera(still, options.frame.cameraIndex,
+                                              float(options.frame.width) / float(options.frame.height), options.frame.view);
+            frameSettings.view.lookFrom = fixed.position;
+            frameSettings.view.lookAt = fixed.position + fixed.forward;
+            frameSettings.view.fovDegrees = glm::degrees(fixed.yfov);
+        }
+    }
+    // --photon-update: full retrace per frame, or the selective update (render/selective_frame_update.h).
+    std::unique_ptr<FrameUpdate> updateOwner;
+    if (options.photonUpdateFull) {
+        updateOwner = std::make_unique<FrameUpdate>();
+    } else {
+        SelectiveUpdateOptions selective;
+        selective.budget = options.photonBudget;
+        selective.groups = options.photonGroups;
+        updateOwner = std::make_unique<SelectiveFrameUpdate>(context, selective);
+    }
+    FrameUpdate& update = *updateOwner;
+    nlohmann::json frames = nlohmann::json::array();
+    nlohmann::json lastStats;
+    uint32_t written = 0;
+    for (uint32_t f = range.first; f <= range.last && !interruptRequested().load(); ++f) {
+        const auto frameStart = Clock::now();
+        const double time = frameTime(f, options.fps);
+        Scene scene = source.sceneAt(time);
+        std::string note;
+        applyEnvironment(scene, options.environment, note);
+        if (!note.empty() && !options.quiet && f == range.first) fmt::print(stderr, "{}\n", note);
+        scene.energyCompensation = !options.noEnergyCompensation;
+        const double flattenSeconds = secondsSince(frameStart);
+        LightSampling lightSampling = options.lightSampling;
+        if (options.lightSamplerAuto) lightSampling.sampler = autoLightSampler(scene);
+        const auto buildStart = Clock::now();
+        Renderer renderer(context, scene, lightSampling);  // BVH build and upload: the per-frame scene update
+        const double sceneUpdateSeconds = flattenSeconds + secondsSince(buildStart);
+        const std::unique_ptr<Integrator> integrator = config.create(renderer.gpuScene());
+        FrameSettings settings = frameSettings;
+        settings.photonUpdate = &update;
+        settings.update = {f, time, f == range.first};
+        ProgressReporter progress(fmt::format("frame {}", f), options.quiet);
+        RenderResult result = renderer.render(
+            settings, *integrator,
+            [&](const RenderProgress& p) { progress.update(p.samplesDone, p.samplesTotal, p.elapsedSeconds); },
+            &interruptRequested());
+        progress.finish();
+        // Ctrl-C: the finished frames stay; the interrupted one is not written.
+        if (interruptRequested().load()) break;
+        Stats& stats = result.stats;
+        const FramePhotonCounts counts = update.takeCounts();
+        const uint64_t photonPaths = counts.photonPathsTraced > 0 || !stats.has("photons.pathsTraced")
+            ? counts.photonPathsTraced
+            : stats.get<uint64_t>("photons.pathsTraced");
+        const double seconds = secondsSince(frameStart);
+        stats.set("scene", options.scene.string());
+        stats.set("timings.loadSeconds", loadSeconds);
+        const std::filesystem::path exrPath = frameOutputPath(pattern, f);
+        std::filesystem::path pngPath = exrPath;
+        pngPath.replace_extension(".png");
+        const ExrAttributes attributes{
+            {"vkphoton/scene", options.scene.string()},
+            {"vkphoton/integrator", stats.get<std::string>("integrator")},
+            {"vkphoton/frame", std::to_string(f)},
+            {"vkphoton/time", fmt::format("{}", time)},
+            {"vkphoton/spp", std::to_string(stats.get<uint32_t>("counters.samplesPerPixel"))},
+            {"vkphoton/seed", std::to_string(settings.seed)},
+            {"vkphoton/device", stats.get<std::string>("device")},
+            {"vkphoton/partial", stats.get<bool>("partial") ? "true" : "false"},
+            {"vkphoton/stopReason", stats.get<std::string>("stopReason")},
+        };
+        writeFilesTogether({{exrPath, exrBytes(exrPath, result.image, attributes)},
+                            {pngPath, pngBytes(pngPath, result.image, options.display)}});
+        ++written;
+        frames.push_back({{"frame", f},
+                          {"time", time},
+                          {"photonPathsTraced", photonPaths},
+                          {"groupsRetraced", counts.groupsRetraced},
+                          {"seconds", seconds},
+                          {"sceneUpdateSeconds", sceneUpdateSeconds},
+                          {"flattenSeconds", flattenSeconds},
+                          {"bvhSeconds", stats.get<double>("timings.bvhSeconds")},
+                          {"uploadSeconds", stats.get<double>("timings.uploadSeconds")},
+                          {"renderSeconds", stats.get<double>("timings.renderSeconds")},
+                          {"triangles", scene.triangles.size()},
+                          {"partial", stats.get<bool>("partial")},
+                          {"meanRadiance", meanRadiance(result.image)},
+                          {"output", exrPath.string()}});
+        for (const std::string& warning : stats.warnings()) fmt::print(stderr, "warning: frame {}: {}\n", f, warning);
+        if (!options.quiet)
+            fmt::print(stderr, "frame {} (t = {:.3f} s): wrote {} ({:.2f} s, scene update {:.3f} s, {} photon paths)\n", f,
+                       time, printable(exrPath.string()), seconds, sceneUpdateSeconds, photonPaths);
+        lastStats = stats.toJson();
+    }
+    if (!options.statsJson.empty()) {
+        nlohmann::json json = lastStats.is_null() ? nlohmann::json::object() : lastStats;  // the last frame's details
+        json["frames"] = frames;
+        json["settings"]["frames"] = {{"first", range.first}, {"last", range.last}, {"fps", options.fps},
+                                      {"animation", options.animation}};
+        json["timings"]["totalSeconds"] = secondsSince(start);
+        writeTextAtomically(options.statsJson, json.dump(2) + "\n");
+    }
+    if (!options.quiet)
+        fmt::print(stderr, "wrote {} of {} frame(s) in {:.2f} s\n", written, range.count(), secondsSince(start));
+    if (context.validationEnabled()) context.throwOnValidationMessages();
+    return interruptRequested().load() ? interruptExitCode() : kExitOk;
+}
+
+}  // namespace vkp

@@ -1,0 +1,50 @@
+// The seam through which an animation's frames (re)build their photon maps (docs/animation.md).
+// The frames loop (render/frame_sequence.h) owns one FrameUpdate for the whole sequence and
+// hands it to every frame's render through FrameSettings::photonUpdate; the photon integrator
+// builds its maps through buildFramePhotonMap(). The base class retraces every path (a full
+// rebuild per frame); a selective update (Dmitriev et al. 2002) subclasses it, keeping state
+// across frames, and retraces only the paths the motion changed.
+#pragma once
+
+#include <cstdint>
+
+namespace vkp {
+
+class PhotonMap;
+struct PhotonMapStats;
+struct Frame;
+
+// Which frame of a sequence is being rendered.
+struct FrameUpdateInfo {
+    uint32_t frame = 0;       // the frame number (--frames FIRST:LAST)
+    double time = 0.0;        // seconds: frame / fps
+    bool firstFrame = true;   // the first frame of the sequence (or a still render)
+};
+
+// What the photon maps of one frame cost, for --stats-json's "frames" array.
+struct FramePhotonCounts {
+    uint64_t photonPathsTraced = 0;  // every photon path traced for the frame, pilot paths included
+    uint64_t groupsRetraced = 0;     // photon groups retraced (0 for a full retrace)
+};
+
+class FrameUpdate {
+public:
+    virtual ~FrameUpdate() = default;
+    // Builds `map` for the frame `info`: traces its paths with Halton indices firstPath... as
+    // PhotonMap::build does. The default retraces every path and counts them.
+    virtual PhotonMapStats buildPhotonMap(PhotonMap& map, uint32_t firstPath, const FrameUpdateInfo& info);
+    // The counts since the last call (the frames loop takes them after each frame).
+    FramePhotonCounts takeCounts() {
+        const FramePhotonCounts counts = m_counts;
+        m_counts = {};
+        return counts;
+    }
+
+protected:
+    FramePhotonCounts m_counts;
+};
+
+// map.build(firstPath) without a frame update (a still render), else frame.photonUpdate's build.
+PhotonMapStats buildFramePhotonMap(const Frame& frame, PhotonMap& map, uint32_t firstPath);
+
+}  // namespace vkp

@@ -1,0 +1,80 @@
+// Selective photon tracing (Dmitriev, Brabec, Myszkowski, Seidel 2002, §4-5): photon paths kept
+// across frames in fixed per-path slots (path i in slots i * maxDeposits + k), so retracing some
+// paths never moves the others' photons. Path i belongs to group i mod groups; the Halton
+// sequence's periodicity makes a group's paths leave the lights in similar directions, so one
+// group is a spatially coherent bundle. Each frame the pilots (the first pilotsPerGroup paths of
+// every group: paths 0 .. pilotsPerGroup * groups - 1) are retraced in the new scene and compared
+// with their previous photons; a changed pilot raises its group's priority. Groups are retraced
+// by priority (changed pilots, stalest first on ties) within the per-frame path budget, then
+// unchanged groups round-robin, so once motion stops the slots converge to a full retrace.
+// docs/photon-mapping.md "Selective update".
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "render/photon_tracer.h"
+#include "vk/buffer.h"
+
+namespace vkp {
+
+struct SelectiveSettings {
+    uint32_t paths = 200000;       // photon paths of the map (Halton indices 0 .. paths - 1)
+    uint32_t maxDeposits = 8;
+    uint32_t seed = 0;
+    uint32_t firstPath = 0;        // path i is Halton index firstPath + i (progressive passes)
+    uint32_t groups = 2310;        // 2*3*5*7*11: one digit of each of the first five Halton bases (docs)
+    uint32_t pilotsPerGroup = 1;
+    uint32_t budget = 0;           // paths traced per frame (pilots included); 0: paths / 8
+    uint32_t refreshGroups = 1;    // unchanged groups refreshed per frame at least (round-robin)
+};
+
+struct SelectiveFrameStats {
+    uint64_t photonPathsTraced = 0;  // pilots and retraced groups' paths
+    uint64_t pilotsTraced = 0;
+    uint64_t groupsRetraced = 0;
+    uint64_t changedPilots = 0;
+    uint64_t groupsPending = 0;      // marked groups left for later frames
+    bool full = false;               // the whole map was traced (first frame or --photon-update full)
+};
+
+class SelectivePhotonUpdate {
+public:
+    SelectivePhotonUpdate(vk::Context& context, const SelectiveSettings& settings);
+
+    // One frame in a new scene (its GpuScene may be rebuilt every frame): a full trace when
+    // `full` or on the first call, else the pilots and the selected groups.
+    SelectiveFrameStats update(const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers, bool full);
+
+    // paths * maxDeposits slots, path i at i * maxDeposits (PhotonMap::buildFromSlots).
+    const vk::Buffer& slots() const { return m_slots; }
+    const SelectiveSettings& settings() const { return m_settings; }
+    uint32_t groupOf(uint32_t path) const { return path % m_settings.groups; }
+    uint32_t pathsInGroup(uint32_t group) const;
+    // Groups whose pilots changed in the last update (before retracing), ascending.
+    const std::vector<uint32_t>& markedGroups() const { return m_marked; }
+    // Groups retraced by the last update, in the order traced.
+    const std::vector<uint32_t>& retracedGroups() const { return m_retraced; }
+    std::vector<gpu::GpuPhoton> downloadSlots() const;
+    uint64_t frame() const { return m_frame; }                                // updates so far
+    uint64_t lastTraced(uint32_t group) const { return m_lastTraced[group]; } // frame of its last retrace
+
+private:
+    void traceGroup(PhotonTracer& tracer, uint32_t group);
+    void copyPaths(PhotonTracer& tracer, uint32_t firstPath, uint32_t stride, uint32_t count);
+
+    vk::Context& m_context;
+    SelectiveSettings m_settings;
+    vk::Buffer m_slots;
+    uint32_t m_pilotPaths;
+    std::vector<gpu::GpuPhoton> m_pilotRecord;  // the pilots' photons of the last frame
+    std::vector<uint32_t> m_priority;           // changed pilots seen since the group's last retrace
+    std::vector<uint64_t> m_lastTraced;         // frame of the group's last retrace
+    uint32_t m_refreshCursor = 0;
+    uint64_t m_frame = 0;
+    bool m_initialised = false;
+    std::vector<uint32_t> m_marked;
+    std::vector<uint32_t> m_retraced;
+};
+
+}  // namespace vkp

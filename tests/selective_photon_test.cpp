@@ -1,0 +1,156 @@
+// Selective photon update (render/selective_photon_update.h): two scenes built in code that
+// differ by one moved box.
+#include <cstring>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "gpu_scene/scene_buffers.h"
+#include "gpu_test_support.h"
+#include "render/photon_map.h"
+#include "render/selective_photon_update.h"
+#include "test_scenes.h"
+
+namespace vkp {
+namespace {
+
+constexpr uint32_t kGroups = 210;  // 2*3*5*7
+constexpr uint32_t kPaths = kGroups * 16;
+constexpr uint32_t kDeposits = 4;
+
+Scene boxScene(glm::vec3 boxLo) {
+    Scene scene = test::shadowTestScene();
+    test::addQuad(scene, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2});  // floor, facing up
+    test::addQuad(scene, {-2, 3, -2}, {2, 3, -2}, {2, 3, 2}, {-2, 3, 2});  // ceiling, facing down
+    test::addBox(scene, boxLo, boxLo + glm::vec3(1.0f));
+    test::addPointLight(scene, {0.0f, 2.0f, 0.0f}, glm::vec3(10.0f));
+    return scene;
+}
+
+struct GpuSceneData {
+    Scene scene;
+    SceneArrays arrays;
+    SceneBuffers buffers;
+    explicit GpuSceneData(Scene s) : scene(std::move(s)), arrays(buildSceneArrays(scene)), buffers(test::gpu(), arrays) {}
+};
+
+SelectiveSettings settings(uint32_t budget = 0) {
+    SelectiveSettings s;
+    s.paths = kPaths;
+    s.maxDeposits = kDeposits;
+    s.seed = 7;
+    s.groups = kGroups;
+    s.pilotsPerGroup = 1;
+    s.budget = budget;
+    return s;
+}
+
+bool samePhotons(const std::vector<gpu::GpuPhoton>& a, const std::vector<gpu::GpuPhoton>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(gpu::GpuPhoton)) == 0;
+}
+
+class SelectivePhoton : public test::GpuTest {};
+
+// After the motion stops and every group has been retraced since, the persistent slots equal a full
+// trace of the final scene bit for bit, and so does the compacted map.
+TEST_F(SelectivePhoton, ConvergesToTheFullRetraceBitIdentically) {
+    GpuSceneData a(boxScene({-1.5f, 0.0f, -0.5f}));
+    GpuSceneData b(boxScene({0.5f, 0.0f, -0.5f}));
+    SelectivePhotonUpdate selective(test::gpu(), settings(kGroups + 20 * 16));
+    selective.update(a.scene, a.arrays, a.buffers, false);
+    const uint64_t firstStill = selective.frame() + 1;
+    bool converged = false;
+    for (int frame = 0; frame < 64 && !converged; ++frame) {
+        selective.update(b.scene, b.arrays, b.buffers, false);
+        converged = true;
+        for (uint32_t g = 0; g < kGroups; ++g) converged = converged && selective.lastTraced(g) >= firstStill;
+    }
+    ASSERT_TRUE(converged);
+
+    SelectivePhotonUpdate full(test::gpu(), settings());
+    full.update(b.scene, b.arrays, b.buffers, true);
+    const std::vector<gpu::GpuPhoton> expected = full.downloadSlots();
+    EXPECT_TRUE(samePhotons(selective.downloadSlots(), expected));
+    // The full update's slots are a plain contiguous trace (paths 0 .. kPaths - 1).
+    PhotonTracer tracer(test::gpu(), b.scene, b.arrays, b.buffers);
+    PhotonSettings ps;
+    ps.paths = kPaths;
+    ps.maxDeposits = kDeposits;
+    ps.seed = 7;
+    tracer.trace(ps);
+    EXPECT_TRUE(samePhotons(tracer.downloadPhotons(), expected));
+
+    // Stale slots (scene a) must differ, or the test proves nothing.
+    SelectivePhotonUpdate stale(test::gpu(), settings());
+    stale.update(a.scene, a.arrays, a.buffers, true);
+    EXPECT_FALSE(samePhotons(stale.downloadSlots(), expected));
+
+    PhotonMapSettings ms;
+    ms.paths = kPaths;
+    ms.maxDeposits = kDeposits;
+    ms.seed = 7;
+    PhotonMap built(test::gpu(), b.scene, b.arrays, b.buffers, ms);
+    built.build(0);
+    PhotonMap fromSlots(test::gpu(), b.scene, b.arrays, b.buffers, ms);
+    const PhotonMapStats st = fromSlots.buildFromSlots(selective.slots(), 0);
+    EXPECT_GT(st.stored, 0u);
+    EXPECT_TRUE(samePhotons(fromSlots.downloadPhotons(), built.downloadPhotons()));
+    EXPECT_EQ(fromSlots.photonPower(), built.photonPower());
+}
+
+// A pilot whose photons change with the move marks its group; a group whose pilot is unchanged is
+// not marked.
+TEST_F(SelectivePhoton, ChangedPilotsMarkTheirGroupsOnly) {
+    GpuSceneData a(boxScene({-1.5f, 0.0f, -0.5f}));
+    GpuSceneData b(boxScene({0.5f, 0.0f, -0.5f}));
+    SelectivePhotonUpdate fullA(test::gpu(), settings()), fullB(test::gpu(), settings());
+    fullA.update(a.scene, a.arrays, a.buffers, true);
+    fullB.update(b.scene, b.arrays, b.buffers, true);
+    const auto slotsA = fullA.downloadSlots(), slotsB = fullB.downloadSlots();
+    std::set<uint32_t> expected;
+    for (uint32_t p = 0; p < kGroups; ++p)  // pilot of group p is path p
+        if (std::memcmp(&slotsA[p * kDeposits], &slotsB[p * kDeposits], kDeposits * sizeof(gpu::GpuPhoton)) != 0)
+            expected.insert(p);
+    ASSERT_GT(expected.size(), 0u);
+    ASSERT_LT(expected.size(), kGroups);
+
+    SelectivePhotonUpdate selective(test::gpu(), settings());
+    selective.update(a.scene, a.arrays, a.buffers, false);
+    const SelectiveFrameStats still = selective.update(a.scene, a.arrays, a.buffers, false);
+    EXPECT_EQ(still.changedPilots, 0u);
+    EXPECT_TRUE(selective.markedGroups().empty());
+    const SelectiveFrameStats moved = selective.update(b.scene, b.arrays, b.buffers, false);
+    const std::set<uint32_t> marked(selective.markedGroups().begin(), selective.markedGroups().end());
+    EXPECT_EQ(marked, expected);
+    EXPECT_EQ(moved.changedPilots, expected.size());
+}
+
+// The per-frame budget holds (pilots included) and the statistics count what was traced.
+TEST_F(SelectivePhoton, BudgetAndStatistics) {
+    GpuSceneData a(boxScene({-1.5f, 0.0f, -0.5f}));
+    GpuSceneData b(boxScene({0.5f, 0.0f, -0.5f}));
+    const uint32_t groupPaths = kPaths / kGroups;
+    const uint32_t budget = kGroups + 5 * groupPaths + groupPaths / 2;
+    SelectivePhotonUpdate selective(test::gpu(), settings(budget));
+    const SelectiveFrameStats first = selective.update(a.scene, a.arrays, a.buffers, false);
+    EXPECT_TRUE(first.full);
+    EXPECT_EQ(first.photonPathsTraced, kPaths);
+    const SelectiveFrameStats s = selective.update(b.scene, b.arrays, b.buffers, false);
+    EXPECT_FALSE(s.full);
+    EXPECT_LE(s.photonPathsTraced, budget);
+    EXPECT_EQ(s.pilotsTraced, kGroups);
+    EXPECT_EQ(s.groupsRetraced, 5u);
+    EXPECT_EQ(s.groupsRetraced, selective.retracedGroups().size());
+    EXPECT_EQ(s.photonPathsTraced, kGroups + s.groupsRetraced * groupPaths);
+    // Marked groups first (4 of the 5: one group's room is kept for the round-robin refresh).
+    ASSERT_GT(selective.markedGroups().size(), 4u);
+    const std::set<uint32_t> marked(selective.markedGroups().begin(), selective.markedGroups().end());
+    for (size_t i = 0; i < 4; ++i) EXPECT_TRUE(marked.count(selective.retracedGroups()[i]));
+    const std::set<uint32_t> retraced(selective.retracedGroups().begin(), selective.retracedGroups().end());
+    size_t pending = 0;
+    for (uint32_t g : marked) pending += retraced.count(g) ? 0 : 1;
+    EXPECT_EQ(s.groupsPending, pending);
+}
+
+}  // namespace
+}  // namespace vkp
