@@ -189,6 +189,9 @@ int runCommandLine(int argc, const char* const* argv) {
         ->type_name("X0,Y0,X1,Y1")
         ->excludes(tileOption);
     renderCmd->add_flag("--quiet", render.quiet, "No progress output");
+    renderCmd->add_flag("--no-energy-compensation", render.noEnergyCompensation,
+                        "The glTF spec's plain single-scattering GGX: no multiple-scattering compensation of rough "
+                        "specular lobes (docs/materials.md)");
     const auto views = viewTransformChoices();
     renderCmd->add_option("--tonemap", render.display.view,
                           "The PNG's view transform: agx (Blender 4's AgX), aces-fit (Narkowicz's ACES fit), clamp "
