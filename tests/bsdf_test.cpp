@@ -135,6 +135,26 @@ TEST(Bsdf, WhiteFurnacePerDirection) {
     }
 }
 
+// KHR_materials_ior ior = 0: the specular-glossiness compatibility mode, an infinite ior whose
+// Fresnel term is 1 in every direction (scaled by KHR_materials_specular); transmission reflects all.
+TEST(Bsdf, IorZeroIsAnInfiniteIorWithFresnelOne) {
+    BsdfParams p = makeBsdfParams(glm::vec3(0.5f), 0.0f, 0.5f);
+    p.ior = 0.0f;
+    p.specular = 0.8f;
+    p.specularColor = glm::vec3(1.0f, 0.5f, 2.0f);
+    for (float c : {1.0f, 0.5f, 0.05f}) {
+        const glm::vec3 f = dielectricFresnel(p, c);
+        EXPECT_FLOAT_EQ(f.x, 0.8f);
+        EXPECT_FLOAT_EQ(f.y, 0.4f);
+        EXPECT_FLOAT_EQ(f.z, 0.8f);
+    }
+    p.transmission = 1.0f;
+    for (float u : {0.0f, 0.5f, 0.99f}) {
+        const BsdfSample s = sampleDielectric(p, glm::normalize(glm::vec3(0.3f, 0.0f, 0.9f)), true, true, glm::vec2(u, 0.5f));
+        EXPECT_EQ(s.lobe, kLobeDelta) << "ior 0 must not refract";
+    }
+}
+
 // Evaluation is reciprocal: f(wo, wi) = f(wi, wo), for every material of the grid.
 TEST(Bsdf, EvaluationIsReciprocal) {
     std::mt19937 rng(3);
