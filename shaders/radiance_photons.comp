@@ -8,6 +8,7 @@
 
 #include "shared/kernels/photon_estimates.glsl"
 #include "shared/sampling.glsl"
+#define VKP_NO_BSDF_TABLES  // converts no irradiance: final_gather.comp applies the BSDF
 #include "shared/bsdf.glsl"
 #include "shared/photon_render.glsl"
 #define PHOTON_GRID_BINDING kRadiancePhotonsGridBinding

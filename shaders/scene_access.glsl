@@ -8,6 +8,7 @@
 #include "shared/kernels/scene.glsl"
 #include "shared/constants.glsl"
 #include "shared/sampling.glsl"
+#define VKP_BSDF_TABLES_BINDING kSceneTablesBinding  // the BSDF's albedo tables (shared/bsdf_tables.glsl)
 #include "shared/bsdf.glsl"
 #include "termination_counters.glsl"
 
@@ -18,6 +19,7 @@ layout(std430, set = 0, binding = kSceneMaterialsBinding) readonly buffer Materi
 layout(std430, set = 0, binding = kSceneLightsBinding) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, set = 0, binding = kSceneLightCdfBinding) readonly buffer LightCdf { float lightCdf[]; };
 layout(std430, set = 0, binding = kSceneTexturesBinding) readonly buffer Textures { GpuTexture textures[]; };
+// binding kSceneTablesBinding: declared by shared/bsdf_tables.glsl (float bsdfTablesData[]).
 layout(std430, set = 0, binding = kSceneTexelsBinding) readonly buffer Texels { uint texels[]; };
 
 #include "shared/hash.glsl"

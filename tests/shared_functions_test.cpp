@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "gpu_scene/scene_buffers.h"
 #include "gpu_test_support.h"
 #include "shared/harness_functions.glsl"
 #include "shaders/test_kernels.glsl"
@@ -37,9 +38,11 @@ std::vector<glm::uvec4> runOnGpu(uint32_t function, const std::vector<HarnessInp
     vk::Context& context = test::gpu();
     vk::Buffer in = vk::makeStorageBuffer(context, "harness inputs", inputs);
     vk::Buffer out(context, "harness outputs", inputs.size() * sizeof(glm::uvec4), vk::kStorageUsage);
+    vk::Buffer tables = makeBsdfTablesBuffer(context);  // the BSDF reads its albedo tables (compensation on)
     vk::Kernel<gpu::HarnessKernel> kernel(context);
     kernel.bind(gpu::kHarnessInputBinding, in);
     kernel.bind(gpu::kHarnessOutputBinding, out);
+    kernel.bind(gpu::kHarnessTablesBinding, tables);
     const gpu::HarnessParams push{static_cast<uint32_t>(inputs.size()), function};
     context.submitAndWait([&](VkCommandBuffer cmd) {
         kernel.record(cmd, inputs.size(), push);

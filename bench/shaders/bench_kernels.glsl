@@ -23,8 +23,8 @@ struct GatherBenchParams {
 };
 STATIC_ASSERT_SIZE(GatherBenchParams, 36)
 
-// ray_throughput.comp: the scene's bindings, then
-const uint kRayBenchResultBinding = kSceneBindingCount;    // uint per pixel: hits
+// ray_throughput.comp: the scene's 0..7, then
+const uint kRayBenchResultBinding = kSceneBindingCount + 0u;     // uint per pixel: hits
 struct RayBenchParams {
     GpuCamera camera;
     uint width;
@@ -34,9 +34,9 @@ struct RayBenchParams {
 };
 STATIC_ASSERT_SIZE(RayBenchParams, 80)
 
-// traced_direct.comp: the scene's bindings, then; push constants: RasterDirectParams.
-const uint kTracedDirectLightBinding = kSceneBindingCount; // GpuLight: the raster lights
-const uint kTracedDirectOutputBinding = kSceneBindingCount + 1u;  // vec4 per pixel
+// traced_direct.comp: the scene's 0..7, then; push constants: RasterDirectParams.
+const uint kTracedDirectLightBinding = kSceneBindingCount + 0u;  // GpuLight: the raster lights
+const uint kTracedDirectOutputBinding = kSceneBindingCount + 1u; // vec4 per pixel
 
 SHARED_END
 

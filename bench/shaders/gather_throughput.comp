@@ -5,6 +5,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/sampling.glsl"
+#define VKP_NO_BSDF_TABLES  // gathers photon power only
 #include "shared/bsdf.glsl"
 #include "bench_kernels.glsl"
 #define PHOTON_GRID_BINDING kGatherBenchGridBinding

@@ -214,6 +214,9 @@ int runCommandLine(int argc, const char* const* argv) {
                           "of 2, 3, 5, 7, 11)")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    renderCmd->add_flag("--no-energy-compensation", render.noEnergyCompensation,
+                        "The glTF spec's plain single-scattering GGX: no multiple-scattering compensation of rough "
+                        "specular lobes (docs/materials.md)");
     const auto views = viewTransformChoices();
     renderCmd->add_option("--tonemap", render.display.view,
                           "The PNG's view transform: agx (Blender 4's AgX), aces-fit (Narkowicz's ACES fit), clamp "

@@ -3,10 +3,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <iterator>
 
 #include "bvh/bvh.h"
 #include "scene/environment_distribution.h"
 #include "gpu_scene/textured_emission.h"
+#include "shared/bsdf_tables.glsl"
 #include "shared/constants.glsl"
 #include "shared/photon.glsl"
 #include "shared/sampling.glsl"
@@ -226,6 +228,11 @@ gpu::GpuCamera makeGpuCamera(const Camera& camera, uint32_t width, uint32_t heig
     return c;
 }
 
+vk::Buffer makeBsdfTablesBuffer(vk::Context& context) {
+    const std::vector<float> tables(std::begin(gpu::kBsdfTables), std::end(gpu::kBsdfTables));
+    return vk::makeStorageBuffer(context, "BSDF tables", tables);
+}
+
 SceneBuffers::SceneBuffers(vk::Context& context, const SceneArrays& a)
     : m_triangles(vk::makeStorageBuffer(context, "triangles", a.triangles)),
       m_nodes(vk::makeStorageBuffer(context, "BVH nodes", a.nodes)),
@@ -235,6 +242,7 @@ SceneBuffers::SceneBuffers(vk::Context& context, const SceneArrays& a)
       m_lightCdf(vk::makeStorageBuffer(context, "light CDF", a.lightCdf)),
       m_textures(vk::makeStorageBuffer(context, "textures", a.textures)),
       m_texels(vk::makeStorageBuffer(context, "texels", a.texels)),
+      m_tables(makeBsdfTablesBuffer(context)),
       m_lightCount(static_cast<uint32_t>(a.lights.size())) {}
 
 std::vector<const vk::Buffer*> SceneBuffers::bindings() const {
@@ -247,6 +255,7 @@ std::vector<const vk::Buffer*> SceneBuffers::bindings() const {
     b[gpu::kSceneLightCdfBinding] = &m_lightCdf;
     b[gpu::kSceneTexturesBinding] = &m_textures;
     b[gpu::kSceneTexelsBinding] = &m_texels;
+    b[gpu::kSceneTablesBinding] = &m_tables;
     return b;
 }
 

@@ -47,6 +47,10 @@ inline uint64_t deviceTriangleLimit(uint64_t maxStorageBufferRange) {
     return maxStorageBufferRange / std::max(sizeof(gpu::GpuTriangle), sizeof(gpu::GpuTriangleShading));
 }
 
+// The BSDF's albedo tables (shared/bsdf_tables.glsl), uploaded once per scene (scene binding
+// kSceneTablesBinding; test kernels that evaluate the BSDF bind it too).
+vk::Buffer makeBsdfTablesBuffer(vk::Context& context);
+
 gpu::GpuCamera makeGpuCamera(const Camera& camera, uint32_t width, uint32_t height);
 
 class SceneBuffers {
@@ -69,6 +73,7 @@ private:
     vk::Buffer m_lightCdf;
     vk::Buffer m_textures;
     vk::Buffer m_texels;
+    vk::Buffer m_tables;  // the BSDF's albedo tables (shared/bsdf_tables.glsl kBsdfTables), binding kSceneTablesBinding
     uint32_t m_lightCount = 0;
 };
 

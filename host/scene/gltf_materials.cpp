@@ -180,7 +180,8 @@ void GltfMaterials::validate(const std::string& element, Material& m) {
                                   std::max({m.emissive.x, m.emissive.y, m.emissive.z}), kMaxRadiometric));
     if (!(m.attenuationDistance > 0.0f)) fail(element + ".extensions.KHR_materials_volume.attenuationDistance", "must be positive");
     if (m.ior != 0.0f && m.ior < 1.0f) fail(element + ".extensions.KHR_materials_ior.ior", fmt::format("{} is below 1", m.ior));
-    if (m.ior == 0.0f) m.ior = 1.0f;  // KHR_materials_ior allows 0, read as "no refraction boundary": ior 1
+    // ior 0 stays 0: KHR_materials_ior's specular-glossiness compatibility mode (an infinite ior:
+    // the Fresnel term is 1 in every direction), which shared/bsdf.glsl evaluates.
     bool clamped = false;
     const auto clampUnit = [&](float& v) {
         clamped = clamped || v > 1.0f;

@@ -20,7 +20,7 @@
 #include "sampling.glsl"
 #include "bsdf_microfacet.glsl"
 #include "bsdf_sheen.glsl"
-#include "bsdf_tables.glsl"  // host only for now
+#include "bsdf_tables.glsl"  // GLSL: a storage buffer (VKP_BSDF_TABLES_BINDING)
 SHARED_BEGIN
 
 const float kDeltaRoughness = 0.02f;  // perceptual roughness below which the specular is a mirror
@@ -101,8 +101,16 @@ INLINE bool energyCompensationOn(BsdfParams p) {
     return (p.flags & kBsdfNoEnergyCompensation) == 0u;
 }
 
-// KHR_materials_specular's dielectric Fresnel at cos(V, H): specular * (f0 + (1 - f0)(1 - c)^5).
+// KHR_materials_ior's ior = 0: the specular-glossiness compatibility mode, an infinite ior whose
+// Fresnel term is 1 in every direction (then scaled by KHR_materials_specular).
+INLINE bool iorIsInfinite(BsdfParams p) {
+    return p.ior == 0.0f;
+}
+
+// KHR_materials_specular's dielectric Fresnel at cos(V, H): specular * (f0 + (1 - f0)(1 - c)^5);
+// ior 0: specular * min(specularColor, 1), whatever the direction.
 INLINE vec3 dielectricFresnel(BsdfParams p, float cosTheta) {
+    if (iorIsInfinite(p)) return p.specular * min(p.specularColor, vec3(1.0f));
     vec3 f0 = min(vec3(dielectricF0(p.ior)) * p.specularColor, vec3(1.0f));
     return p.specular * fresnelSchlick(f0, cosTheta);
 }
@@ -130,41 +138,39 @@ INLINE vec3 diffuseAlbedo(BsdfParams p) {
     return (1.0f - p.metallic) * p.baseColor;
 }
 
-// KHR_materials_sheen's albedo scaling of the layer under the sheen for one direction.
-// NOT YET: the albedo E_s comes from a table (bsdf_tables.glsl) that the GPU cannot read yet (a
-// 2080-float GLSL constant array makes lavapipe's shader compile explode); until the table has a
-// buffer binding, the base under the sheen is not dimmed (the sheen adds light).
+// KHR_materials_sheen's albedo scaling of the layer under the sheen for one direction:
+// 1 - max(sheenColor) E_s(cos theta, sheenRoughness), E_s the directional albedo of the white
+// Charlie lobe (bsdf_tables.glsl). evalBsdf takes the smaller of the two directions' scalings
+// (min keeps the BSDF reciprocal; the extension's formula uses E_s(N.V) and E_s(N.L) the same way).
 INLINE float sheenScaling(BsdfParams p, float cosTheta) {
-    return 1.0f;
+    if (!kBsdfTablesBound || maxComponent(p.sheenColor) <= 0.0f) return 1.0f;
+    float e = bsdfTableLookup(kTableSheenAlbedo, cosTheta, p.sheenRoughness);
+    return clamp(1.0f - maxComponent(p.sheenColor) * e, 0.0f, 1.0f);
 }
 
 // Kulla-Conty multiple scattering of the GGX specular lobe: f_ms = Fms (1 - E(mu_o))(1 - E(mu_i))
 // / (pi (1 - E_avg)) with Fms = Favg^2 E_avg / (1 - Favg (1 - E_avg)) per component, Favg the
 // hemispherical average of the Schlick Fresnel (f0 + (1 - f0) / 21, times the specular weight for
-// dielectrics). Returns Fms / (pi (1 - E_avg)); zero when compensation is off or nothing is lost.
-// NOT YET ON: needs the E(mu, r) table on the GPU (see sheenScaling); returns 0 until then.
+// dielectrics). Returns Fms / (pi (1 - E_avg)); zero when compensation is off (material flag
+// kBsdfNoEnergyCompensation: render --no-energy-compensation), for mirrors, or when nothing is lost.
 INLINE vec3 multipleScatteringColour(BsdfParams p) {
-    return vec3(0.0f);
-}
-
-INLINE float ggxLoss(BsdfParams p, float cosTheta) {
-    return 0.0f;
-}
-
-#ifdef __cplusplus
-// The compensation as it will run once the tables are bound (host reference, tests).
-INLINE vec3 multipleScatteringColourWithTables(BsdfParams p) {
-    if (!energyCompensationOn(p) || specularIsDelta(p)) return vec3(0.0f);
+    if (!kBsdfTablesBound || !energyCompensationOn(p) || specularIsDelta(p)) return vec3(0.0f);
     float eAvg = ggxAverageAlbedo(p.roughness);
     if (eAvg >= 0.9999f) return vec3(0.0f);
     vec3 f0 = min(vec3(dielectricF0(p.ior)) * p.specularColor, vec3(1.0f));
-    vec3 fd = p.specular * (f0 + (vec3(1.0f) - f0) * (1.0f / 21.0f));
+    vec3 fd = iorIsInfinite(p) ? p.specular * min(p.specularColor, vec3(1.0f))
+                               : p.specular * (f0 + (vec3(1.0f) - f0) * (1.0f / 21.0f));
     vec3 fm = p.baseColor + (vec3(1.0f) - p.baseColor) * (1.0f / 21.0f);
     vec3 kd = fd * fd * eAvg / (vec3(1.0f) - fd * (1.0f - eAvg));
     vec3 km = fm * fm * eAvg / (vec3(1.0f) - fm * (1.0f - eAvg));
     return mix(kd, km, p.metallic) * (kInvPi / (1.0f - eAvg));
 }
-#endif
+
+// 1 - E(cos theta, roughness): the share of the light single-scattering GGX loses in one direction.
+INLINE float ggxLoss(BsdfParams p, float cosTheta) {
+    if (!kBsdfTablesBound) return 0.0f;
+    return max(0.0f, 1.0f - bsdfTableLookup(kTableGgxAlbedo, cosTheta, p.roughness));
+}
 
 // Probabilities with which sampleBsdf's opaque layer picks its lobes, from the lobes' albedos
 // estimated at wo. A lobe that can reflect light keeps at least a tenth of its share of a uniform
@@ -248,13 +254,16 @@ INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
 
 // The diffuse part of the BSDF for light arriving along the normal: what turns precomputed
 // irradiance into reflected radiance (Christensen's radiance photons; the glossy part of the
-// surface is left out).
+// surface is left out). The multiple-scattering lobe is broad like the diffuse one: it is kept,
+// evaluated as evalBsdf does for wi along the normal.
 INLINE vec3 diffuseReflectance(BsdfParams p, vec3 wo) {
     if (wo.z <= 0.0f) return vec3(0.0f);
     vec3 h = normalize(wo + vec3(0.0f, 0.0f, 1.0f));
     float cosH = dot(wo, h);
     float layers = (1.0f - clearcoatFresnel(p, cosH)) * min(sheenScaling(p, wo.z), sheenScaling(p, 1.0f));
-    return p.baseColor * (kInvPi * diffuseWeight(p, cosH) * layers * (1.0f - p.transmission));
+    vec3 f = p.baseColor * (kInvPi * diffuseWeight(p, cosH));
+    if (!specularIsDelta(p)) f = f + multipleScatteringColour(p) * (ggxLoss(p, wo.z) * ggxLoss(p, 1.0f));
+    return f * (layers * (1.0f - p.transmission));
 }
 
 // Solid-angle pdf with which sampleBsdf produces wi through its non-delta lobes.
@@ -275,7 +284,7 @@ INLINE BsdfSample sampleDielectric(BsdfParams p, vec3 wo, bool entering, bool ra
     float ior = max(p.ior, 1.0f);
     float eta = entering ? 1.0f / ior : ior;
     if (p.thinWalled != 0u) eta = 1.0f / ior;
-    float fr = fresnelDielectric(wo.z, eta);
+    float fr = iorIsInfinite(p) ? 1.0f : fresnelDielectric(wo.z, eta);  // ior 0: an infinite ior reflects all
     if (u.x < fr) {
         s.wi = vec3(-wo.x, -wo.y, wo.z);
         s.weight = vec3(1.0f);

@@ -11,14 +11,21 @@
 #ifndef VKP_BSDF_TABLES_GLSL
 #define VKP_BSDF_TABLES_GLSL
 #include "compat.glsl"
-// Host only for now (tests and the reference): as a GLSL constant array the table made lavapipe's
-// shader compiles take minutes; the GPU needs it in a buffer binding (docs/materials.md).
-#ifdef __cplusplus
+// C++ reads the constant array below; GLSL reads the same values from a storage buffer (as a GLSL
+// constant array the table made lavapipe's shader compiles take minutes): the host uploads
+// kBsdfTables once into scene binding kSceneTablesBinding (scene_access.glsl defines
+// VKP_BSDF_TABLES_BINDING before including bsdf.glsl). A shader that includes the BSDF must either
+// define VKP_BSDF_TABLES_BINDING (the binding of that buffer) or VKP_NO_BSDF_TABLES (it evaluates
+// no BSDF: the lookups then return 1 and kBsdfTablesBound is false).
 SHARED_BEGIN
 const uint kBsdfTableSize = 32u;
 const uint kTableGgxAlbedo = 0u;
 const uint kTableSheenAlbedo = 1u;
 const uint kTableGgxAverageAlbedo = 2048u;
+const uint kBsdfTableCount = 2080u;
+SHARED_END
+#ifdef __cplusplus
+SHARED_BEGIN
 const float kBsdfTables[2080] = {
 // BEGIN VALUES
 0.999990f, 0.999999f, 1.000000f, 1.000000f, 1.000000f, 1.000000f, 1.000000f, 1.000000f,
@@ -283,9 +290,23 @@ const float kBsdfTables[2080] = {
 0.631102f, 0.597549f, 0.564212f, 0.531364f, 0.499249f, 0.468076f, 0.438017f, 0.409207f
 // END VALUES
 };
+INLINE float bsdfTableAt(uint i) { return kBsdfTables[i]; }
+const bool kBsdfTablesBound = true;
+SHARED_END
+#elif defined(VKP_BSDF_TABLES_BINDING)
+layout(std430, set = 0, binding = VKP_BSDF_TABLES_BINDING) readonly buffer BsdfTables { float bsdfTablesData[]; };
+float bsdfTableAt(uint i) { return bsdfTablesData[min(i, kBsdfTableCount - 1u)]; }
+const bool kBsdfTablesBound = true;
+#elif defined(VKP_NO_BSDF_TABLES)
+float bsdfTableAt(uint i) { return 1.0f; }
+const bool kBsdfTablesBound = false;
+#else
+#error "bsdf_tables.glsl: define VKP_BSDF_TABLES_BINDING (or VKP_NO_BSDF_TABLES) before including the BSDF"
+#endif
 
+SHARED_BEGIN
 INLINE float bsdfTableValue(uint table, uint x, uint y) {
-    return kBsdfTables[table * kBsdfTableSize * kBsdfTableSize + y * kBsdfTableSize + x];
+    return bsdfTableAt(table * kBsdfTableSize * kBsdfTableSize + y * kBsdfTableSize + x);
 }
 
 // Bilinear lookup in table kTableGgxAlbedo or kTableSheenAlbedo, clamped at the edges.
@@ -305,9 +326,8 @@ INLINE float bsdfTableLookup(uint table, float cosTheta, float roughness) {
 INLINE float ggxAverageAlbedo(float roughness) {
     float y = clamp(roughness * float(kBsdfTableSize - 1u), 0.0f, float(kBsdfTableSize - 1u));
     uint y0 = min(uint(y), kBsdfTableSize - 2u);
-    return mix(kBsdfTables[kTableGgxAverageAlbedo + y0], kBsdfTables[kTableGgxAverageAlbedo + y0 + 1u], y - float(y0));
+    return mix(bsdfTableAt(kTableGgxAverageAlbedo + y0), bsdfTableAt(kTableGgxAverageAlbedo + y0 + 1u), y - float(y0));
 }
 
 SHARED_END
-#endif
 #endif

@@ -15,6 +15,7 @@
 
 #include "shared/gpu_types.glsl"
 #include "shared/constants.glsl"
+#define VKP_NO_BSDF_TABLES  // evaluates no BSDF (test_kernels.glsl includes it for its types)
 #include "test_kernels.glsl"
 
 layout(local_size_x = kTestGroupSize) in;

@@ -3,6 +3,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#define VKP_NO_BSDF_TABLES  // evaluates no BSDF (test_kernels.glsl includes it for its types)
 #include "test_kernels.glsl"
 
 layout(local_size_x = kTestGroupSize) in;

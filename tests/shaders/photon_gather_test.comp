@@ -4,6 +4,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/sampling.glsl"
+#define VKP_NO_BSDF_TABLES  // gathers photon power only
 #include "shared/bsdf.glsl"
 #include "test_kernels.glsl"
 #define PHOTON_GRID_BINDING kGatherTestGridBinding

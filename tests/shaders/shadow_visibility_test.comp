@@ -7,6 +7,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#define VKP_BSDF_TABLES_BINDING kSceneTablesBinding  // as scene_access.glsl: the scene's tables
 #include "test_kernels.glsl"
 #include "scene_access.glsl"
 #include "shared/halton.glsl"

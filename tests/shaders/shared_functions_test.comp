@@ -3,6 +3,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
+#define VKP_BSDF_TABLES_BINDING 2u  // kHarnessTablesBinding (test_kernels.glsl)
 #include "shared/harness_functions.glsl"
 #include "test_kernels.glsl"
 

@@ -3,9 +3,9 @@
 #ifndef VKP_TEST_KERNELS_GLSL
 #define VKP_TEST_KERNELS_GLSL
 #include "shared/compat.glsl"
+#include "shared/kernels/scene.glsl"
 #include "shared/bsdf.glsl"
 #include "shared/photon_grid.glsl"
-#include "shared/kernels/scene.glsl"
 SHARED_BEGIN
 
 const uint kTestGroupSize = 64u;
@@ -13,6 +13,7 @@ const uint kTestGroupSize = 64u;
 // shared_functions_test.comp, the shader unit harness: evaluates one shared function for `count` inputs.
 const uint kHarnessInputBinding = 0u;   // HarnessInput (shared/harness_functions.glsl)
 const uint kHarnessOutputBinding = 1u;  // uvec4
+const uint kHarnessTablesBinding = 2u;  // float: the BSDF's albedo tables (kBsdfTables)
 struct HarnessParams {
     uint count;
     uint function;                      // kHarness* (shared/harness_functions.glsl)
@@ -41,8 +42,8 @@ struct GatherTestParams {
 STATIC_ASSERT_SIZE(GatherTestParams, 112)
 
 // shadow_visibility_test.comp: the scene's 0..7, then; push constants: RasterDirectParams.
-const uint kShadowTestLightBinding = 8u;    // GpuLight: the raster lights
-const uint kShadowTestOutputBinding = 9u;   // uint[3] per pixel
+const uint kShadowTestLightBinding = kSceneBindingCount + 0u;    // GpuLight: the raster lights
+const uint kShadowTestOutputBinding = kSceneBindingCount + 1u;   // uint[3] per pixel
 
 // kernel_interface_test.comp: outputs[i] = inputs[i] * scale + offset.
 const uint kInterfaceTestInputBinding = 0u;
@@ -77,7 +78,7 @@ namespace vkp::gpu {
 
 struct HarnessKernel {
     static constexpr const char* kShader = "shared_functions_test.comp";
-    static constexpr uint32_t kBindingCount = kHarnessOutputBinding + 1u;
+    static constexpr uint32_t kBindingCount = kHarnessTablesBinding + 1u;
     static constexpr uint32_t kGroupSize = kTestGroupSize;
     using Push = HarnessParams;
 };

@@ -14,7 +14,8 @@ const uint kSceneLightsBinding = 4u;     // GpuLight
 const uint kSceneLightCdfBinding = 5u;   // float: inclusive prefix sums of the selection pdf
 const uint kSceneTexturesBinding = 6u;   // GpuTexture
 const uint kSceneTexelsBinding = 7u;     // uint: RGBA8 texels of all textures
-const uint kSceneBindingCount = 8u;
+const uint kSceneTablesBinding = 8u;     // float: the BSDF's albedo tables (shared/bsdf_tables.glsl kBsdfTables)
+const uint kSceneBindingCount = 9u;
 
 SHARED_END
 #endif
