@@ -23,6 +23,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/gltf_tangents.h"
 #include "gpu_scene/scene_buffers.h"
+#include "gpu_scene/texture_atlas.h"
 #include "gpu_scene/textured_emission.h"
 #include "test_scenes.h"
 
@@ -333,6 +334,59 @@ TEST_F(GltfFeatures, SamplerWrapModesAndFilters) {
         const float expected = filter == 9728 ? 0.0f : 0.8f * (2.0f * u - 0.5f);
         EXPECT_NEAR(pixel(image, x, 5), expected, 2e-3f) << "magFilter " << filter;
     }
+}
+
+TEST_F(GltfFeatures, TexturesBeyondOneStorageBufferLoadAndReadTheirTexels) {
+    // Nine unused 2048x2048 textures (144 MiB, more than lavapipe's 128 MiB maxStorageBufferRange,
+    // which once held every texel) before the marked one: the atlas puts it in its last layer.
+    const std::string image = pngUri(4, 4, markedImage(4, 4, {0, 0, 0, 255}, 0, 0, {255, 255, 255, 255}));
+    QuadDoc q;
+    q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", q.texture(image, {{"magFilter", 9728}})}};
+    Scene scene = load(q);
+    ASSERT_EQ(scene.textures.size(), 1u);
+    const Texture marked = scene.textures[0];
+    Texture filler;
+    filler.width = filler.height = 2048;
+    filler.rgba8.assign(size_t(2048) * 2048, 0xff808080u);
+    scene.textures.assign(9, filler);
+    for (size_t i = 0; i < 9; ++i) scene.textures[i].name = "filler" + std::to_string(i);
+    scene.textures.push_back(marked);
+    for (TextureView& view : scene.textureViews) view.image = 9;
+    Renderer renderer(test::gpu(), scene);
+    const TextureAtlas& atlas = renderer.gpuScene().arrays().textureAtlas;
+    EXPECT_TRUE(atlas.downscaled.empty());
+    EXPECT_GT(atlas.bytes(), uint64_t(128) << 20);
+    EXPECT_EQ(atlas.entries[9].layer, 9u);
+    FrameSettings s;
+    s.width = kSize;
+    s.height = kSize;
+    s.samplesPerPixel = 4;
+    s.seed = 1;
+    s.pixelCentres = true;
+    const ImageRgb a = renderer.render<PathIntegrator>(s).image;
+    EXPECT_NEAR(pixel(a, at(0.1f), at(0.1f)), 0.8f, 1e-3f);
+    EXPECT_NEAR(pixel(a, at(0.6f), at(0.9f)), 0.0f, 1e-3f);
+}
+
+TEST_F(GltfFeatures, MaxTextureSizeKeepsAKnownTexel) {
+    // 8x8 black with the 2x2 block at texels (2..3, 4..5) white; at most 4 texels a side it is
+    // 4x4 with texel (1, 2) white: u in [0.25, 0.5), v in [0.5, 0.75).
+    std::vector<uint8_t> rgba;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            const uint8_t v = (x == 2 || x == 3) && (y == 4 || y == 5) ? 255 : 0;
+            rgba.insert(rgba.end(), {v, v, v, 255});
+        }
+    QuadDoc q;
+    q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {
+        {"index", q.texture(pngUri(8, 8, rgba), {{"magFilter", 9728}})}};
+    Scene scene = load(q);
+    ASSERT_EQ(limitTextureSize(scene.textures, 4).size(), 1u);
+    ASSERT_EQ(scene.textures[0].width, 4u);
+    const ImageRgb a = pathTraced(scene);
+    EXPECT_NEAR(pixel(a, at(0.3f), at(0.6f)), 0.8f, 1e-3f);
+    EXPECT_NEAR(pixel(a, at(0.1f), at(0.6f)), 0.0f, 1e-3f);
+    EXPECT_NEAR(pixel(a, at(0.3f), at(0.8f)), 0.0f, 1e-3f);
 }
 
 // A second quad 1 above the floor, scaled by 1.2 so it covers the floor from the camera and the

@@ -130,14 +130,24 @@ TextureAtlas buildTextureAtlas(const std::vector<Texture>& textures, const Textu
             width = std::max(width, sizes[i].width);
             height = std::max(height, sizes[i].height);
         }
-        uint32_t layers = 0;
-        if (pack(sizes, width, height, limits.maxLayers, atlas.entries, layers) &&
-            uint64_t(width) * height * layers * 4 <= limits.maxBytes) {
-            atlas.width = width;
-            atlas.height = height;
-            atlas.layers = layers;
-            break;
+        // Layers as large as the largest texture; larger ones (up to maxLayerSize) when that needs
+        // more than maxLayers of them.
+        bool fits = false;
+        for (;;) {
+            uint32_t layers = 0;
+            const bool packed = pack(sizes, width, height, limits.maxLayers, atlas.entries, layers);
+            if (packed && uint64_t(width) * height * layers * 4 <= limits.maxBytes) {
+                atlas.width = width;
+                atlas.height = height;
+                atlas.layers = layers;
+                fits = true;
+                break;
+            }
+            if (packed || (width >= limits.maxLayerSize && height >= limits.maxLayerSize)) break;
+            uint32_t& grow = width <= height ? width : height;
+            grow = std::min(limits.maxLayerSize, grow * 2);
         }
+        if (fits) break;
         // The largest texture (by area) loses half its width and height.
         size_t largest = 0;
         for (size_t i = 1; i < textures.size(); ++i)
