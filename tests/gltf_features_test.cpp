@@ -455,6 +455,53 @@ TEST_F(GltfFeatures, AlphaMaskCutsOutAndBlendCoversByAlpha) {
     }
 }
 
+TEST_F(GltfFeatures, AlphaMaskInTheRasterPassLetsTheLightThrough) {
+    // --direct raster: alpha-tested triangles write no depth and cast no shadow volumes; shadow
+    // rays decide where they matter (shaders/raster_direct.comp). Same closed forms as the traced
+    // direct light above, seen by a perspective camera (the raster pass needs one) whose view at
+    // the floor is exactly the quad (tan(yfov / 2) = 1 / 2 from 2 above): texture coordinates map
+    // to pixels as before.
+    const auto perspective = [](QuadDoc& q) {
+        q.doc()["cameras"] = {{{"type", "perspective"},
+                               {"perspective", {{"yfov", 2.0 * std::atan(0.5)}, {"znear", 0.01}, {"aspectRatio", 1.0}}}}};
+    };
+    const auto raster = [](const Scene& scene) {
+        Renderer renderer(test::gpu(), scene);
+        FrameSettings s;
+        s.width = kSize;
+        s.height = kSize;
+        s.samplesPerPixel = 2;
+        s.seed = 1;
+        s.pixelCentres = true;
+        s.direct = DirectLight::Raster;
+        return renderer.render<PathIntegrator>(s).image;
+    };
+    const auto black = [](double alpha) { return json{{"baseColorFactor", {0, 0, 0, alpha}}}; };
+    {
+        QuadDoc q;  // alpha 0.3 below the cutoff 0.5: the camera and the light see through
+        perspective(q);
+        addOccluder(q, {{"alphaMode", "MASK"}, {"pbrMetallicRoughness", black(0.3)}});
+        expectEverywhere(raster(load(q)), 0.8f, 1e-3f, "masked out, raster direct light");
+    }
+    {
+        QuadDoc q;  // alpha 0.7 at cutoff 0.6: opaque and black
+        perspective(q);
+        addOccluder(q, {{"alphaMode", "MASK"}, {"alphaCutoff", 0.6}, {"pbrMetallicRoughness", black(0.7)}});
+        expectEverywhere(raster(load(q)), 0.0f, 1e-6f, "masked in, raster direct light");
+    }
+    {
+        QuadDoc q;  // the texture's left half alpha 0, right half alpha 1
+        json m = {{"alphaMode", "MASK"}, {"pbrMetallicRoughness", black(1.0)}};
+        m["pbrMetallicRoughness"]["baseColorTexture"] = {
+            {"index", q.texture(pngUri(2, 1, {0, 0, 0, 0, 0, 0, 0, 255}), {{"magFilter", 9728}})}};
+        perspective(q);
+        addOccluder(q, m);
+        const ImageRgb image = raster(load(q));
+        EXPECT_NEAR(pixel(image, at(0.2f), 10), 0.8f, 1e-3f);
+        EXPECT_NEAR(pixel(image, at(0.8f), 10), 0.0f, 1e-6f);
+    }
+}
+
 // A 1x1 normal map: tangent-space normal (r, g, b) / 255 * 2 - 1.
 std::string normalMapUri(uint8_t r, uint8_t g, uint8_t b) { return pngUri(1, 1, {r, g, b, 255}); }
 
