@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 
 #include "bvh/bvh.h"
@@ -241,6 +242,9 @@ TextureLimits deviceTextureLimits(const vk::Context& context, uint32_t maxTextur
     limits.maxLayerSize = device.maxSize;
     limits.maxLayers = device.maxLayers;
     limits.maxBytes = device.maxBytes;
+    // Test hook: a smaller budget, so tests reach the automatic downscale without huge textures.
+    if (const char* budget = std::getenv("VKPHOTON_TEXTURE_BUDGET_BYTES"))
+        limits.maxBytes = std::min<uint64_t>(limits.maxBytes, std::strtoull(budget, nullptr, 10));
     return limits;
 }
 

@@ -118,9 +118,10 @@ TextureAtlas buildTextureAtlas(const std::vector<Texture>& textures, const Textu
         while (std::max(current(i).width, current(i).height) > limits.maxLayerSize)
             halve(i, fmt::format("the device's largest image is {0}x{0}", limits.maxLayerSize));
     }
-    const std::string deviceReason = fmt::format(
-        "the device holds at most {} MiB of textures in {} layers of at most {}x{}", limits.maxBytes >> 20,
-        limits.maxLayers, limits.maxLayerSize, limits.maxLayerSize);
+    const std::string budget = limits.maxBytes >= (uint64_t(1) << 20) ? fmt::format("{} MiB", limits.maxBytes >> 20)
+                                                                         : fmt::format("{} bytes", limits.maxBytes);
+    const std::string deviceReason = fmt::format("the device holds at most {} of textures in {} layers of at most {}x{}",
+                                                 budget, limits.maxLayers, limits.maxLayerSize, limits.maxLayerSize);
     for (;;) {
         std::vector<TextureAtlasEntry> sizes(textures.size());
         uint32_t width = 1, height = 1;
