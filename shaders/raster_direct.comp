@@ -33,12 +33,19 @@ void rasterDirectLight() {
     vec3 sideNormal = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
 
     uint mask = masks[params.maskOffset + pixel];
+    // Alpha-tested triangles (MASK/BLEND) write no depth and cast no volumes (host/passes/
+    // shadow_volume_pass.cpp): the mask is exact for opaque occluders at opaque visible points.
+    // Where the visible point is itself alpha-tested the mask saw what lies behind it, and where
+    // the mask says lit an alpha-tested occluder may still block: a shadow ray decides there.
+    bool alphaSurface = params.alphaTested != 0u && triangles[v.hit.triangle].v0.w != 0.0f;
     vec3 sum = vec3(0.0f);
     for (uint k = 0u; k < params.lightCount; ++k) {
-        if (((mask >> (8u * k)) & 0xffu) == 0u) continue;  // in this light's shadow volume
+        bool lit = ((mask >> (8u * k)) & 0xffu) != 0u;
+        if (!lit && !alphaSurface) continue;  // in this light's shadow volume
         LightSample ls = rasterLightSample(rasterLights[params.firstLight + k], v.hit.position);
         vec3 wi = toLocal(ls.wi, v.t, v.b, v.n);
         if (wi.z <= 0.0f || dot(ls.wi, sideNormal) <= 0.0f) continue;  // light behind the surface
+        if (params.alphaTested != 0u && !lightVisible(v.hit.position, v.hit.geometricNormal, ls)) continue;
         sum += evalVertexBsdf(v, wi) * wi.z * ls.radiance;
     }
     direct[pixel] += vec4(sum, 0.0f);

@@ -20,22 +20,20 @@ layout(std430, set = 0, binding = kSceneLightsBinding) readonly buffer Lights { 
 layout(std430, set = 0, binding = kSceneLightCdfBinding) readonly buffer LightCdf { float lightCdf[]; };
 layout(std430, set = 0, binding = kSceneTexturesBinding) readonly buffer Textures { GpuTexture textures[]; };
 // binding kSceneTablesBinding: declared by shared/bsdf_tables.glsl (float bsdfTablesData[]).
-layout(std430, set = 0, binding = kSceneTexelsBinding) readonly buffer Texels { uint texels[]; };
+layout(std430, set = 0, binding = kSceneTexelsBinding) readonly buffer EnvironmentFloats { float environmentFloats[]; };
+layout(set = kSceneTextureSet, binding = kSceneTextureUnormBinding) uniform sampler2DArray sceneTexturesUnorm;
+layout(set = kSceneTextureSet, binding = kSceneTextureSrgbBinding) uniform sampler2DArray sceneTexturesSrgb;
 
 #include "shared/hash.glsl"
 #include "shared/photon.glsl"
 #include "shared/light_selection.glsl"
 #include "shared/spherical_triangle.glsl"
 
-float srgbToLinear(float c) {
-    return c <= 0.04045f ? c / 12.92f : pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
+// Texel (x, y) of a texture, from its atlas rectangle; sRGB textures through the sRGB view, which
+// decodes to linear.
 vec4 texelValue(GpuTexture tex, uint x, uint y) {
-    uint packed = texels[tex.offset + y * tex.width + x];
-    vec4 c = unpackUnorm4x8(packed);
-    if (tex.srgb != 0u) c = vec4(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b), c.a);
-    return c;
+    ivec3 p = ivec3(int((tex.origin & 0xffffu) + x), int((tex.origin >> 16u) + y), int(tex.layer));
+    return tex.srgb != 0u ? texelFetch(sceneTexturesSrgb, p, 0) : texelFetch(sceneTexturesUnorm, p, 0);
 }
 
 // Texel index i (any integer) on an axis of n texels under a glTF wrap mode.
@@ -112,8 +110,8 @@ bool alphaPasses(uint tri, float b1, float b2, vec3 org, vec3 dir) {
 #include "shared/intersect.glsl"
 #include "shared/bvh_traverse.glsl"
 
-// The environment map's floats live in the texel buffer after the textures' texels.
-#define ENV_FLOAT(i) uintBitsToFloat(texels[(i)])
+// The environment map's floats (binding kSceneTexelsBinding holds only them).
+#define ENV_FLOAT(i) environmentFloats[(i)]
 #include "shared/environment.glsl"
 
 // Distance by which rays leave a surface at p, scaled by p's magnitude (float spacing grows

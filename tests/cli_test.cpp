@@ -424,7 +424,7 @@ bool hasTemporaryFiles(const fs::path& dir) {
 // Every numeric flag of every subcommand, and how to reach a check of it (the integrator).
 const std::map<std::string, std::vector<std::string>> kNumericFlags = {
     {"render", {"--spp", "--width", "--height", "--seed", "--max-depth", "--time-limit", "--camera",
-                "--area-light-samples", "--max-memory", "--exposure", "--fov", "--env-strength", "--env-rotation", "--scene",
+                "--area-light-samples", "--max-memory", "--max-texture-size", "--exposure", "--fov", "--env-strength", "--env-rotation", "--scene",
                 "--light-photons", "--light-cell-k", "--light-cell-floor", "--light-cell-size"}},
     {"render --integrator photon", {"--photons", "--caustic-photons", "--gather-rays", "--gather-k", "--radiance-photons",
                                     "--radius", "--alpha", "--q", "--importons", "--deposit-epsilon", "--density-accuracy",
@@ -432,10 +432,10 @@ const std::map<std::string, std::vector<std::string>> kNumericFlags = {
     {"render --integrator guided", {"--guide-photons", "--guide-k", "--guide-adapt", "--guide-mix"}},
     {"render --frames 0:0", {"--fps", "--animation", "--photon-budget", "--photon-groups"}},
     {"photons", {"--photons", "--max-deposits", "--seed", "--importons", "--deposit-epsilon", "--density-accuracy",
-                 "--density-rounds", "--width", "--height", "--camera", "--max-memory", "--fov", "--env-strength",
-                 "--env-rotation", "--scene"}},
+                 "--density-rounds", "--width", "--height", "--camera", "--max-memory", "--max-texture-size", "--fov",
+                 "--env-strength", "--env-rotation", "--scene"}},
     {"guide-grid --pixel 1 1", {"--width", "--height", "--camera", "--seed", "--guide-photons", "--guide-k", "--max-memory",
-                                "--fov", "--env-strength", "--env-rotation", "--scene"}},
+                                "--max-texture-size", "--fov", "--env-strength", "--env-rotation", "--scene"}},
 };
 
 // Flags for which a value of the hostile list is valid: exposure is in stops, -1 EV halves.

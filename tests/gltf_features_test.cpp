@@ -5,6 +5,7 @@
 // y = +z, TEXCOORD u = (x + 1) / 2, v = (z + 1) / 2: the texture appears as it is stored). Each
 // pixel centre then sees radiance albedo * cos(theta) exactly: rho / pi * E * cos with E = pi.
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -23,6 +24,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/gltf_tangents.h"
 #include "gpu_scene/scene_buffers.h"
+#include "gpu_scene/texture_atlas.h"
 #include "gpu_scene/textured_emission.h"
 #include "test_scenes.h"
 
@@ -335,6 +337,79 @@ TEST_F(GltfFeatures, SamplerWrapModesAndFilters) {
     }
 }
 
+TEST_F(GltfFeatures, TexturesBeyondOneStorageBufferLoadAndReadTheirTexels) {
+    // Nine unused 2048x2048 textures (144 MiB, more than lavapipe's 128 MiB maxStorageBufferRange,
+    // which once held every texel) before the marked one: the atlas puts it in its last layer.
+    const std::string image = pngUri(4, 4, markedImage(4, 4, {0, 0, 0, 255}, 0, 0, {255, 255, 255, 255}));
+    QuadDoc q;
+    q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", q.texture(image, {{"magFilter", 9728}})}};
+    Scene scene = load(q);
+    ASSERT_EQ(scene.textures.size(), 1u);
+    const Texture marked = scene.textures[0];
+    Texture filler;
+    filler.width = filler.height = 2048;
+    filler.rgba8.assign(size_t(2048) * 2048, 0xff808080u);
+    scene.textures.assign(9, filler);
+    for (size_t i = 0; i < 9; ++i) scene.textures[i].name = "filler" + std::to_string(i);
+    scene.textures.push_back(marked);
+    for (TextureView& view : scene.textureViews) view.image = 9;
+    Renderer renderer(test::gpu(), scene);
+    const TextureAtlas& atlas = renderer.gpuScene().arrays().textureAtlas;
+    EXPECT_TRUE(atlas.downscaled.empty());
+    EXPECT_GT(atlas.bytes(), uint64_t(128) << 20);
+    EXPECT_EQ(atlas.entries[9].layer, 9u);
+    FrameSettings s;
+    s.width = kSize;
+    s.height = kSize;
+    s.samplesPerPixel = 4;
+    s.seed = 1;
+    s.pixelCentres = true;
+    const ImageRgb a = renderer.render<PathIntegrator>(s).image;
+    EXPECT_NEAR(pixel(a, at(0.1f), at(0.1f)), 0.8f, 1e-3f);
+    EXPECT_NEAR(pixel(a, at(0.6f), at(0.9f)), 0.0f, 1e-3f);
+}
+
+TEST_F(GltfFeatures, MaxTextureSizeKeepsAKnownTexel) {
+    // 8x8 black with the 2x2 block at texels (2..3, 4..5) white; at most 4 texels a side it is
+    // 4x4 with texel (1, 2) white: u in [0.25, 0.5), v in [0.5, 0.75).
+    std::vector<uint8_t> rgba;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            const uint8_t v = (x == 2 || x == 3) && (y == 4 || y == 5) ? 255 : 0;
+            rgba.insert(rgba.end(), {v, v, v, 255});
+        }
+    QuadDoc q;
+    q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {
+        {"index", q.texture(pngUri(8, 8, rgba), {{"magFilter", 9728}})}};
+    const auto expectKnownTexel = [](const ImageRgb& a) {
+        EXPECT_NEAR(pixel(a, at(0.3f), at(0.6f)), 0.8f, 1e-3f);
+        EXPECT_NEAR(pixel(a, at(0.1f), at(0.6f)), 0.0f, 1e-3f);
+        EXPECT_NEAR(pixel(a, at(0.3f), at(0.8f)), 0.0f, 1e-3f);
+    };
+    const Scene original = load(q);
+    Scene scene = original;
+    ASSERT_EQ(limitTextureSize(scene.textures, 4).size(), 1u);
+    ASSERT_EQ(scene.textures[0].width, 4u);
+    expectKnownTexel(pathTraced(scene));
+    // The device's budget (lowered by the test hook to 4x4 texels) downscales the same way by itself.
+    ASSERT_EQ(::setenv("VKPHOTON_TEXTURE_BUDGET_BYTES", "64", 1), 0);
+    {
+        Renderer renderer(test::gpu(), original);
+        ::unsetenv("VKPHOTON_TEXTURE_BUDGET_BYTES");
+        const TextureAtlas& atlas = renderer.gpuScene().arrays().textureAtlas;
+        ASSERT_EQ(atlas.downscaled.size(), 1u);
+        EXPECT_EQ(atlas.entries[0].width, 4u);
+        FrameSettings s;
+        s.width = kSize;
+        s.height = kSize;
+        s.samplesPerPixel = 4;
+        s.seed = 1;
+        s.pixelCentres = true;
+        expectKnownTexel(renderer.render<PathIntegrator>(s).image);
+    }
+    ::unsetenv("VKPHOTON_TEXTURE_BUDGET_BYTES");
+}
+
 // A second quad 1 above the floor, scaled by 1.2 so it covers the floor from the camera and the
 // light, with material 1 (black, so nothing it reflects adds to the image).
 void addOccluder(QuadDoc& q, json alphaMaterial) {
@@ -398,6 +473,53 @@ TEST_F(GltfFeatures, AlphaMaskCutsOutAndBlendCoversByAlpha) {
         p.causticPaths = 0;
         p.gatherRays = 1;
         EXPECT_NEAR(meanValue(renderer.render<PhotonIntegrator>(s, p).image), 0.2, 0.015);
+    }
+}
+
+TEST_F(GltfFeatures, AlphaMaskInTheRasterPassLetsTheLightThrough) {
+    // --direct raster: alpha-tested triangles write no depth and cast no shadow volumes; shadow
+    // rays decide where they matter (shaders/raster_direct.comp). Same closed forms as the traced
+    // direct light above, seen by a perspective camera (the raster pass needs one) whose view at
+    // the floor is exactly the quad (tan(yfov / 2) = 1 / 2 from 2 above): texture coordinates map
+    // to pixels as before.
+    const auto perspective = [](QuadDoc& q) {
+        q.doc()["cameras"] = {{{"type", "perspective"},
+                               {"perspective", {{"yfov", 2.0 * std::atan(0.5)}, {"znear", 0.01}, {"aspectRatio", 1.0}}}}};
+    };
+    const auto raster = [](const Scene& scene) {
+        Renderer renderer(test::gpu(), scene);
+        FrameSettings s;
+        s.width = kSize;
+        s.height = kSize;
+        s.samplesPerPixel = 2;
+        s.seed = 1;
+        s.pixelCentres = true;
+        s.direct = DirectLight::Raster;
+        return renderer.render<PathIntegrator>(s).image;
+    };
+    const auto black = [](double alpha) { return json{{"baseColorFactor", {0, 0, 0, alpha}}}; };
+    {
+        QuadDoc q;  // alpha 0.3 below the cutoff 0.5: the camera and the light see through
+        perspective(q);
+        addOccluder(q, {{"alphaMode", "MASK"}, {"pbrMetallicRoughness", black(0.3)}});
+        expectEverywhere(raster(load(q)), 0.8f, 1e-3f, "masked out, raster direct light");
+    }
+    {
+        QuadDoc q;  // alpha 0.7 at cutoff 0.6: opaque and black
+        perspective(q);
+        addOccluder(q, {{"alphaMode", "MASK"}, {"alphaCutoff", 0.6}, {"pbrMetallicRoughness", black(0.7)}});
+        expectEverywhere(raster(load(q)), 0.0f, 1e-6f, "masked in, raster direct light");
+    }
+    {
+        QuadDoc q;  // the texture's left half alpha 0, right half alpha 1
+        json m = {{"alphaMode", "MASK"}, {"pbrMetallicRoughness", black(1.0)}};
+        m["pbrMetallicRoughness"]["baseColorTexture"] = {
+            {"index", q.texture(pngUri(2, 1, {0, 0, 0, 0, 0, 0, 0, 255}), {{"magFilter", 9728}})}};
+        perspective(q);
+        addOccluder(q, m);
+        const ImageRgb image = raster(load(q));
+        EXPECT_NEAR(pixel(image, at(0.2f), 10), 0.8f, 1e-3f);
+        EXPECT_NEAR(pixel(image, at(0.8f), 10), 0.0f, 1e-6f);
     }
 }
 

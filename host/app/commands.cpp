@@ -25,6 +25,7 @@
 #include "render/terminations.h"
 #include "render/renderer.h"
 #include "gpu_scene/scene_buffers.h"
+#include "gpu_scene/texture_atlas.h"
 #include "scene/gltf_loader.h"
 #include "shared/sampling.glsl"
 #include "util/check_range.h"
@@ -54,7 +55,7 @@ uint64_t memoryAvailable() {
 }
 
 Scene loadScene(const std::filesystem::path& path, const vk::Context& context, double maxMemoryGiB, int sceneIndex,
-                const EnvironmentSettings& environment, bool quiet) {
+                const EnvironmentSettings& environment, bool quiet, uint32_t maxTextureSize) {
     GltfLimits limits = deviceSceneLimits(context, maxMemoryGiB);
     limits.sceneIndex = sceneIndex;
     Scene scene = loadGltf(path, limits);
@@ -69,6 +70,8 @@ Scene loadScene(const std::filesystem::path& path, const vk::Context& context, d
     if (scene.droppedDuplicateTriangles > 0)
         fmt::print(stderr, "warning: {}: dropped {} triangle(s) identical to an earlier one\n", printable(path.string()),
                    scene.droppedDuplicateTriangles);
+    for (const std::string& line : limitTextureSize(scene.textures, maxTextureSize))
+        fmt::print(stderr, "warning: texture downscaled: {} (--max-texture-size {})\n", printable(line), maxTextureSize);
     return scene;
 }
 
@@ -132,7 +135,8 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
 
     // The device first: its limits bound the scene before it is decoded.
     vk::Context context({options.validate, options.device});
-    Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet);
+    Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet,
+                              options.maxTextureSize);
     scene.energyCompensation = !options.noEnergyCompensation;
     const double loadSeconds = secondsSince(start);
     // Validate the camera choice before the expensive set-up.
@@ -220,7 +224,8 @@ int runPhotons(const PhotonsCommandOptions& options) {
     checkWritable(output);
     installInterruptHandler();
     vk::Context context({options.validate, options.device});
-    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet);
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet,
+                              options.maxTextureSize);
     FrameSettings frameSettings;  // what the importons see: camera, image, seed
     frameSettings.width = options.width;
     frameSettings.height = options.height;
@@ -275,7 +280,8 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
     checkWritable(output);
     installInterruptHandler();
     vk::Context context({options.validate, options.device});
-    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet);
+    const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet,
+                              options.maxTextureSize);
     const Camera camera =
         chooseCamera(scene, options.cameraIndex, float(options.width) / float(options.height), options.view);
     const GpuScene gpuScene(context, scene);

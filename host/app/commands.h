@@ -36,6 +36,7 @@ struct RenderCommandOptions {
     LightSampling lightSampling;
     bool lightSamplerAuto = false;
     double maxMemoryGiB = 0.0;          // --max-memory: 0 = the memory available
+    uint32_t maxTextureSize = 0;        // --max-texture-size: 0 = no limit
     int sceneIndex = -1;                // --scene: the glTF scene; -1: the file's default
     std::string device;
     bool validate = false;
@@ -66,6 +67,7 @@ struct PhotonsCommandOptions {
     ViewOverride view;
     EnvironmentSettings environment;   // --env, --env-strength, --env-rotation
     double maxMemoryGiB = 0.0;
+    uint32_t maxTextureSize = 0;        // --max-texture-size
     int sceneIndex = -1;
     std::string device;
     bool validate = false;
@@ -85,6 +87,7 @@ struct GuideGridCommandOptions {
     GuideSettings guide;
     EnvironmentSettings environment;   // --env, --env-strength, --env-rotation
     double maxMemoryGiB = 0.0;
+    uint32_t maxTextureSize = 0;        // --max-texture-size
     int sceneIndex = -1;
     std::string device;
     bool validate = false;

@@ -1,11 +1,26 @@
 #include "gpu_scene/gpu_scene.h"
 
+#include <cstdio>
+
+#include <fmt/format.h>
+
+#include "util/printable.h"
 #include "util/stopwatch.h"
 
 namespace vkp {
 
+namespace {
+SceneArrays buildAndWarn(const vk::Context& context, const Scene& scene, LightSampling lightSampling) {
+    SceneArrays arrays = buildSceneArrays(scene, lightSampling, deviceTextureLimits(context));
+    for (const std::string& line : arrays.textureAtlas.downscaled)
+        fmt::print(stderr, "warning: texture downscaled: {}\n", printable(line));
+    return arrays;
+}
+}  // namespace
+
 GpuScene::GpuScene(vk::Context& context, const Scene& scene, LightSampling lightSampling)
-    : m_context(context), m_scene(scene), m_arrays(buildSceneArrays(scene, lightSampling)), m_buffers([&] {
+    : m_context(context), m_scene(scene), m_arrays(buildAndWarn(context, scene, lightSampling)),
+      m_buffers([&] {
           const auto start = Clock::now();
           SceneBuffers buffers(context, m_arrays);
           m_uploadSeconds = secondsSince(start);

@@ -11,7 +11,8 @@ namespace vk { class Context; }
 class GpuScene {
 public:
     // Builds the BVH and uploads the scene; `scene` must outlive this object. `lightSampling`:
-    // how next-event estimation chooses and samples lights (--light-sampler).
+    // how next-event estimation chooses and samples lights (--light-sampler). Textures the
+    // device cannot hold are downscaled, with a warning on stderr each (texture_atlas.h).
     GpuScene(vk::Context& context, const Scene& scene, LightSampling lightSampling = {});
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <iterator>
 
@@ -74,7 +75,7 @@ void packVertexData(const Triangle& t, gpu::GpuTriangleShading& s) {
 
 }  // namespace
 
-SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling) {
+SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling, const TextureLimits& textureLimits) {
     SceneArrays a;
     const auto start = std::chrono::steady_clock::now();
     const Bvh bvh = buildBvh(scene.triangles);
@@ -187,17 +188,15 @@ SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling) {
         a.lightCdf, buildLightTree(a.lights, a.triangles, a.shading, a.materials, power),
         static_cast<uint32_t>(a.lights.size()), sampling);
 
-    std::vector<uint32_t> imageOffset;
-    for (const Texture& tex : scene.textures) {
-        imageOffset.push_back(static_cast<uint32_t>(a.texels.size()));
-        a.texels.insert(a.texels.end(), tex.rgba8.begin(), tex.rgba8.end());
-    }
+    a.textureAtlas = buildTextureAtlas(scene.textures, textureLimits);
     for (const TextureView& view : scene.textureViews) {
         const Texture& tex = scene.textures[view.image];
+        const TextureAtlasEntry& e = a.textureAtlas.entries[view.image];
         gpu::GpuTexture g{};
-        g.offset = imageOffset[view.image];
-        g.width = tex.width;
-        g.height = tex.height;
+        g.origin = e.x | (e.y << 16);
+        g.layer = e.layer;
+        g.width = e.width;
+        g.height = e.height;
         g.srgb = tex.srgb ? 1u : 0u;
         g.uvRow0 = glm::vec4(view.uvRow0, 0.0f);
         g.uvRow1 = glm::vec4(view.uvRow1, 0.0f);
@@ -207,12 +206,8 @@ SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling) {
         g.magFilter = view.nearest ? gpu::kTextureFilterNearest : gpu::kTextureFilterLinear;
         a.textures.push_back(g);
     }
-    if (!environmentData.empty()) {
-        a.lights.back().envOffset = static_cast<uint32_t>(a.texels.size());
-        const size_t first = a.texels.size();
-        a.texels.resize(first + environmentData.size());
-        std::memcpy(a.texels.data() + first, environmentData.data(), environmentData.size() * sizeof(float));
-    }
+    if (!environmentData.empty()) a.lights.back().envOffset = 0;
+    a.environment = std::move(environmentData);
     return a;
 }
 
@@ -241,11 +236,27 @@ SceneBuffers::SceneBuffers(vk::Context& context, const SceneArrays& a)
       m_lights(vk::makeStorageBuffer(context, "lights", a.lights)),
       m_lightCdf(vk::makeStorageBuffer(context, "light CDF", a.lightCdf)),
       m_textures(vk::makeStorageBuffer(context, "textures", a.textures)),
-      m_texels(vk::makeStorageBuffer(context, "texels", a.texels)),
+      m_texels(vk::makeStorageBuffer(context, "environment map", a.environment)),
       m_tables(makeBsdfTablesBuffer(context)),
+      m_textureArray(std::make_unique<vk::TextureArray>(context, "texture atlas", a.textureAtlas.width,
+                                                        a.textureAtlas.height, a.textureAtlas.layers,
+                                                        a.textureAtlas.texels)),
       m_lightCount(static_cast<uint32_t>(a.lights.size())) {}
 
-std::vector<const vk::Buffer*> SceneBuffers::bindings() const {
+TextureLimits deviceTextureLimits(const vk::Context& context, uint32_t maxTextureSize) {
+    const vk::TextureArrayLimits device = vk::textureArrayLimits(context);
+    TextureLimits limits;
+    limits.maxTextureSize = maxTextureSize;
+    limits.maxLayerSize = device.maxSize;
+    limits.maxLayers = device.maxLayers;
+    limits.maxBytes = device.maxBytes;
+    // Test hook: a smaller budget, so tests reach the automatic downscale without huge textures.
+    if (const char* budget = std::getenv("VKPHOTON_TEXTURE_BUDGET_BYTES"))
+        limits.maxBytes = std::min<uint64_t>(limits.maxBytes, std::strtoull(budget, nullptr, 10));
+    return limits;
+}
+
+vk::KernelBindings SceneBuffers::bindings() const {
     std::vector<const vk::Buffer*> b(gpu::kSceneBindingCount);
     b[gpu::kSceneTrianglesBinding] = &m_triangles;
     b[gpu::kSceneBvhNodesBinding] = &m_nodes;
@@ -256,7 +267,7 @@ std::vector<const vk::Buffer*> SceneBuffers::bindings() const {
     b[gpu::kSceneTexturesBinding] = &m_textures;
     b[gpu::kSceneTexelsBinding] = &m_texels;
     b[gpu::kSceneTablesBinding] = &m_tables;
-    return b;
+    return {b, m_textureArray.get()};
 }
 
 void SceneBuffers::replaceLightSelection(vk::Context& context, const std::vector<float>& data) {
@@ -265,7 +276,8 @@ void SceneBuffers::replaceLightSelection(vk::Context& context, const std::vector
 
 uint64_t SceneBuffers::bytes() const {
     uint64_t total = 0;
-    for (const vk::Buffer* b : bindings()) total += b->size();
+    for (const vk::Buffer* b : bindings().buffers) total += b->size();
+    total += m_textureArray->bytes();
     return total;
 }
 

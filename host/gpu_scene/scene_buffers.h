@@ -7,11 +7,16 @@
 #include <cstdint>
 #include <vector>
 
+#include <memory>
+
 #include "gpu_scene/light_tree.h"
+#include "gpu_scene/texture_atlas.h"
 #include "scene/scene.h"
 #include "shared/gpu_types.glsl"
 #include "shared/kernels/scene.glsl"
 #include "vk/buffer.h"
+#include "vk/compute_kernel.h"
+#include "vk/texture_array.h"
 
 namespace vkp {
 
@@ -25,7 +30,8 @@ struct SceneArrays {
     std::vector<float> lightCdf;                    // inclusive prefix sums of selectPdf, last = 1; then
                                                     // the selection data (shared/light_selection.glsl)
     std::vector<gpu::GpuTexture> textures;
-    std::vector<uint32_t> texels;
+    TextureAtlas textureAtlas;                      // the textures' texels (texture_atlas.h)
+    std::vector<float> environment;                 // the environment map's floats (binding kSceneTexelsBinding)
     double totalLightPower = 0.0;                   // watts, sum over all lights
     double bvhBuildSeconds = 0.0;
     LightSampling lightSampling;                    // what lightCdf's header selects (--light-sampler)
@@ -39,7 +45,12 @@ struct SceneArrays {
 // sphere) by default; `sampling` picks the light-selection mode next-event estimation uses and how
 // it samples triangles (gpu_scene/light_tree.h); the light BVH is built for every mode. Each emissive triangle's
 // GpuTriangle.v1.w holds its light index (as a float), -1 elsewhere.
-SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling = {});
+// Textures are packed into an atlas within `textureLimits` (downscaled where needed: the
+// atlas's `downscaled` lists them; callers warn).
+SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling = {}, const TextureLimits& textureLimits = {});
+
+// The limits of `context`'s device for the texture atlas, with the user's --max-texture-size.
+TextureLimits deviceTextureLimits(const vk::Context& context, uint32_t maxTextureSize = 0);
 
 // The most triangles a device can hold: its largest per-triangle buffer (the shading
 // attributes) within maxStorageBufferRange; the BVH needs fewer bytes per triangle.
@@ -57,8 +68,9 @@ class SceneBuffers {
 public:
     SceneBuffers(vk::Context& context, const SceneArrays& arrays);
 
-    // The scene buffers in binding order (kSceneBindingCount of them, from binding 0).
-    std::vector<const vk::Buffer*> bindings() const;
+    // The scene buffers in binding order (kSceneBindingCount of them, from binding 0) and the
+    // texture array (set gpu::kSceneTextureSet).
+    vk::KernelBindings bindings() const;
     uint32_t lightCount() const { return m_lightCount; }
     // Uploads new light-selection data (the CDF, then shared/light_selection.glsl's layout).
     void replaceLightSelection(vk::Context& context, const std::vector<float>& data);
@@ -72,8 +84,9 @@ private:
     vk::Buffer m_lights;
     vk::Buffer m_lightCdf;
     vk::Buffer m_textures;
-    vk::Buffer m_texels;
+    vk::Buffer m_texels;                             // the environment map's floats
     vk::Buffer m_tables;  // the BSDF's albedo tables (shared/bsdf_tables.glsl kBsdfTables), binding kSceneTablesBinding
+    std::unique_ptr<vk::TextureArray> m_textureArray;
     uint32_t m_lightCount = 0;
 };
 

@@ -12,7 +12,9 @@ RasterDirectPass::RasterDirectPass(vk::Context& context, const SceneArrays& arra
                                    VolumeGeometry geometry)
     : m_width(width), m_height(height), m_shadows(context, arrays.triangles, rasterLights, width, height, geometry),
       m_direct(context, "raster direct", uint64_t(width) * height * sizeof(glm::vec4), vk::kStorageUsage),
-      m_lighting(context) {
+      m_lighting(context),
+      m_alphaTested(std::any_of(arrays.triangles.begin(), arrays.triangles.end(),
+                                [](const gpu::GpuTriangle& t) { return t.v0.w != 0.0f; })) {
     m_lighting.bind(scene.bindings());
     m_lighting.bind(gpu::kRasterDirectLightBinding, m_shadows.lights());
     m_lighting.bind(gpu::kRasterDirectMaskBinding, m_shadows.masks());
@@ -32,6 +34,7 @@ void RasterDirectPass::record(VkCommandBuffer cmd, const gpu::GpuCamera& camera,
         params.firstLight = pass * gpu::kLightsPerMaskPass;
         params.lightCount = std::min(gpu::kLightsPerMaskPass, m_shadows.lightCount() - params.firstLight);
         params.maskOffset = static_cast<uint32_t>(pass * pixels);
+        params.alphaTested = m_alphaTested ? 1u : 0u;
         m_lighting.record(cmd, pixels, params);
         vk::computeBarrier(cmd);  // the next pass adds to the same pixels
     }

@@ -35,6 +35,7 @@ private:
     ShadowVolumePass m_shadows;
     vk::Buffer m_direct;
     vk::Kernel<gpu::RasterDirectKernel> m_lighting;
+    bool m_alphaTested;  // the scene has MASK/BLEND triangles (RasterDirectParams::alphaTested)
 };
 
 // Near plane distance of the raster camera: small against the scene so nothing in view is clipped.

@@ -10,6 +10,15 @@ namespace {
 
 constexpr VkFormat kMaskFormat = VK_FORMAT_R8G8B8A8_UNORM;
 
+// The scene as the raster pass sees it: alpha-tested triangles (glTF MASK/BLEND, v0.w != 0, whose
+// cut-outs only the traced rays see) collapsed to a point, so they neither write depth nor cast
+// shadow volumes; shaders/raster_direct.comp traces shadow rays where they matter.
+std::vector<gpu::GpuTriangle> opaqueTriangles(std::vector<gpu::GpuTriangle> triangles) {
+    for (gpu::GpuTriangle& t : triangles)
+        if (t.v0.w != 0.0f) t.v1 = t.v2 = t.v0;
+    return triangles;
+}
+
 std::vector<glm::vec4> prepassPositions(const std::vector<gpu::GpuShadowTriangle>& tris) {
     std::vector<glm::vec4> out;
     out.reserve(tris.size() * 3 + 1);
@@ -90,7 +99,7 @@ ShadowVolumePass::ShadowVolumePass(vk::Context& context, const std::vector<gpu::
       m_lightCount(static_cast<uint32_t>(rasterLights.size())),
       m_passCount((m_lightCount + gpu::kLightsPerMaskPass - 1) / gpu::kLightsPerMaskPass),
       m_geometry(geometry),
-      m_shadowTriangles(buildShadowTriangles(triangles)),
+      m_shadowTriangles(buildShadowTriangles(opaqueTriangles(triangles))),
       m_depthFormat(vk::pickDepthStencilFormat(context)),
       m_depth(context, "raster depth-stencil", width, height, m_depthFormat,
               VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,

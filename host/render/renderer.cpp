@@ -67,6 +67,14 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     stats.set("scene_stats.triangles", m_scene.arrays().triangles.size());
     stats.set("scene_stats.lights", m_scene.arrays().lights.size());
     stats.set("scene_stats.gpuBytes", m_scene.buffers().bytes());
+    const TextureAtlas& atlas = m_scene.arrays().textureAtlas;
+    uint64_t texelBytes = 0;
+    for (const TextureAtlasEntry& e : atlas.entries) texelBytes += uint64_t(e.width) * e.height * 4;
+    stats.set("scene_stats.textures", atlas.entries.size());
+    stats.set("scene_stats.textureAtlasBytes", atlas.bytes());      // the array image: layers x width x height x 4
+    stats.set("scene_stats.textureTexelBytes", texelBytes);         // the textures' own texels (after downscaling)
+    stats.set("scene_stats.textureAtlasLayers", atlas.layers);
+    stats.set("scene_stats.texturesDownscaled", atlas.downscaled.size());
     const LightTreeStats& tree = m_scene.arrays().lightTree;
     stats.set("light_sampler.mode", std::string(lightSamplerName(m_scene.arrays().lightSampling.sampler)));
     stats.set("light_sampler.triangleSampling",

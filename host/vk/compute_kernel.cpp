@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "shared/kernels/scene.glsl"
 #include "shared/kernels/terminations.glsl"
 #include "util/errors.h"
 #include "vk/buffer.h"
@@ -9,6 +10,7 @@
 #include "vk/context.h"
 #include "vk/shader_reflection.h"
 #include "vk/shader_registry.h"
+#include "vk/texture_array.h"
 
 namespace vkp::vk {
 
@@ -19,7 +21,9 @@ ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
     const uint32_t bufferCount = m_interface.bindingCount;
     const uint32_t pushBytes = m_interface.pushBytes;
     const auto code = shaderCode(name);
-    const bool terminations = checkKernelInterface(m_interface, code).terminationCounters;
+    const ShaderInterface declared = checkKernelInterface(m_interface, code);
+    const bool terminations = declared.terminationCounters;
+    const bool textures = declared.sceneTextures;
     VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     moduleInfo.codeSize = code.size_bytes();
     moduleInfo.pCode = code.data();
@@ -48,6 +52,23 @@ ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
               "creating a set layout");
         setLayouts.push_back(m_terminationLayout);
     }
+    if (textures) {  // set gpu::kSceneTextureSet == 2: the scene's texture array (two views)
+        static_assert(gpu::kSceneTextureSet == 2 && gpu::kSceneTextureUnormBinding == 0 &&
+                      gpu::kSceneTextureSrgbBinding == 1);
+        if (!terminations) {
+            VkDescriptorSetLayoutCreateInfo emptyInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+            check(vkCreateDescriptorSetLayout(device, &emptyInfo, nullptr, &m_emptyLayout), "creating a set layout");
+            setLayouts.push_back(m_emptyLayout);
+        }
+        VkDescriptorSetLayoutBinding views[2]{};
+        for (uint32_t i = 0; i < 2; ++i)
+            views[i] = {i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+        VkDescriptorSetLayoutCreateInfo texturesInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+        texturesInfo.bindingCount = 2;
+        texturesInfo.pBindings = views;
+        check(vkCreateDescriptorSetLayout(device, &texturesInfo, nullptr, &m_textureLayout), "creating a set layout");
+        setLayouts.push_back(m_textureLayout);
+    }
 
     VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
     VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -68,11 +89,12 @@ ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
     check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &m_pipeline),
           fmt::format("creating the compute pipeline {}", name));
 
-    VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, std::max(1u, bufferCount + 1u)};
+    const VkDescriptorPoolSize poolSizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, std::max(1u, bufferCount + 1u)},
+                                               {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2u}};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 2;
-    poolInfo.poolSizeCount = 1;
-    poolInfo.pPoolSizes = &poolSize;
+    poolInfo.maxSets = 3;
+    poolInfo.poolSizeCount = textures ? 2 : 1;
+    poolInfo.pPoolSizes = poolSizes;
     check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &m_pool), "creating a descriptor pool");
     VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     allocInfo.descriptorPool = m_pool;
@@ -91,6 +113,10 @@ ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
         write.pBufferInfo = &info;
         vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
     }
+    if (textures) {
+        allocInfo.pSetLayouts = &m_textureLayout;
+        check(vkAllocateDescriptorSets(device, &allocInfo, &m_textureSet), "allocating a descriptor set");
+    }
 }
 
 ComputeKernel::~ComputeKernel() {
@@ -100,6 +126,8 @@ ComputeKernel::~ComputeKernel() {
     vkDestroyPipelineLayout(device, m_pipelineLayout, nullptr);
     vkDestroyDescriptorSetLayout(device, m_setLayout, nullptr);
     if (m_terminationLayout) vkDestroyDescriptorSetLayout(device, m_terminationLayout, nullptr);
+    if (m_emptyLayout) vkDestroyDescriptorSetLayout(device, m_emptyLayout, nullptr);
+    if (m_textureLayout) vkDestroyDescriptorSetLayout(device, m_textureLayout, nullptr);
     vkDestroyShaderModule(device, m_module, nullptr);
 }
 
@@ -121,10 +149,36 @@ void ComputeKernel::bind(const std::vector<const Buffer*>& buffers, uint32_t fir
     for (uint32_t i = 0; i < buffers.size(); ++i) bind(first + i, *buffers[i]);
 }
 
+void ComputeKernel::bind(const KernelBindings& bindings, uint32_t first) {
+    bind(bindings.buffers, first);
+    if (bindings.textures) bind(*bindings.textures);
+}
+
+void ComputeKernel::bind(const TextureArray& textures) {
+    if (!m_textureSet) return;
+    const VkDescriptorImageInfo infos[2] = {
+        {textures.sampler(), textures.unormView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {textures.sampler(), textures.srgbView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
+    VkWriteDescriptorSet writes[2]{};
+    for (uint32_t i = 0; i < 2; ++i) {
+        writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        writes[i].dstSet = m_textureSet;
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        writes[i].pImageInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(m_context.device(), 2, writes, 0, nullptr);
+    m_texturesBound = true;
+}
+
 void ComputeKernel::record(VkCommandBuffer cmd, uint32_t groups, const void* push, uint32_t pushBytes,
                            uint32_t firstGroup) const {
     for (uint32_t i = 0; i < m_interface.bindingCount; ++i)
         if (!m_bound[i]) throw RuntimeError(fmt::format("{}: binding {} was never bound", m_interface.shader, i));
+    if (m_textureSet && !m_texturesBound)
+        throw RuntimeError(fmt::format("{}: the scene textures (set {}) were never bound", m_interface.shader,
+                                       gpu::kSceneTextureSet));
     if (pushBytes != m_interface.pushBytes)
         throw RuntimeError(fmt::format("{}: push constants are {} bytes, expected {}", m_interface.shader,
                                        pushBytes, m_interface.pushBytes));
@@ -133,6 +187,9 @@ void ComputeKernel::record(VkCommandBuffer cmd, uint32_t groups, const void* pus
     if (m_terminationSet)
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipelineLayout, gpu::kTerminationSet, 1,
                                 &m_terminationSet, 0, nullptr);
+    if (m_textureSet)
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipelineLayout, gpu::kSceneTextureSet, 1,
+                                &m_textureSet, 0, nullptr);
     if (pushBytes) vkCmdPushConstants(cmd, m_pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes, push);
     if (groups && firstGroup) vkCmdDispatchBase(cmd, firstGroup, 0, 0, groups, 1, 1);
     else if (groups) vkCmdDispatch(cmd, groups, 1, 1);

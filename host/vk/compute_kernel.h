@@ -17,6 +17,15 @@ namespace vkp::vk {
 
 class Buffer;
 class Context;
+class TextureArray;
+
+// What a resource owner binds to a kernel at once (SceneBuffers::bindings()): storage buffers at
+// bindings first, first + 1, ... of set 0 and, for kernels that declare it, the texture array of
+// set gpu::kSceneTextureSet (kernels that do not read textures ignore it).
+struct KernelBindings {
+    std::vector<const Buffer*> buffers;
+    const TextureArray* textures = nullptr;
+};
 
 // Items first .. first + count - 1 of a dispatch (a window of pixels: --tile, --crop). Recorded
 // as the workgroups that cover them (vkCmdDispatchBase), so gl_GlobalInvocationID is the item's
@@ -45,6 +54,10 @@ public:
     void bind(uint32_t binding, const Buffer& buffer);
     // Points bindings first, first + 1, ... at `buffers`.
     void bind(const std::vector<const Buffer*>& buffers, uint32_t first = 0);
+    // Points the buffers as above and, when the shader declares them, the scene textures.
+    void bind(const KernelBindings& bindings, uint32_t first = 0);
+    // Points set gpu::kSceneTextureSet at `textures` (ignored when the shader declares no textures).
+    void bind(const TextureArray& textures);
 
     // Dispatches `groups` 1-D workgroups, from workgroup `firstGroup` on, after pushing
     // `pushBytes` of push constants.
@@ -79,6 +92,12 @@ private:
     // The shared silent-termination counters (set gpu::kTerminationSet), when the shader declares them.
     VkDescriptorSetLayout m_terminationLayout = VK_NULL_HANDLE;
     VkDescriptorSet m_terminationSet = VK_NULL_HANDLE;
+    // The scene textures (set gpu::kSceneTextureSet), when the shader declares them; set 1 is an
+    // empty layout if the shader has no termination counters.
+    VkDescriptorSetLayout m_emptyLayout = VK_NULL_HANDLE;
+    VkDescriptorSetLayout m_textureLayout = VK_NULL_HANDLE;
+    VkDescriptorSet m_textureSet = VK_NULL_HANDLE;
+    bool m_texturesBound = false;
 };
 
 // Makes compute-shader writes visible to later compute reads and transfers.

@@ -22,6 +22,8 @@ public:
     void bind(uint32_t binding, const Buffer& buffer) { m_kernel.bind(binding, buffer); }
     // Points bindings first, first + 1, ... at `buffers`.
     void bind(const std::vector<const Buffer*>& buffers, uint32_t first = 0) { m_kernel.bind(buffers, first); }
+    // Points the buffers as above and the scene textures (kernels that read them).
+    void bind(const KernelBindings& bindings, uint32_t first = 0) { m_kernel.bind(bindings, first); }
 
     // Records one invocation per item, in workgroups of K::kGroupSize (none when items is 0).
     void record(VkCommandBuffer cmd, uint64_t items, const Push& push) const {

@@ -7,6 +7,7 @@
 #include <fmt/ranges.h>
 #include <spirv_cross_c.h>
 
+#include "shared/kernels/scene.glsl"
 #include "shared/kernels/terminations.glsl"
 #include "util/errors.h"
 
@@ -89,9 +90,15 @@ ShaderInterface reflectComputeShader(std::string_view name, std::span<const uint
                                     out.storageBufferBindings.end());
     for (const OtherResource& other : kOtherResources) {
         spvc_resources_get_resource_list_for_type(resources, other.type, &list, &count);
-        for (size_t i = 0; i < count; ++i)
-            out.unbindable.push_back(fmt::format("{} '{}' (binding {})", other.what, list[i].name,
-                                                 spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationBinding)));
+        for (size_t i = 0; i < count; ++i) {
+            const unsigned set = spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationDescriptorSet);
+            const unsigned binding = spvc_compiler_get_decoration(compiler, list[i].id, SpvDecorationBinding);
+            if (other.type == SPVC_RESOURCE_TYPE_SAMPLED_IMAGE && set == gpu::kSceneTextureSet &&
+                (binding == gpu::kSceneTextureUnormBinding || binding == gpu::kSceneTextureSrgbBinding))
+                out.sceneTextures = true;
+            else
+                out.unbindable.push_back(fmt::format("{} '{}' (binding {})", other.what, list[i].name, binding));
+        }
     }
 
     spvc_resources_get_resource_list_for_type(resources, SPVC_RESOURCE_TYPE_PUSH_CONSTANT, &list, &count);

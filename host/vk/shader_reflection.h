@@ -26,6 +26,10 @@ struct ShaderInterface {
     // Declares the shared silent-termination counters (set gpu::kTerminationSet, binding
     // gpu::kTerminationBinding), which vk::ComputeKernel binds to the context's buffer itself.
     bool terminationCounters = false;
+    // Declares the scene's texture array (set gpu::kSceneTextureSet, bindings
+    // kSceneTextureUnormBinding and kSceneTextureSrgbBinding: combined image samplers), which
+    // vk::ComputeKernel binds from a vk::TextureArray.
+    bool sceneTextures = false;
 };
 
 // Reflects `spirv` (a compute shader); throws RuntimeError naming `name` if it cannot be parsed.

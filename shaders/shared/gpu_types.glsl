@@ -131,21 +131,26 @@ const uint kTextureWrapMirrored = 2u;
 const uint kTextureFilterLinear = 0u;
 const uint kTextureFilterNearest = 1u;
 
-// Texture views (scene.h TextureView): an image in the buffer of packed RGBA8 texels, the
-// TEXCOORD set, the KHR_texture_transform and the sampler. Materials index these.
+// Texture views (scene.h TextureView): a rectangle of the texture atlas (the array image of
+// shared/kernels/scene.glsl, host/gpu_scene/texture_atlas.h), the TEXCOORD set, the
+// KHR_texture_transform and the sampler. Materials index these.
 struct GpuTexture {
-    uint offset;            // first texel in the texel buffer
-    uint width;
+    uint origin;            // the texture's top-left texel in its atlas layer: x | (y << 16)
+    uint width;             // as packed (after any downscaling)
     uint height;
-    uint srgb;              // 1: colour data encoded with the sRGB transfer function
+    uint srgb;              // 1: colour data encoded with the sRGB transfer function (read via the sRGB view)
     vec4 uvRow0;            // uv' = (dot(uvRow0.xyz, (u, v, 1)), dot(uvRow1.xyz, (u, v, 1)))
     vec4 uvRow1;
     uint texCoord;          // 0: TEXCOORD_0, 1: TEXCOORD_1
     uint wrapS;             // kTextureWrap*
     uint wrapT;
     uint magFilter;         // kTextureFilter* (magnification)
+    uint layer;             // the atlas layer
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
-STATIC_ASSERT_SIZE(GpuTexture, 64)
+STATIC_ASSERT_SIZE(GpuTexture, 80)
 
 struct GpuCamera {
     vec3 position;

@@ -62,7 +62,7 @@ struct RasterDirectParams {
     uint firstLight;        // raster light index of mask channel 0 of this pass
     uint lightCount;        // lights in this pass
     uint maskOffset;        // first uint of this pass's mask in the mask buffer
-    uint pad0;
+    uint alphaTested;       // 1: the scene has alpha-tested triangles, which cast no volumes: shadow rays decide
     uint pad1;
     uint pad2;
 };

@@ -13,9 +13,15 @@ const uint kSceneMaterialsBinding = 3u;  // GpuMaterial
 const uint kSceneLightsBinding = 4u;     // GpuLight
 const uint kSceneLightCdfBinding = 5u;   // float: inclusive prefix sums of the selection pdf
 const uint kSceneTexturesBinding = 6u;   // GpuTexture
-const uint kSceneTexelsBinding = 7u;     // uint: RGBA8 texels of all textures
+const uint kSceneTexelsBinding = 7u;     // float: the environment map (textures are images: below)
 const uint kSceneTablesBinding = 8u;     // float: the BSDF's albedo tables (shared/bsdf_tables.glsl kBsdfTables)
 const uint kSceneBindingCount = 9u;
+
+// The textures: one RGBA8 2-D array image (host/gpu_scene/texture_atlas.h), read with texelFetch
+// through two views, in a descriptor set of their own (set 1 holds the termination counters).
+const uint kSceneTextureSet = 2u;
+const uint kSceneTextureUnormBinding = 0u;  // sampler2DArray, R8G8B8A8_UNORM view
+const uint kSceneTextureSrgbBinding = 1u;   // sampler2DArray, R8G8B8A8_SRGB view (decoded on read)
 
 SHARED_END
 #endif
