@@ -1,11 +1,13 @@
 // GPU BVH traversal (shaders/shared/bvh_traverse.glsl, run by tests/shaders/bvh_trace_test.comp)
 // against brute force over all triangles and against the same traversal on the host, on a shipped
 // scene, and shadow rays that must not be occluded by the surfaces they start and end on.
+#include <cstring>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "bvh/bvh.h"
+#include "bvh/scene_bvh.h"
 #include "gpu_test_support.h"
 #include "scene/gltf_loader.h"
 #include "shared/intersect.glsl"
@@ -30,24 +32,40 @@ struct TestHit {         // tests/shaders/bvh_trace_test.comp
 static_assert(sizeof(TestHit) == 20);
 constexpr uint32_t kNoTriangle = 0xffffffffu;
 
-std::vector<TestHit> traceOnGpu(const Bvh& bvh, const std::vector<gpu::GpuTriangle>& tris,
-                                const std::vector<TestRay>& rays) {
+// Traces `rays` through the arrays on the GPU (instances too, when the arrays have them).
+std::vector<TestHit> traceOnGpu(const gpu::BvhArrays& arrays, const std::vector<TestRay>& rays) {
     vk::Context& context = test::gpu();
+    std::vector<gpu::GpuBvhNode> nodes(arrays.nodes.begin(), arrays.nodes.end());
+    std::vector<gpu::GpuTriangle> tris(arrays.triangles.begin(), arrays.triangles.end());
+    std::vector<uint8_t> instanceBytes(sizeof(gpu::GpuInstanceHeader) + arrays.instances.size_bytes());
+    std::memcpy(instanceBytes.data(), &arrays.header, sizeof(gpu::GpuInstanceHeader));
+    if (!arrays.instances.empty())
+        std::memcpy(instanceBytes.data() + sizeof(gpu::GpuInstanceHeader), arrays.instances.data(),
+                    arrays.instances.size_bytes());
     vk::Buffer rayBuffer = vk::makeStorageBuffer(context, "rays", rays);
-    vk::Buffer nodeBuffer = vk::makeStorageBuffer(context, "nodes", bvh.nodes);
+    vk::Buffer nodeBuffer = vk::makeStorageBuffer(context, "nodes", nodes);
     vk::Buffer triBuffer = vk::makeStorageBuffer(context, "triangles", tris);
+    vk::Buffer instanceBuffer = vk::makeStorageBuffer(context, "instances", instanceBytes);
     vk::Buffer hitBuffer(context, "hits", rays.size() * sizeof(TestHit), vk::kStorageUsage);
     vk::Kernel<gpu::BvhTestKernel> kernel(context);
     kernel.bind(gpu::kBvhTestRayBinding, rayBuffer);
     kernel.bind(gpu::kBvhTestNodeBinding, nodeBuffer);
     kernel.bind(gpu::kBvhTestTriangleBinding, triBuffer);
     kernel.bind(gpu::kBvhTestHitBinding, hitBuffer);
+    kernel.bind(gpu::kBvhTestInstanceBinding, instanceBuffer);
     const auto count = static_cast<uint32_t>(rays.size());
     context.submitAndWait([&](VkCommandBuffer cmd) {
         kernel.record(cmd, count, count);
         vk::computeToHostBarrier(cmd);
     });
     return hitBuffer.download<TestHit>();
+}
+
+std::vector<TestHit> traceOnGpu(const Bvh& bvh, const std::vector<gpu::GpuTriangle>& tris,
+                                const std::vector<TestRay>& rays) {
+    gpu::BvhArrays arrays{bvh.nodes, tris};
+    arrays.header.staticTriangles = static_cast<uint32_t>(tris.size());
+    return traceOnGpu(arrays, rays);
 }
 
 RayHit bruteForce(const std::vector<gpu::GpuTriangle>& tris, glm::vec3 org, glm::vec3 dir, float tMax) {

@@ -24,7 +24,7 @@ struct GatherBenchParams {
 STATIC_ASSERT_SIZE(GatherBenchParams, 36)
 
 // ray_throughput.comp: the scene's 0..7, then
-const uint kRayBenchResultBinding = 8u;     // uint per pixel: hits
+const uint kRayBenchResultBinding = kSceneBindingCount + 0u;     // uint per pixel: hits
 struct RayBenchParams {
     GpuCamera camera;
     uint width;
@@ -35,8 +35,8 @@ struct RayBenchParams {
 STATIC_ASSERT_SIZE(RayBenchParams, 80)
 
 // traced_direct.comp: the scene's 0..7, then; push constants: RasterDirectParams.
-const uint kTracedDirectLightBinding = 8u;  // GpuLight: the raster lights
-const uint kTracedDirectOutputBinding = 9u; // vec4 per pixel
+const uint kTracedDirectLightBinding = kSceneBindingCount + 0u;  // GpuLight: the raster lights
+const uint kTracedDirectOutputBinding = kSceneBindingCount + 1u; // vec4 per pixel
 
 SHARED_END
 

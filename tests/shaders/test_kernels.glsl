@@ -24,6 +24,7 @@ const uint kBvhTestRayBinding = 0u;       // TestRay
 const uint kBvhTestNodeBinding = 1u;      // GpuBvhNode
 const uint kBvhTestTriangleBinding = 2u;  // GpuTriangle, BVH order
 const uint kBvhTestHitBinding = 3u;       // TestHit
+const uint kBvhTestInstanceBinding = 4u;  // GpuInstanceHeader, GpuInstance[] (count 0: one tree)
 
 // photon_gather_test.comp
 const uint kGatherTestQueryBinding = 0u;    // GatherQuery
@@ -83,7 +84,7 @@ struct HarnessKernel {
 };
 struct BvhTestKernel {
     static constexpr const char* kShader = "bvh_trace_test.comp";
-    static constexpr uint32_t kBindingCount = kBvhTestHitBinding + 1u;
+    static constexpr uint32_t kBindingCount = kBvhTestInstanceBinding + 1u;
     static constexpr uint32_t kGroupSize = kTestGroupSize;
     using Push = uint32_t;
 };

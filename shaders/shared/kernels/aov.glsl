@@ -8,9 +8,9 @@
 SHARED_BEGIN
 
 const uint kAovGroupSize = 64u;
-// Bindings after the scene's 0..7.
-const uint kAovAlbedoBinding = 8u;   // vec4 per pixel: albedo (rgb), w unused
-const uint kAovNormalBinding = 9u;   // vec4 per pixel: world-space unit normal (xyz), depth in metres (w)
+// Bindings after the scene's (0 .. kSceneBindingCount - 1).
+const uint kAovAlbedoBinding = kSceneBindingCount + 0u;   // vec4 per pixel: albedo (rgb), w unused
+const uint kAovNormalBinding = kSceneBindingCount + 1u;   // vec4 per pixel: world-space unit normal (xyz), depth in metres (w)
 // Camera rays per pixel whose albedo and normal are averaged (the first through the centre,
 // which alone gives the depth).
 const uint kAovSamples = 8u;

@@ -8,11 +8,11 @@ SHARED_BEGIN
 
 const uint kDepositGroupSize = 64u;
 
-// photon_deposit.comp: the scene's 0..7, then
-const uint kPhotonDepositGridBinding = 8u;            // the map's grid: cell starts, photons at 9 (photon_gather.glsl)
-const uint kPhotonDepositSlotBinding = 10u;           // GpuPhoton per traced slot (kept, reweighted or cleared)
-const uint kPhotonDepositImportanceBinding = 11u;     // vec2 per slot (importance_lookup.comp)
-const uint kPhotonDepositRedistributedBinding = 12u;  // uint[3] per grid photon: power handed to it (fixed point)
+// photon_deposit.comp: the scene's (0 .. kSceneBindingCount - 1), then
+const uint kPhotonDepositGridBinding = kSceneBindingCount + 0u;            // the map's grid: cell starts, photons after it (photon_gather.glsl)
+const uint kPhotonDepositSlotBinding = kSceneBindingCount + 2u;           // GpuPhoton per traced slot (kept, reweighted or cleared)
+const uint kPhotonDepositImportanceBinding = kSceneBindingCount + 3u;     // vec2 per slot (importance_lookup.comp)
+const uint kPhotonDepositRedistributedBinding = kSceneBindingCount + 4u;  // uint[3] per grid photon: power handed to it (fixed point)
 
 // deposit_redistribute.comp
 const uint kRedistributeMapBinding = 0u;            // GpuPhoton: the dense map

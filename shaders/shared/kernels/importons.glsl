@@ -9,8 +9,8 @@ SHARED_BEGIN
 
 const uint kImportonGroupSize = 64u;
 
-// importon_trace.comp: the scene's 0..7, then
-const uint kImportonTraceImportonBinding = 8u;   // GpuImporton per slot: path * maxDeposits + k
+// importon_trace.comp: the scene's (0 .. kSceneBindingCount - 1), then
+const uint kImportonTraceImportonBinding = kSceneBindingCount + 0u;   // GpuImporton per slot: path * maxDeposits + k
 
 // importance_splat.comp
 const uint kImportanceSplatImportonBinding = 0u; // GpuImporton per slot (read)

@@ -8,16 +8,16 @@ SHARED_BEGIN
 
 const uint kPathTraceGroupSize = 64u;
 
-// Bindings after the scene's 0..7.
-const uint kPathTraceFilmBinding = 8u;          // vec4 per pixel: rgb sum, sample count
-const uint kPathTraceCounterBinding = 9u;       // uint[kPathTraceCounterCount]
-const uint kPathTraceRasterDirectBinding = 10u; // vec4 per pixel: raster direct light (--direct raster)
+// Bindings after the scene's (0 .. kSceneBindingCount - 1).
+const uint kPathTraceFilmBinding = kSceneBindingCount + 0u;          // vec4 per pixel: rgb sum, sample count
+const uint kPathTraceCounterBinding = kSceneBindingCount + 1u;       // uint[kPathTraceCounterCount]
+const uint kPathTraceRasterDirectBinding = kSceneBindingCount + 2u; // vec4 per pixel: raster direct light (--direct raster)
 // The guide, guided_pathtrace.comp: the photon grid's cell starts and photons (photon_gather.glsl);
 // guided_cached_pathtrace.comp: the guiding cache's cells, CDFs and irradiance (guide_cache.glsl).
-const uint kPathTraceGuideBinding = 11u;
-const uint kPathTraceGuideCellsBinding = 11u;
-const uint kPathTraceGuideCdfsBinding = 12u;
-const uint kPathTraceGuideIrradianceBinding = 13u;
+const uint kPathTraceGuideBinding = kSceneBindingCount + 3u;
+const uint kPathTraceGuideCellsBinding = kSceneBindingCount + 3u;
+const uint kPathTraceGuideCdfsBinding = kSceneBindingCount + 4u;
+const uint kPathTraceGuideIrradianceBinding = kSceneBindingCount + 5u;
 
 // Slots of the counter buffer.
 const uint kPathTraceCounterNonFinite = 0u;     // samples that produced a non-finite value (dropped)

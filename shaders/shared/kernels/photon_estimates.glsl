@@ -12,25 +12,25 @@ SHARED_BEGIN
 
 const uint kPhotonEstimateGroupSize = 64u;  // one invocation per pixel (per photon: radiance photons)
 
-// visible_points.comp: the scene's 0..7, then
-const uint kVisiblePointsFilmBinding = 8u;          // vec4 per pixel: rgb sum, sample count
-const uint kVisiblePointsPointBinding = 9u;         // GpuVisiblePoint per pixel (written)
-const uint kVisiblePointsRasterDirectBinding = 10u; // vec4 per pixel: raster direct light (--direct raster)
+// visible_points.comp: the scene's (0 .. kSceneBindingCount - 1), then
+const uint kVisiblePointsFilmBinding = kSceneBindingCount + 0u;          // vec4 per pixel: rgb sum, sample count
+const uint kVisiblePointsPointBinding = kSceneBindingCount + 1u;         // GpuVisiblePoint per pixel (written)
+const uint kVisiblePointsRasterDirectBinding = kSceneBindingCount + 2u; // vec4 per pixel: raster direct light (--direct raster)
 
-// caustic_estimate.comp: the scene's 0..7, then
-const uint kCausticEstimateFilmBinding = 8u;
-const uint kCausticEstimatePointBinding = 9u;
-const uint kCausticEstimateGridBinding = 10u;       // the caustic map's grid (10, 11)
+// caustic_estimate.comp: the scene's (0 .. kSceneBindingCount - 1), then
+const uint kCausticEstimateFilmBinding = kSceneBindingCount + 0u;
+const uint kCausticEstimatePointBinding = kSceneBindingCount + 1u;
+const uint kCausticEstimateGridBinding = kSceneBindingCount + 2u;       // the caustic map's grid (two bindings)
 
-// final_gather.comp: the scene's 0..7, then
-const uint kFinalGatherFilmBinding = 8u;
-const uint kFinalGatherPointBinding = 9u;
-const uint kFinalGatherGridBinding = 10u;           // the global map's or the radiance photons' grid (10, 11)
+// final_gather.comp: the scene's (0 .. kSceneBindingCount - 1), then
+const uint kFinalGatherFilmBinding = kSceneBindingCount + 0u;
+const uint kFinalGatherPointBinding = kSceneBindingCount + 1u;
+const uint kFinalGatherGridBinding = kSceneBindingCount + 2u;           // the global map's or the radiance photons' grid (two bindings)
 
-// sppm_update.comp: the scene's 0..7, then
-const uint kSppmUpdatePixelBinding = 8u;            // SppmPixel per pixel
-const uint kSppmUpdatePointBinding = 9u;
-const uint kSppmUpdateGridBinding = 10u;            // this pass's photon map's grid (10, 11)
+// sppm_update.comp: the scene's (0 .. kSceneBindingCount - 1), then
+const uint kSppmUpdatePixelBinding = kSceneBindingCount + 0u;            // SppmPixel per pixel
+const uint kSppmUpdatePointBinding = kSceneBindingCount + 1u;
+const uint kSppmUpdateGridBinding = kSceneBindingCount + 2u;            // this pass's photon map's grid (two bindings)
 
 // radiance_photons.comp
 const uint kRadiancePhotonsGridBinding = 0u;        // the global map's grid (0, 1)

@@ -7,9 +7,9 @@ SHARED_BEGIN
 
 const uint kPhotonTraceGroupSize = 64u;
 
-// Bindings after the scene's 0..7.
-const uint kPhotonTracePhotonBinding = 8u;   // GpuPhoton per slot: (path - firstPath) * maxDeposits + k
-const uint kPhotonTraceCounterBinding = 9u;  // uint[kPhotonCounterCount]
+// Bindings after the scene's (0 .. kSceneBindingCount - 1).
+const uint kPhotonTracePhotonBinding = kSceneBindingCount + 0u;   // GpuPhoton per slot: (path - firstPath) * maxDeposits + k
+const uint kPhotonTraceCounterBinding = kSceneBindingCount + 1u;  // uint[kPhotonCounterCount]
 
 // Slots of the counter buffer.
 const uint kPhotonCounterStoredCaustic = 0u;

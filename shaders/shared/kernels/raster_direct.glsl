@@ -12,11 +12,11 @@ const uint kShadowVolumeTriangleBinding = 0u;  // GpuShadowTriangle, BVH order
 const uint kShadowVolumeLightBinding = 1u;     // GpuLight: the raster lights
 const uint kShadowVolumeVertexBinding = 2u;    // vec4[kVolumeVerticesPerTriangle] per (triangle, light)
 
-// raster_direct.comp: one invocation per pixel; the scene's 0..7, then
+// raster_direct.comp: one invocation per pixel; the scene's (0 .. kSceneBindingCount - 1), then
 const uint kRasterDirectGroupSize = 64u;
-const uint kRasterDirectLightBinding = 8u;     // GpuLight: the raster lights
-const uint kRasterDirectMaskBinding = 9u;      // uint per pixel and mask pass: RGBA8, a light per channel
-const uint kRasterDirectOutputBinding = 10u;   // vec4 per pixel: direct light, summed over the passes
+const uint kRasterDirectLightBinding = kSceneBindingCount + 0u;     // GpuLight: the raster lights
+const uint kRasterDirectMaskBinding = kSceneBindingCount + 1u;      // uint per pixel and mask pass: RGBA8, a light per channel
+const uint kRasterDirectOutputBinding = kSceneBindingCount + 2u;   // vec4 per pixel: direct light, summed over the passes
 
 SHARED_END
 

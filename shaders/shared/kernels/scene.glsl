@@ -14,7 +14,10 @@ const uint kSceneLightsBinding = 4u;     // GpuLight
 const uint kSceneLightCdfBinding = 5u;   // float: inclusive prefix sums of the selection pdf
 const uint kSceneTexturesBinding = 6u;   // GpuTexture
 const uint kSceneTexelsBinding = 7u;     // uint: RGBA8 texels of all textures
-const uint kSceneBindingCount = 8u;
+// GpuInstanceHeader, then GpuInstance[] (two-level BVH, docs/bvh.md). coordination.md: binding 9
+// once the material tables take 8.
+const uint kSceneInstancesBinding = 8u;
+const uint kSceneBindingCount = 9u;
 
 SHARED_END
 #endif
