@@ -300,7 +300,13 @@ private:
     // flattened to world space, or as instances of a Scene::meshes entry (gltf_instancing.h).
     void addMeshDrawings(const tinygltf::Node& node, const glm::dmat4& world, const std::string& element) {
         if (static_cast<size_t>(node.mesh) >= m_model.meshes.size()) fail(fmt::format("meshes[{}]", node.mesh), "does not exist");
-        std::vector<glm::dmat4> transforms = readMeshInstances(m_model, node, element);
+        std::vector<glm::dmat4> transforms;
+        try {
+            transforms = readMeshInstances(m_model, node, element);
+        } catch (const InputError& e) {  // accessor errors name only the accessor
+            if (std::string_view(e.what()).rfind(element, 0) == 0) throw;
+            fail(fmt::format("{}.extensions.{}", element, kMeshGpuInstancing), e.what());
+        }
         if (transforms.empty()) transforms.push_back(glm::dmat4(1.0));
         const int nodeIndex = static_cast<int>(&node - m_model.nodes.data());
         for (const glm::dmat4& local : transforms) {
