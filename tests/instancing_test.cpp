@@ -30,79 +30,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-// A UV sphere of radius r at the origin with smooth (vertex) normals: interpolated shading
-// normals go through the instance transform too.
-Mesh sphereMesh(float r, uint32_t material, int rings = 8, int segments = 12) {
-    Mesh mesh;
-    mesh.name = "sphere";
-    const auto point = [&](int i, int j) {
-        const float theta = float(i) / rings * 3.14159265f, phi = float(j) / segments * 6.28318531f;
-        return glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-    };
-    for (int i = 0; i < rings; ++i)
-        for (int j = 0; j < segments; ++j) {
-            const glm::vec3 a = point(i, j), b = point(i + 1, j), c = point(i + 1, j + 1), d = point(i, j + 1);
-            for (const auto& tri : {std::array<glm::vec3, 3>{a, c, b}, std::array<glm::vec3, 3>{a, d, c}}) {
-                Triangle t;
-                for (int k = 0; k < 3; ++k) {
-                    t.p[k] = r * tri[k];
-                    t.n[k] = tri[k];
-                }
-                if (glm::length(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])) < 1e-8f) continue;  // at the poles
-                t.material = material;
-                mesh.triangles.push_back(t);
-                for (const glm::vec3& p : t.p) mesh.bounds.grow(p);
-            }
-        }
-    return mesh;
-}
-
-Mesh boxMesh(uint32_t material) {
-    Scene tmp;
-    test::addBox(tmp, glm::vec3(-0.5f), glm::vec3(0.5f));
-    Mesh mesh;
-    mesh.name = "box";
-    for (Triangle t : tmp.triangles) {
-        t.material = material;
-        mesh.triangles.push_back(t);
-        for (const glm::vec3& p : t.p) mesh.bounds.grow(p);
-    }
-    return mesh;
-}
-
-// Random rigid-ish transforms (rotation, non-uniform scale, some mirrored) inside `bounds`.
-glm::mat4 randomTransform(std::mt19937& rng, const Bounds& bounds, float size) {
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    const glm::vec3 at = bounds.min + glm::vec3(u(rng), u(rng), u(rng)) * bounds.extent();
-    glm::mat4 m = glm::translate(glm::mat4(1.0f), at);
-    m = glm::rotate(m, 6.2831853f * u(rng), glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f)));
-    glm::vec3 scale = size * glm::vec3(0.5f + u(rng), 0.5f + u(rng), 0.5f + u(rng));
-    if (u(rng) < 0.25f) scale.x = -scale.x;  // mirrored
-    return glm::scale(m, scale);
-}
-
-// The Cornell box with a sphere and a box mesh placed `count` times (plus their static part).
-Scene instancedCornell(uint32_t count, uint32_t seed) {
-    Scene scene = test::shippedScene("cornell-box");
-    Material grey;
-    grey.name = "instanced grey";
-    grey.baseColor = glm::vec4(0.7f, 0.6f, 0.5f, 1.0f);
-    grey.metallic = 0.0f;
-    grey.roughness = 0.6f;
-    scene.materials.push_back(grey);
-    const auto material = static_cast<uint32_t>(scene.materials.size() - 1);
-    scene.meshes.push_back(sphereMesh(1.0f, material));
-    scene.meshes.push_back(boxMesh(material));
-    Bounds inner;  // the middle of the room
-    inner.min = scene.bounds.center() - 0.3f * scene.bounds.extent();
-    inner.max = scene.bounds.center() + 0.3f * scene.bounds.extent();
-    std::mt19937 rng(seed);
-    const float size = 0.06f * glm::length(scene.bounds.extent());
-    for (uint32_t i = 0; i < count; ++i)
-        scene.instances.push_back({i % 2, randomTransform(rng, inner, size), -1});
-    return scene;
-}
-
 // Index in flattenedTriangles(scene) of a two-level hit id.
 uint32_t flattenedIndex(const Scene& scene, const SceneBvh& bvh, uint32_t id) {
     if (id < bvh.top.header.staticTriangles) return bvh.staticOrder[id];
@@ -161,7 +88,7 @@ void expectSameHitsAsFlattened(const Scene& scene, const SceneBvh& bvh, uint32_t
 }
 
 TEST(TwoLevelBvh, ClosestHitsEqualTheFlattenedScene) {
-    const Scene scene = instancedCornell(40, 1);
+    const Scene scene = test::instancedCornell(40, 1);
     const SceneBvh bvh = buildSceneBvh(scene);
     EXPECT_EQ(bvh.top.header.instanceCount, 40u);
     EXPECT_EQ(bvh.nodes.size(), bvh.top.header.tlasRoot + 2 * 40u - 1u);
@@ -182,12 +109,12 @@ TEST(TwoLevelBvh, WithoutInstancesTheTreeIsTheSingleLevelOne) {
 }
 
 TEST(TwoLevelBvh, RebuildAfterAnUpdateEqualsAFreshBuild) {
-    Scene scene = instancedCornell(30, 3);
+    Scene scene = test::instancedCornell(30, 3);
     SceneBvh updated = buildSceneBvh(scene);
     std::mt19937 rng(9);
     std::vector<glm::mat4> transforms;
     for (Instance& instance : scene.instances) {
-        instance.transform = randomTransform(rng, scene.bounds, 0.05f * glm::length(scene.bounds.extent()));
+        instance.transform = test::randomTransform(rng, scene.bounds, 0.05f * glm::length(scene.bounds.extent()));
         transforms.push_back(instance.transform);
     }
     updateInstances(updated, transforms, TopLevelUpdate::Rebuild);
@@ -199,14 +126,14 @@ TEST(TwoLevelBvh, RebuildAfterAnUpdateEqualsAFreshBuild) {
                           fresh.top.instances.size() * sizeof(gpu::GpuInstance)),
               0);
     // A refit (same topology, new boxes) finds the same hits too.
-    SceneBvh refitted = buildSceneBvh(instancedCornell(30, 3));
+    SceneBvh refitted = buildSceneBvh(test::instancedCornell(30, 3));
     updateInstances(refitted, transforms, TopLevelUpdate::Refit);
     expectSameHitsAsFlattened(scene, refitted, 5000, 4);
     EXPECT_THROW(updateInstances(refitted, std::vector<glm::mat4>(3), TopLevelUpdate::Refit), std::invalid_argument);
 }
 
 TEST(TwoLevelBvh, BadInstancesAreRefused) {
-    Scene scene = instancedCornell(2, 5);
+    Scene scene = test::instancedCornell(2, 5);
     scene.instances[1].transform = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 0.0f, 1.0f));
     EXPECT_THROW(buildSceneBvh(scene), std::invalid_argument);
     scene.instances[1].transform = glm::mat4(1.0f);
@@ -215,7 +142,7 @@ TEST(TwoLevelBvh, BadInstancesAreRefused) {
 }
 
 TEST(TwoLevelBvh, WorldTrianglesFollowHitIdOrder) {
-    const Scene scene = instancedCornell(6, 6);
+    const Scene scene = test::instancedCornell(6, 6);
     const SceneArrays arrays = buildSceneArrays(scene);
     const std::vector<gpu::GpuTriangle> world = worldTriangles(arrays);
     ASSERT_EQ(world.size(), flattenedTriangles(scene).size());
@@ -245,7 +172,7 @@ TEST(TwoLevelBvh, WorldTrianglesFollowHitIdOrder) {
 }
 
 TEST(TwoLevelBvh, EmissiveInstancedMeshesAreRefused) {
-    Scene scene = instancedCornell(2, 7);
+    Scene scene = test::instancedCornell(2, 7);
     scene.materials.back().emissive = glm::vec3(1.0f);
     EXPECT_THROW(buildSceneArrays(scene), std::invalid_argument);
 }
@@ -264,7 +191,7 @@ double relativeDifference(const ImageRgb& a, const ImageRgb& b) {
 }
 
 TEST_F(InstancedRender, PathAndPhotonImagesEqualTheFlattenedScene) {
-    const Scene instanced = instancedCornell(12, 11);
+    const Scene instanced = test::instancedCornell(12, 11);
     Scene flat = instanced;
     flat.triangles = flattenedTriangles(instanced);
     flat.meshes.clear();
@@ -292,8 +219,8 @@ TEST_F(InstancedRender, PathAndPhotonImagesEqualTheFlattenedScene) {
 // The per-frame update on the device: moving the instances and updating gives the image of a
 // scene loaded with the moved instances.
 TEST_F(InstancedRender, UpdatedTransformsRenderLikeAFreshScene) {
-    const Scene before = instancedCornell(8, 12);
-    Scene after = instancedCornell(8, 13);  // same meshes, other transforms
+    const Scene before = test::instancedCornell(8, 12);
+    Scene after = test::instancedCornell(8, 13);  // same meshes, other transforms
     std::vector<glm::mat4> transforms;
     for (const Instance& i : after.instances) transforms.push_back(i.transform);
     FrameSettings s;
