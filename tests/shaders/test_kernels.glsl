@@ -41,9 +41,9 @@ struct GatherTestParams {
 };
 STATIC_ASSERT_SIZE(GatherTestParams, 112)
 
-// shadow_visibility_test.comp: the scene's 0..7, then; push constants: RasterDirectParams.
-const uint kShadowTestLightBinding = 8u;    // GpuLight: the raster lights
-const uint kShadowTestOutputBinding = 9u;   // uint[3] per pixel
+// shadow_visibility_test.comp: the scene's bindings, then; push constants: RasterDirectParams.
+const uint kShadowTestLightBinding = kSceneBindingCount + 0u;  // GpuLight: the raster lights
+const uint kShadowTestOutputBinding = kSceneBindingCount + 1u;  // uint[3] per pixel
 
 // kernel_interface_test.comp: outputs[i] = inputs[i] * scale + offset.
 const uint kInterfaceTestInputBinding = 0u;
