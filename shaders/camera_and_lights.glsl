@@ -38,7 +38,7 @@ vec3 directLight(PathVertex v, uint lightCount, bool mis, uint skipTypes, inout 
 // (its position `from` and shading normal `fromNormal`, as directLight saw them there): the
 // light's selection pdf there times the pdf of its sample (solid angle or area).
 float emissionMisWeight(PathVertex v, float bsdfPdf, uint lightCount, vec3 from, vec3 fromNormal) {
-    float lightIndex = triangles[v.hit.triangle].v1.w;
+    float lightIndex = lightIndexOfHit(v.hit.triangle);
     if (lightIndex < 0.0f) return 1.0f;  // not in the light list: only BSDF sampling finds it
     float selectPdf = selectLightPdf(lightCount, from, fromNormal, uint(lightIndex));
     GpuTriangle t = triangles[v.hit.triangle];

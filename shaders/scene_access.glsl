@@ -21,6 +21,10 @@ layout(std430, set = 0, binding = kSceneLightCdfBinding) readonly buffer LightCd
 layout(std430, set = 0, binding = kSceneTexturesBinding) readonly buffer Textures { GpuTexture textures[]; };
 // binding kSceneTablesBinding: declared by shared/bsdf_tables.glsl (float bsdfTablesData[]).
 layout(std430, set = 0, binding = kSceneTexelsBinding) readonly buffer EnvironmentFloats { float environmentFloats[]; };
+layout(std430, set = 0, binding = kSceneInstancesBinding) readonly buffer Instances {
+    GpuInstanceHeader instanceHeader;
+    GpuInstance instances[];
+};
 layout(set = kSceneTextureSet, binding = kSceneTextureUnormBinding) uniform sampler2DArray sceneTexturesUnorm;
 layout(set = kSceneTextureSet, binding = kSceneTextureSrgbBinding) uniform sampler2DArray sceneTexturesSrgb;
 
@@ -143,47 +147,92 @@ struct SurfaceHit {
     uint material;
     float emitterPdfArea;
     bool frontFace;         // the ray arrived on the front (counter-clockwise) side
-    uint triangle;          // index in BVH order
+    uint triangle;          // hit id (docs/bvh.md): the static triangle's index, or an instance's
 };
 
 // The normal map's normal (glTF: tangent space +X along the tangent, +Y along
-// cross(normal, tangent) * w, scaled in xy by normalTexture.scale) around unit normal n.
-// Triangles without tangents keep n.
-vec3 normalMapped(GpuMaterial m, GpuTriangleShading s, float b1, float b2, vec4 uv, vec3 n) {
-    if (s.tangentSign == kTangentNone) return n;
-    vec3 t = (1.0f - b1 - b2) * decodeOctahedral(s.tangent0) + b1 * decodeOctahedral(s.tangent1) +
-             b2 * decodeOctahedral(s.tangent2);
+// cross(normal, tangent) * w, scaled in xy by normalTexture.scale) around unit normal n, with the
+// interpolated world-space tangent t (not yet orthogonalised) and w < 0 as `negative`.
+vec3 normalMapped(GpuMaterial m, vec3 t, bool negative, vec4 uv, vec3 n) {
     t -= n * dot(n, t);
     float len = length(t);
     if (!(len > 1.0e-6f)) return n;
     t /= len;
-    vec3 b = cross(n, t) * (s.tangentSign == kTangentNegative ? -1.0f : 1.0f);
+    vec3 b = cross(n, t) * (negative ? -1.0f : 1.0f);
     vec3 c = sampleTexture(m.normalTexture, uv).xyz * 2.0f - 1.0f;
     vec3 mapped = t * (c.x * m.normalScale) + b * (c.y * m.normalScale) + n * c.z;
     float mappedLength = length(mapped);
     return mappedLength > 1.0e-6f ? mapped / mappedLength : n;
 }
 
-SurfaceHit surfaceAt(uint tri, float b1, float b2, vec3 rayDir) {
+// Hit ids (docs/bvh.md): below instanceHeader.staticTriangles the index of a static (world-space)
+// triangle in the triangle buffers; from there on an instance's firstId plus the triangle's index
+// within its mesh. Instances are stored in firstId order: the hit's instance is the last one
+// whose firstId <= id (binary search, at most 32 steps).
+uint instanceOfHit(uint id) {
+    uint lo = 0u;
+    uint hi = instanceHeader.instanceCount - 1u;
+    for (uint k = 0u; k < 32u && lo < hi; ++k) {
+        uint mid = hi - (hi - lo) / 2u;
+        if (instances[mid].firstId <= id) lo = mid; else hi = mid - 1u;
+    }
+    return lo;
+}
+
+// The light-list index of the triangle a hit id names (GpuTriangle.v1.w), -1 when it is no
+// light; instanced triangles never are (the loader keeps emissive meshes static).
+float lightIndexOfHit(uint id) {
+    return id < instanceHeader.staticTriangles ? triangles[id].v1.w : -1.0f;
+}
+
+// The surface at barycentrics (b1, b2) of the triangle with hit id `id`, in world space: an
+// instanced triangle's vertices, normals and tangents go through its instance's transform (normals
+// by the inverse transpose; a mirroring transform reverses the winding, so the geometric normal is
+// negated and the tangent handedness flipped, as the loader does for flattened meshes).
+SurfaceHit surfaceAt(uint id, float b1, float b2, vec3 rayDir) {
+    uint tri = id;
+    bool instanced = id >= instanceHeader.staticTriangles;
+    GpuInstance inst;
+    if (instanced) {
+        inst = instances[instanceOfHit(id)];
+        tri = inst.firstTriangle + (id - inst.firstId);
+    }
     GpuTriangle t = triangles[tri];
     GpuTriangleShading s = shading[tri];
+    vec3 v0 = t.v0.xyz;
+    vec3 v1 = t.v1.xyz;
+    vec3 v2 = t.v2.xyz;
+    bool mirrored = instanced && (inst.flags & kInstanceMirrored) != 0u;
+    if (instanced) {
+        v0 = transformPoint3x4(inst.objectToWorld[0], inst.objectToWorld[1], inst.objectToWorld[2], v0);
+        v1 = transformPoint3x4(inst.objectToWorld[0], inst.objectToWorld[1], inst.objectToWorld[2], v1);
+        v2 = transformPoint3x4(inst.objectToWorld[0], inst.objectToWorld[1], inst.objectToWorld[2], v2);
+    }
     float b0 = 1.0f - b1 - b2;
     SurfaceHit hit;
-    hit.position = b0 * t.v0.xyz + b1 * t.v1.xyz + b2 * t.v2.xyz;
-    hit.geometricNormal = normalize(cross(t.v1.xyz - t.v0.xyz, t.v2.xyz - t.v0.xyz));
+    hit.position = b0 * v0 + b1 * v1 + b2 * v2;
+    hit.geometricNormal = normalize(cross(v1 - v0, v2 - v0)) * (mirrored ? -1.0f : 1.0f);
     hit.uv = interpolatedUv(s, b1, b2);
     hit.color = vertexColor(s, b1, b2);
     vec3 n = b0 * decodeOctahedral(s.n0) + b1 * decodeOctahedral(s.n1) + b2 * decodeOctahedral(s.n2);
+    if (instanced)  // inverse transpose: the columns of worldToObject's 3x3 part
+        n = n.x * inst.worldToObject[0].xyz + n.y * inst.worldToObject[1].xyz + n.z * inst.worldToObject[2].xyz;
     float len = length(n);
     n = len > 0.0f ? n / len : hit.geometricNormal;
     GpuMaterial m = materials[s.material];
-    if (m.normalTexture >= 0) n = normalMapped(m, s, b1, b2, hit.uv, n);
+    if (m.normalTexture >= 0 && s.tangentSign != kTangentNone) {
+        vec3 tangent = b0 * decodeOctahedral(s.tangent0) + b1 * decodeOctahedral(s.tangent1) +
+                       b2 * decodeOctahedral(s.tangent2);
+        if (instanced)
+            tangent = transformVector3x4(inst.objectToWorld[0], inst.objectToWorld[1], inst.objectToWorld[2], tangent);
+        n = normalMapped(m, tangent, (s.tangentSign == kTangentNegative) != mirrored, hit.uv, n);
+    }
     if (dot(n, hit.geometricNormal) < 0.0f) n = -n;
     hit.shadingNormal = n;
     hit.material = s.material;
     hit.emitterPdfArea = s.emitterPdfArea;
     hit.frontFace = dot(rayDir, hit.geometricNormal) < 0.0f;
-    hit.triangle = tri;
+    hit.triangle = id;
     return hit;
 }
 

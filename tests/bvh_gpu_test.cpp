@@ -1,15 +1,18 @@
 // GPU BVH traversal (shaders/shared/bvh_traverse.glsl, run by tests/shaders/bvh_trace_test.comp)
 // against brute force over all triangles and against the same traversal on the host, on a shipped
 // scene, and shadow rays that must not be occluded by the surfaces they start and end on.
+#include <cstring>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "bvh/bvh.h"
+#include "bvh/scene_bvh.h"
 #include "gpu_test_support.h"
 #include "scene/gltf_loader.h"
 #include "shared/intersect.glsl"
 #include "shaders/test_kernels.glsl"
+#include "test_scenes.h"
 #include "vk/buffer.h"
 #include "vk/kernel.h"
 
@@ -30,24 +33,40 @@ struct TestHit {         // tests/shaders/bvh_trace_test.comp
 static_assert(sizeof(TestHit) == 20);
 constexpr uint32_t kNoTriangle = 0xffffffffu;
 
-std::vector<TestHit> traceOnGpu(const Bvh& bvh, const std::vector<gpu::GpuTriangle>& tris,
-                                const std::vector<TestRay>& rays) {
+// Traces `rays` through the arrays on the GPU (instances too, when the arrays have them).
+std::vector<TestHit> traceOnGpu(const gpu::BvhArrays& arrays, const std::vector<TestRay>& rays) {
     vk::Context& context = test::gpu();
+    std::vector<gpu::GpuBvhNode> nodes(arrays.nodes.begin(), arrays.nodes.end());
+    std::vector<gpu::GpuTriangle> tris(arrays.triangles.begin(), arrays.triangles.end());
+    std::vector<uint8_t> instanceBytes(sizeof(gpu::GpuInstanceHeader) + arrays.instances.size_bytes());
+    std::memcpy(instanceBytes.data(), &arrays.header, sizeof(gpu::GpuInstanceHeader));
+    if (!arrays.instances.empty())
+        std::memcpy(instanceBytes.data() + sizeof(gpu::GpuInstanceHeader), arrays.instances.data(),
+                    arrays.instances.size_bytes());
     vk::Buffer rayBuffer = vk::makeStorageBuffer(context, "rays", rays);
-    vk::Buffer nodeBuffer = vk::makeStorageBuffer(context, "nodes", bvh.nodes);
+    vk::Buffer nodeBuffer = vk::makeStorageBuffer(context, "nodes", nodes);
     vk::Buffer triBuffer = vk::makeStorageBuffer(context, "triangles", tris);
+    vk::Buffer instanceBuffer = vk::makeStorageBuffer(context, "instances", instanceBytes);
     vk::Buffer hitBuffer(context, "hits", rays.size() * sizeof(TestHit), vk::kStorageUsage);
     vk::Kernel<gpu::BvhTestKernel> kernel(context);
     kernel.bind(gpu::kBvhTestRayBinding, rayBuffer);
     kernel.bind(gpu::kBvhTestNodeBinding, nodeBuffer);
     kernel.bind(gpu::kBvhTestTriangleBinding, triBuffer);
     kernel.bind(gpu::kBvhTestHitBinding, hitBuffer);
+    kernel.bind(gpu::kBvhTestInstanceBinding, instanceBuffer);
     const auto count = static_cast<uint32_t>(rays.size());
     context.submitAndWait([&](VkCommandBuffer cmd) {
         kernel.record(cmd, count, count);
         vk::computeToHostBarrier(cmd);
     });
     return hitBuffer.download<TestHit>();
+}
+
+std::vector<TestHit> traceOnGpu(const Bvh& bvh, const std::vector<gpu::GpuTriangle>& tris,
+                                const std::vector<TestRay>& rays) {
+    gpu::BvhArrays arrays{bvh.nodes, tris};
+    arrays.header.staticTriangles = static_cast<uint32_t>(tris.size());
+    return traceOnGpu(arrays, rays);
 }
 
 RayHit bruteForce(const std::vector<gpu::GpuTriangle>& tris, glm::vec3 org, glm::vec3 dir, float tMax) {
@@ -136,6 +155,39 @@ TEST_F(BvhGpu, ShadowRaysBetweenFacingQuadsAreUnoccluded) {
     int occluded = 0;
     for (const TestHit& h : hits) occluded += h.anyHit != 0 || h.triangle != kNoTriangle;
     EXPECT_EQ(occluded, 0);
+}
+
+// Two levels on the device: the same hit ids, distances and barycentrics as the host traversal
+// (the same code compiled as C++), which tests/instancing_test.cpp checks against the flattened
+// scene; instances include mirrored ones.
+TEST_F(BvhGpu, TwoLevelHitsEqualTheHostTraversal) {
+    const Scene scene = test::instancedCornell(50, 21);
+    const SceneBvh bvh = buildSceneBvh(scene);
+    std::mt19937 rng(8);
+    std::uniform_real_distribution<float> n(-1.0f, 1.0f);
+    const glm::vec3 c = scene.bounds.center(), e = scene.bounds.extent();
+    std::vector<TestRay> rays;
+    for (uint32_t i = 0; i < 8000; ++i) {
+        const glm::vec3 o = c + (i % 2 ? 0.45f : 1.5f) * e * glm::vec3(n(rng), n(rng), n(rng));
+        glm::vec3 d(n(rng), n(rng), n(rng));
+        if (glm::length(d) < 1e-3f) d = glm::vec3(0.3f, 0.5f, -0.8f);
+        rays.push_back({glm::vec4(o, i % 5 == 0 ? 0.5f : 1e30f), glm::vec4(glm::normalize(d), 0.0f)});
+    }
+    const auto hits = traceOnGpu(bvh.arrays(), rays);
+    uint32_t instanceHits = 0;
+    for (uint32_t i = 0; i < rays.size(); ++i) {
+        const glm::vec3 o(rays[i].origin), d(rays[i].direction);
+        const RayHit host = closestHit(bvh.arrays(), o, d, rays[i].origin.w);
+        ASSERT_EQ(hits[i].triangle != kNoTriangle, host.hit) << "ray " << i;
+        EXPECT_EQ(hits[i].anyHit != 0, host.hit) << "ray " << i;
+        if (!host.hit) continue;
+        instanceHits += host.triangle >= bvh.top.header.staticTriangles;
+        EXPECT_EQ(hits[i].triangle, host.triangle) << "ray " << i;
+        EXPECT_EQ(hits[i].t, host.t) << "ray " << i;
+        EXPECT_EQ(hits[i].b1, host.b1) << "ray " << i;
+        EXPECT_EQ(hits[i].b2, host.b2) << "ray " << i;
+    }
+    EXPECT_GT(instanceHits, 200u);
 }
 
 }  // namespace

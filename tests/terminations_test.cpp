@@ -101,6 +101,9 @@ uint32_t gpuStackOverflows(const Comb& c, uint32_t rayCount) {
     kernel.bind(gpu::kBvhTestNodeBinding, nodeBuffer);
     kernel.bind(gpu::kBvhTestTriangleBinding, triBuffer);
     kernel.bind(gpu::kBvhTestHitBinding, hitBuffer);
+    const std::vector<gpu::GpuInstanceHeader> noInstances(1);  // one tree, no top level
+    vk::Buffer instanceBuffer = vk::makeStorageBuffer(context, "instances", noInstances);
+    kernel.bind(gpu::kBvhTestInstanceBinding, instanceBuffer);
     clearTerminations(context);
     context.submitAndWait([&](VkCommandBuffer cmd) {
         kernel.record(cmd, rayCount, rayCount);

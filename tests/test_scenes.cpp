@@ -1,5 +1,11 @@
 #include "test_scenes.h"
 
+#include <array>
+#include <cmath>
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "scene/gltf_loader.h"
 
 namespace vkp::test {
@@ -134,6 +140,83 @@ Camera lookAt(glm::vec3 eye, glm::vec3 target, float yfov) {
     c.up = glm::cross(right, c.forward);
     c.yfov = yfov;
     return c;
+}
+
+}  // namespace vkp::test
+
+namespace vkp::test {
+
+// A UV sphere of radius r at the origin with smooth (vertex) normals: interpolated shading
+// normals go through the instance transform too.
+Mesh sphereMesh(float r, uint32_t material, int rings, int segments) {
+    Mesh mesh;
+    mesh.name = "sphere";
+    const auto point = [&](int i, int j) {
+        const float theta = float(i) / rings * 3.14159265f, phi = float(j) / segments * 6.28318531f;
+        return glm::vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+    };
+    for (int i = 0; i < rings; ++i)
+        for (int j = 0; j < segments; ++j) {
+            const glm::vec3 a = point(i, j), b = point(i + 1, j), c = point(i + 1, j + 1), d = point(i, j + 1);
+            for (const auto& tri : {std::array<glm::vec3, 3>{a, c, b}, std::array<glm::vec3, 3>{a, d, c}}) {
+                Triangle t;
+                for (int k = 0; k < 3; ++k) {
+                    t.p[k] = r * tri[k];
+                    t.n[k] = tri[k];
+                }
+                if (glm::length(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])) < 1e-8f) continue;  // at the poles
+                t.material = material;
+                mesh.triangles.push_back(t);
+                for (const glm::vec3& p : t.p) mesh.bounds.grow(p);
+            }
+        }
+    return mesh;
+}
+
+Mesh boxMesh(uint32_t material) {
+    Scene tmp;
+    addBox(tmp, glm::vec3(-0.5f), glm::vec3(0.5f));
+    Mesh mesh;
+    mesh.name = "box";
+    for (Triangle t : tmp.triangles) {
+        t.material = material;
+        mesh.triangles.push_back(t);
+        for (const glm::vec3& p : t.p) mesh.bounds.grow(p);
+    }
+    return mesh;
+}
+
+// Random rigid-ish transforms (rotation, non-uniform scale, some mirrored) inside `bounds`.
+glm::mat4 randomTransform(std::mt19937& rng, const Bounds& bounds, float size) {
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const glm::vec3 at = bounds.min + glm::vec3(u(rng), u(rng), u(rng)) * bounds.extent();
+    glm::mat4 m = glm::translate(glm::mat4(1.0f), at);
+    m = glm::rotate(m, 6.2831853f * u(rng), glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f)));
+    glm::vec3 scale = size * glm::vec3(0.5f + u(rng), 0.5f + u(rng), 0.5f + u(rng));
+    if (u(rng) < 0.25f) scale.x = -scale.x;  // mirrored
+    return glm::scale(m, scale);
+}
+
+// The Cornell box with a sphere and a box mesh placed `count` times (plus their static part).
+Scene instancedCornell(uint32_t count, uint32_t seed) {
+    Scene scene = shippedScene("cornell-box");
+    Material grey;
+    grey.name = "instanced grey";
+    grey.baseColor = glm::vec4(0.7f, 0.6f, 0.5f, 1.0f);
+    grey.metallic = 0.0f;
+    grey.roughness = 0.6f;
+    scene.materials.push_back(grey);
+    const auto material = static_cast<uint32_t>(scene.materials.size() - 1);
+    scene.meshes.push_back(sphereMesh(1.0f, material));
+    scene.meshes.push_back(boxMesh(material));
+    Bounds inner;  // the middle of the room
+    inner.min = scene.bounds.center() - 0.3f * scene.bounds.extent();
+    inner.max = scene.bounds.center() + 0.3f * scene.bounds.extent();
+    std::mt19937 rng(seed);
+    const float size = 0.06f * glm::length(scene.bounds.extent());
+    for (uint32_t i = 0; i < count; ++i)
+        scene.instances.push_back({i % 2, randomTransform(rng, inner, size), -1});
+    return scene;
 }
 
 }  // namespace vkp::test

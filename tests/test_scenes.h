@@ -1,6 +1,7 @@
 // Scenes built in code for tests with analytic answers.
 #pragma once
 
+#include <random>
 #include <string>
 
 #include "scene/scene.h"
@@ -32,5 +33,19 @@ void addPointLight(Scene& scene, glm::vec3 position, glm::vec3 intensity);
 // (cones 0.3 / 0.6 rad): the non-point lights of the raster tests.
 void addSunAndSpot(Scene& scene, glm::vec3 sunIntensity, glm::vec3 spotIntensity);
 Camera lookAt(glm::vec3 eye, glm::vec3 target, float yfov = 0.9f);
+
+}  // namespace vkp::test
+
+namespace vkp::test {
+
+// Instancing (tests/instancing_test.cpp, bvh_gpu_test.cpp): a UV sphere of radius r with smooth
+// normals and a unit box, as object-space meshes of `material`.
+Mesh sphereMesh(float r, uint32_t material, int rings = 8, int segments = 12);
+Mesh boxMesh(uint32_t material);
+// A random transform within `bounds`: rotation, non-uniform scale around `size`, a quarter mirrored.
+glm::mat4 randomTransform(std::mt19937& rng, const Bounds& bounds, float size);
+// The Cornell box with `count` instances (alternately the sphere and the box, grey, non-emissive)
+// at random transforms in the middle of the room.
+Scene instancedCornell(uint32_t count, uint32_t seed);
 
 }  // namespace vkp::test

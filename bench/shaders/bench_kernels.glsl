@@ -23,7 +23,7 @@ struct GatherBenchParams {
 };
 STATIC_ASSERT_SIZE(GatherBenchParams, 36)
 
-// ray_throughput.comp: the scene's 0..7, then
+// ray_throughput.comp: the scene's (0 .. kSceneBindingCount - 1), then
 const uint kRayBenchResultBinding = kSceneBindingCount + 0u;     // uint per pixel: hits
 struct RayBenchParams {
     GpuCamera camera;
@@ -34,7 +34,7 @@ struct RayBenchParams {
 };
 STATIC_ASSERT_SIZE(RayBenchParams, 80)
 
-// traced_direct.comp: the scene's 0..7, then; push constants: RasterDirectParams.
+// traced_direct.comp: the scene's (0 .. kSceneBindingCount - 1), then; push constants: RasterDirectParams.
 const uint kTracedDirectLightBinding = kSceneBindingCount + 0u;  // GpuLight: the raster lights
 const uint kTracedDirectOutputBinding = kSceneBindingCount + 1u; // vec4 per pixel
 

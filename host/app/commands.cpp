@@ -144,8 +144,12 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
                  options.frame.view);
 
     if (!options.quiet)
-        fmt::print(stderr, "vkphoton: {} ({} triangles) on {}{}\n", printable(options.scene.string()),
-                   scene.triangles.size(), context.deviceName(), context.validationEnabled() ? " with validation" : "");
+        fmt::print(stderr, "vkphoton: {} ({} triangles{}) on {}{}\n", printable(options.scene.string()),
+                   scene.triangles.size(),
+                   scene.instances.empty() ? std::string()
+                                           : fmt::format(", {} instances of {} meshes", scene.instances.size(),
+                                                         scene.meshes.size()),
+                   context.deviceName(), context.validationEnabled() ? " with validation" : "");
     LightSampling lightSampling = options.lightSampling;
     if (options.lightSamplerAuto) lightSampling.sampler = autoLightSampler(scene);
     Renderer renderer(context, scene, lightSampling);

@@ -99,7 +99,12 @@ void printText(const json& r) {
 json sceneReport(const Scene& scene) {
     json report;
     report["scene"] = scene.source.string();
-    report["triangles"] = scene.triangles.size();
+    // Drawn triangles (every instance counted), and the instancing (docs/bvh.md).
+    size_t drawn = scene.triangles.size();
+    for (const Instance& instance : scene.instances) drawn += scene.meshes[instance.mesh].triangles.size();
+    report["triangles"] = drawn;
+    report["instances"] = scene.instances.size();
+    report["instancedMeshes"] = scene.meshes.size();
     report["droppedDegenerateTriangles"] = scene.droppedDegenerateTriangles;
     report["materials"] = json::array();
     for (const Material& m : scene.materials)

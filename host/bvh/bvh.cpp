@@ -12,25 +12,30 @@
 
 namespace vkp {
 namespace {
-
-// Wald 2007 finds 16-32 bins within a few percent of the full sweep SAH; 16 is the cheaper end.
-constexpr int kBins = 16;
-
 // Node boxes are padded outward by at least this and one ulp, so that no triangle touches a box
 // face: a ray with a zero direction component running exactly in a face plane would otherwise be
 // culled by the slab test (see safeInverseDirection in shaders/shared/intersect.glsl). Padding is
 // monotone in the coordinate, so a child box stays inside its parent's.
 constexpr float kBoxPadding = 1.0e-20f;
+}  // namespace
 
-glm::vec3 padDown(glm::vec3 v) {
+glm::vec3 padBoxMin(glm::vec3 v) {
     for (int k = 0; k < 3; ++k) v[k] = std::nextafter(v[k] - kBoxPadding, -std::numeric_limits<float>::infinity());
     return v;
 }
 
-glm::vec3 padUp(glm::vec3 v) {
+glm::vec3 padBoxMax(glm::vec3 v) {
     for (int k = 0; k < 3; ++k) v[k] = std::nextafter(v[k] + kBoxPadding, std::numeric_limits<float>::infinity());
     return v;
 }
+
+namespace {
+
+// Wald 2007 finds 16-32 bins within a few percent of the full sweep SAH; 16 is the cheaper end.
+constexpr int kBins = 16;
+
+glm::vec3 padDown(glm::vec3 v) { return padBoxMin(v); }
+glm::vec3 padUp(glm::vec3 v) { return padBoxMax(v); }
 
 // Half the surface area; only ratios of areas are used.
 float halfArea(const Bounds& b) {

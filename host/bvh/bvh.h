@@ -68,6 +68,10 @@ RayHit closestHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, g
 bool anyHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org,
             glm::vec3 dir, float tMax);
 
+// A node box's padding (bvh.cpp): outward by at least one ulp and 1e-20 per coordinate.
+glm::vec3 padBoxMin(glm::vec3 v);
+glm::vec3 padBoxMax(glm::vec3 v);
+
 struct BvhStats {
     uint32_t nodeCount = 0;
     uint32_t leafCount = 0;

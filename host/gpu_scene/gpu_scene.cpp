@@ -32,4 +32,9 @@ void GpuScene::replaceLightSelection(std::vector<float> data) {
     m_buffers.replaceLightSelection(m_context, m_arrays.lightCdf);
 }
 
+void GpuScene::updateInstanceTransforms(std::span<const glm::mat4> transforms, TopLevelUpdate mode) {
+    updateInstances(m_arrays.nodes, m_arrays.topLevel, transforms, mode);
+    m_buffers.updateInstances(m_arrays);
+}
+
 }  // namespace vkp

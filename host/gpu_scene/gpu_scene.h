@@ -2,6 +2,8 @@
 // their upload to one device, made once and shared by every render of the scene.
 #pragma once
 
+#include <span>
+
 #include "gpu_scene/scene_buffers.h"
 #include "scene/scene.h"
 
@@ -25,6 +27,13 @@ public:
     // Replaces the light-selection data (SceneArrays::lightCdf) and its buffer: --light-sampler
     // photon's cells (render/light_cells.h), before any kernel binds the scene.
     void replaceLightSelection(std::vector<float> data);
+    // Per-frame rigid motion (docs/bvh.md): new object-to-world transforms of Scene::instances
+    // (same order, one each). Rebuilds (or refits) only the top level and uploads only it and the
+    // instances; the static tree, the meshes' trees and every other buffer stay. Call between
+    // frames, with no kernel using the scene in flight. Scene::instances keeps the load-time
+    // transforms; arrays().topLevel holds the current ones.
+    void updateInstanceTransforms(std::span<const glm::mat4> transforms,
+                                  TopLevelUpdate mode = TopLevelUpdate::Rebuild);
 
 private:
     vk::Context& m_context;

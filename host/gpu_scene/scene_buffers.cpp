@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iterator>
+#include <stdexcept>
 
 #include "bvh/bvh.h"
 #include "scene/environment_distribution.h"
@@ -77,24 +78,36 @@ void packVertexData(const Triangle& t, gpu::GpuTriangleShading& s) {
 
 SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling, const TextureLimits& textureLimits) {
     SceneArrays a;
+    for (const Instance& instance : scene.instances)  // the light list holds static triangles only
+        for (const Triangle& t : scene.meshes.at(instance.mesh).triangles)
+            if (gpu::luminance(scene.materials.at(t.material).emissive) > 0.0f)
+                throw std::invalid_argument("an instanced mesh has an emissive material (docs/bvh.md: emissive "
+                                            "meshes are flattened)");
     const auto start = std::chrono::steady_clock::now();
-    const Bvh bvh = buildBvh(scene.triangles);
+    SceneBvh bvh = buildSceneBvh(scene);
     a.bvhBuildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    a.nodes = bvh.nodes;
+    a.nodes = std::move(bvh.nodes);
+    a.triangles = std::move(bvh.triangles);
+    a.topLevel = std::move(bvh.top);
 
     for (const Material& m : scene.materials) a.materials.push_back(toGpu(m, m.doubleSided));
     if (!scene.energyCompensation)
         for (gpu::GpuMaterial& g : a.materials) g.flags |= gpu::kMaterialNoEnergyCompensation;
 
-    a.triangles = gpuTriangles(scene.triangles, bvh);
+    // The source triangle of each position in the triangle arrays: static ones, then meshes'.
+    std::vector<const Triangle*> source;
+    source.reserve(a.triangles.size());
+    for (uint32_t index : bvh.staticOrder) source.push_back(&scene.triangles[index]);
+    for (size_t m = 0; m < bvh.meshOrder.size(); ++m)
+        for (uint32_t index : bvh.meshOrder[m]) source.push_back(&scene.meshes[m].triangles[index]);
     for (uint32_t i = 0; i < a.triangles.size(); ++i)  // the traversal's alpha test (gpu_types.glsl)
-        if (scene.materials[scene.triangles[bvh.triangleOrder[i]].material].alphaMode != AlphaMode::Opaque)
-            a.triangles[i].v0.w = 1.0f;
-    a.shading.reserve(scene.triangles.size());
+        if (scene.materials[source[i]->material].alphaMode != AlphaMode::Opaque) a.triangles[i].v0.w = 1.0f;
+    a.shading.reserve(a.triangles.size());
     const TexturedEmission emission(scene);
     std::vector<double> power;
-    for (uint32_t i = 0; i < bvh.triangleOrder.size(); ++i) {
-        const Triangle& t = scene.triangles[bvh.triangleOrder[i]];
+    const uint32_t staticCount = a.topLevel.header.staticTriangles;
+    for (uint32_t i = 0; i < source.size(); ++i) {
+        const Triangle& t = *source[i];
         gpu::GpuTriangleShading s{};
         s.uv01 = glm::vec4(t.uv[0], t.uv[1]);
         s.uv2 = t.uv[2];
@@ -104,6 +117,7 @@ SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling, const T
         s.uvB2 = t.uv1[2];
         packVertexData(t, s);
         a.shading.push_back(s);
+        if (i >= staticCount) continue;  // instanced triangles are never lights (checked above)
 
         const Material& m = scene.materials[t.material];
         // Emissive textures: the emission averaged over the texels the triangle reads; a
@@ -211,6 +225,39 @@ SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling, const T
     return a;
 }
 
+std::vector<uint8_t> SceneArrays::instanceBytes() const {
+    std::vector<uint8_t> bytes(sizeof(gpu::GpuInstanceHeader) + topLevel.instances.size() * sizeof(gpu::GpuInstance));
+    std::memcpy(bytes.data(), &topLevel.header, sizeof(gpu::GpuInstanceHeader));
+    if (!topLevel.instances.empty())
+        std::memcpy(bytes.data() + sizeof(gpu::GpuInstanceHeader), topLevel.instances.data(),
+                    topLevel.instances.size() * sizeof(gpu::GpuInstance));
+    return bytes;
+}
+
+std::vector<gpu::GpuTriangle> worldTriangles(const SceneArrays& arrays) {
+    const InstanceLevel& top = arrays.topLevel;
+    if (top.instances.empty()) return arrays.triangles;
+    std::vector<gpu::GpuTriangle> out(arrays.triangles.begin(), arrays.triangles.begin() + top.header.staticTriangles);
+    for (size_t k = 0; k < top.instances.size(); ++k) {
+        const gpu::GpuInstance& g = top.instances[k];
+        const uint32_t count = top.meshTriangles[top.instanceMesh[k]];
+        for (uint32_t j = 0; j < count; ++j) {
+            gpu::GpuTriangle t = arrays.triangles[g.firstTriangle + j];
+            for (glm::vec4* v : {&t.v0, &t.v1, &t.v2})
+                *v = glm::vec4(gpu::transformPoint3x4(g.objectToWorld[0], g.objectToWorld[1], g.objectToWorld[2],
+                                                      glm::vec3(*v)),
+                               v->w);
+            if ((g.flags & gpu::kInstanceMirrored) != 0u) {  // the winding the loader gives flattened copies
+                const glm::vec3 p1(t.v1);                     // (positions only: w holds the flags)
+                t.v1 = glm::vec4(glm::vec3(t.v2), t.v1.w);
+                t.v2 = glm::vec4(p1, t.v2.w);
+            }
+            out.push_back(t);
+        }
+    }
+    return out;
+}
+
 gpu::GpuCamera makeGpuCamera(const Camera& camera, uint32_t width, uint32_t height) {
     gpu::GpuCamera c{};
     c.position = camera.position;
@@ -238,6 +285,7 @@ SceneBuffers::SceneBuffers(vk::Context& context, const SceneArrays& a)
       m_textures(vk::makeStorageBuffer(context, "textures", a.textures)),
       m_texels(vk::makeStorageBuffer(context, "environment map", a.environment)),
       m_tables(makeBsdfTablesBuffer(context)),
+      m_instances(vk::makeStorageBuffer(context, "instances", a.instanceBytes())),
       m_textureArray(std::make_unique<vk::TextureArray>(context, "texture atlas", a.textureAtlas.width,
                                                         a.textureAtlas.height, a.textureAtlas.layers,
                                                         a.textureAtlas.texels)),
@@ -267,7 +315,17 @@ vk::KernelBindings SceneBuffers::bindings() const {
     b[gpu::kSceneTexturesBinding] = &m_textures;
     b[gpu::kSceneTexelsBinding] = &m_texels;
     b[gpu::kSceneTablesBinding] = &m_tables;
+    b[gpu::kSceneInstancesBinding] = &m_instances;
     return {b, m_textureArray.get()};
+}
+
+void SceneBuffers::updateInstances(const SceneArrays& a) {
+    const std::vector<uint8_t> bytes = a.instanceBytes();
+    m_instances.upload(bytes.data(), bytes.size());
+    const uint32_t first = a.topLevel.header.tlasRoot;
+    if (a.topLevel.instances.empty() || first >= a.nodes.size()) return;
+    m_nodes.upload(a.nodes.data() + first, (a.nodes.size() - first) * sizeof(gpu::GpuBvhNode),
+                   first * sizeof(gpu::GpuBvhNode));
 }
 
 void SceneBuffers::replaceLightSelection(vk::Context& context, const std::vector<float>& data) {

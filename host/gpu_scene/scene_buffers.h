@@ -9,6 +9,7 @@
 
 #include <memory>
 
+#include "bvh/scene_bvh.h"
 #include "gpu_scene/light_tree.h"
 #include "gpu_scene/texture_atlas.h"
 #include "scene/scene.h"
@@ -22,9 +23,9 @@ namespace vkp {
 
 // Host-side arrays in GPU layout, built without a device so they can be tested on their own.
 struct SceneArrays {
-    std::vector<gpu::GpuTriangle> triangles;        // BVH order
-    std::vector<gpu::GpuBvhNode> nodes;
-    std::vector<gpu::GpuTriangleShading> shading;   // BVH order
+    std::vector<gpu::GpuTriangle> triangles;        // static (BVH order), then each mesh's (docs/bvh.md)
+    std::vector<gpu::GpuBvhNode> nodes;             // static tree at 0, meshes' trees, top level
+    std::vector<gpu::GpuTriangleShading> shading;   // as triangles
     std::vector<gpu::GpuMaterial> materials;
     std::vector<gpu::GpuLight> lights;
     std::vector<float> lightCdf;                    // inclusive prefix sums of selectPdf, last = 1; then
@@ -36,7 +37,17 @@ struct SceneArrays {
     double bvhBuildSeconds = 0.0;
     LightSampling lightSampling;                    // what lightCdf's header selects (--light-sampler)
     LightTreeStats lightTree;                       // the selection data after the CDF
+    InstanceLevel topLevel;                         // instances, their header (binding kSceneInstancesBinding)
+
+    // The traversal's view (shared/bvh_traverse.glsl) for host-side rays.
+    gpu::BvhArrays bvhArrays() const { return {nodes, triangles, topLevel.instances, topLevel.header}; }
+    // The instance buffer's contents: the header, then the instances.
+    std::vector<uint8_t> instanceBytes() const;
 };
+
+// Every triangle in world space, in hit-id order (static ones, then each instance's): what the
+// raster pass draws. Without instances, `triangles` itself.
+std::vector<gpu::GpuTriangle> worldTriangles(const SceneArrays& arrays);
 
 // Builds the BVH and the GPU arrays. Lights are selected for next-event estimation in proportion
 // to their emitted power (emissive triangles: pi * luminance(Le) * area, twice if double-sided,
@@ -75,6 +86,9 @@ public:
     // Uploads new light-selection data (the CDF, then shared/light_selection.glsl's layout).
     void replaceLightSelection(vk::Context& context, const std::vector<float>& data);
     uint64_t bytes() const;
+    // Uploads the arrays' instances and top-level nodes after updateInstances (per frame): the
+    // rest of the scene stays as uploaded. Record no kernel using the scene meanwhile.
+    void updateInstances(const SceneArrays& arrays);
 
 private:
     vk::Buffer m_triangles;
@@ -86,6 +100,7 @@ private:
     vk::Buffer m_textures;
     vk::Buffer m_texels;                             // the environment map's floats
     vk::Buffer m_tables;  // the BSDF's albedo tables (shared/bsdf_tables.glsl kBsdfTables), binding kSceneTablesBinding
+    vk::Buffer m_instances;                          // GpuInstanceHeader + GpuInstance[] (docs/bvh.md)
     std::unique_ptr<vk::TextureArray> m_textureArray;
     uint32_t m_lightCount = 0;
 };

@@ -10,7 +10,7 @@ namespace vkp {
 RasterDirectPass::RasterDirectPass(vk::Context& context, const SceneArrays& arrays, const SceneBuffers& scene,
                                    const std::vector<gpu::GpuLight>& rasterLights, uint32_t width, uint32_t height,
                                    VolumeGeometry geometry)
-    : m_width(width), m_height(height), m_shadows(context, arrays.triangles, rasterLights, width, height, geometry),
+    : m_width(width), m_height(height), m_shadows(context, worldTriangles(arrays), rasterLights, width, height, geometry),
       m_direct(context, "raster direct", uint64_t(width) * height * sizeof(glm::vec4), vk::kStorageUsage),
       m_lighting(context),
       m_alphaTested(std::any_of(arrays.triangles.begin(), arrays.triangles.end(),

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "bvh/bvh.h"
+#include "bvh/scene_bvh.h"
 #include "shared/bsdf.glsl"
 #include "shared/guiding.glsl"
 #include "shared/photon.glsl"
@@ -12,7 +12,7 @@
 
 namespace vkp {
 
-GuideGridAtPixel guideGridAtPixel(const Scene& scene, const SceneArrays& arrays, const PathGuide& guide,
+GuideGridAtPixel guideGridAtPixel(const Scene& /*scene*/, const SceneArrays& arrays, const PathGuide& guide,
                                   const GuideSettings& settings, const Camera& camera, uint32_t width,
                                   uint32_t height, uint32_t x, uint32_t y) {
     if (x >= width || y >= height)
@@ -20,11 +20,11 @@ GuideGridAtPixel guideGridAtPixel(const Scene& scene, const SceneArrays& arrays,
     const gpu::GpuCamera cam = makeGpuCamera(camera, width, height);
     const glm::vec2 film(x + 0.5f, y + 0.5f);
     const glm::vec3 dir = gpu::cameraRayDirection(cam, width, height, film);
-    const Bvh bvh = buildBvh(scene.triangles);
-    const RayHit hit = closestHit(bvh, arrays.triangles, gpu::cameraRayOrigin(cam, width, height, film), dir, gpu::kInfinity);
+    const gpu::BvhArrays view = arrays.bvhArrays();
+    const RayHit hit = closestHit(view, gpu::cameraRayOrigin(cam, width, height, film), dir, gpu::kInfinity);
     if (!hit.hit) throw InputError(fmt::format("--pixel {} {}: the camera ray meets no surface", x, y));
-    const gpu::GpuTriangle& t = arrays.triangles[hit.triangle];
-    const gpu::GpuMaterial& material = arrays.materials[arrays.shading[hit.triangle].material];
+    const gpu::GpuTriangle t = worldTriangle(view, hit.triangle);
+    const gpu::GpuMaterial& material = arrays.materials[arrays.shading[triangleOfHit(view, hit.triangle)].material];
     gpu::BsdfParams bsdf = gpu::makeBsdfParams(glm::vec3(material.baseColor), material.metallic, material.roughness);
     bsdf.transmission = material.transmission;
     bsdf.ior = material.ior;

@@ -42,6 +42,8 @@ public:
     Renderer(vk::Context& context, const Scene& scene, LightSampling lightSampling = {});
 
     const GpuScene& gpuScene() const { return m_scene; }
+    // For per-frame instance motion (GpuScene::updateInstanceTransforms) between renders.
+    GpuScene& gpuScene() { return m_scene; }
 
     // Renders one frame with `integrator` (built for gpuScene()). `stop` (may be null) ends the
     // render after the current batch; the image then holds the samples accumulated so far.

@@ -21,6 +21,7 @@
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_files.h"
+#include "scene/gltf_instancing.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_preflight.h"
 #include "scene/gltf_tangents.h"
@@ -117,21 +118,24 @@ public:
         if (static_cast<size_t>(m_sceneIndex) >= m_model.scenes.size())
             fail(m_limits.sceneIndex >= 0 ? fmt::format("--scene {}", m_sceneIndex) : sceneName,
                  fmt::format("does not exist (the file has {} scene(s))", m_model.scenes.size()));
+        m_instancedMesh = planInstancedMeshes(m_model, m_model.scenes[m_sceneIndex].nodes, m_scene.materials,
+                                              m_limits.instanceMinTriangles);
         checkSize(m_model.scenes[m_sceneIndex].nodes, sceneName);
     }
 
-    // The scene's triangles, lights and cameras in world space, with the local transforms of
-    // `overrides` (indexed by node; nullopt or absent: the node's own) in place of the file's.
-    // keepBase false: the last flatten of this loader (no copy of the textures).
+    // The scene's triangles, instances, lights and cameras in world space, with the local
+    // transforms of `overrides` (indexed by node; nullopt or absent: the node's own) in place of
+    // the file's. keepBase false: the last flatten of this loader (no copy of the textures).
     Scene flatten(const std::vector<std::optional<glm::dmat4>>* overrides, bool keepBase = true) {
         const std::string sceneName = fmt::format("scenes[{}]", m_sceneIndex);
         Scene base = keepBase ? m_scene : Scene{};  // materials, textures and file facts; no geometry yet
         m_overrides = overrides;
         m_skippedPrimitives = 0;
         m_triangleKeys.clear();
+        m_meshSlot.assign(m_model.meshes.size(), -1);
         walk(m_model.scenes[m_sceneIndex].nodes);
         m_overrides = nullptr;
-        if (m_scene.triangles.empty())
+        if (m_scene.triangles.empty() && m_scene.instances.empty())
             fail(sceneName, m_skippedPrimitives ? "no triangle geometry to render (primitives of other modes are skipped)"
                                                 : "no triangle geometry to render");
         checkScale(sceneName);
@@ -161,12 +165,17 @@ private:
         uint64_t triangles = 0;
         std::vector<int> stack(roots.rbegin(), roots.rend());
         std::vector<bool> seen(m_model.nodes.size(), false);
+        std::vector<bool> meshCounted(m_model.meshes.size(), false);
         while (!stack.empty()) {
             const int index = stack.back();
             stack.pop_back();
             if (index < 0 || size_t(index) >= m_model.nodes.size() || seen[index]) continue;  // walk() names it
             seen[index] = true;
             const tinygltf::Node& node = m_model.nodes[index];
+            // An instanced mesh's triangles are stored once; a flattened one's per drawing.
+            const bool instanced = node.mesh >= 0 && size_t(node.mesh) < m_model.meshes.size() && m_instancedMesh[node.mesh];
+            const uint64_t copies = instanced ? (meshCounted[node.mesh] ? 0 : 1) : declaredInstanceCount(m_model, node);
+            if (instanced) meshCounted[node.mesh] = true;
             if (node.mesh >= 0 && size_t(node.mesh) < m_model.meshes.size())
                 for (const tinygltf::Primitive& primitive : m_model.meshes[node.mesh].primitives) {
                     if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != -1) continue;
@@ -174,7 +183,7 @@ private:
                     const int accessor = primitive.indices >= 0 ? primitive.indices
                                          : position != primitive.attributes.end() ? position->second : -1;
                     if (accessor >= 0 && size_t(accessor) < m_model.accessors.size())
-                        triangles += m_model.accessors[accessor].count / 3;
+                        triangles += m_model.accessors[accessor].count / 3 * copies;
                 }
             stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
         }
@@ -304,7 +313,7 @@ private:
     }
 
     void visit(const tinygltf::Node& node, const glm::dmat4& world, const std::string& element) {
-        if (node.mesh >= 0) addMesh(node.mesh, world, element);
+        if (node.mesh >= 0) addMeshDrawings(node, world, element);
         if (node.camera >= 0) addCamera(node.camera, world, element);
         if (const auto it = node.extensions.find("KHR_lights_punctual"); it != node.extensions.end()) {
             const tinygltf::Value& light = it->second.Get("light");
@@ -321,6 +330,72 @@ private:
             fail(nodeElement, fmt::format("the {} lies at ({:.3g}, {:.3g}, {:.3g}), beyond the +-{:g} units vkphoton handles",
                                           what, p.x, p.y, p.z, kMaxCoordinate));
         return glm::vec3(p);
+    }
+
+    // The node's mesh, once or at each EXT_mesh_gpu_instancing transform (in the node's space):
+    // flattened to world space, or as instances of a Scene::meshes entry (gltf_instancing.h).
+    void addMeshDrawings(const tinygltf::Node& node, const glm::dmat4& world, const std::string& element) {
+        if (static_cast<size_t>(node.mesh) >= m_model.meshes.size()) fail(fmt::format("meshes[{}]", node.mesh), "does not exist");
+        std::vector<glm::dmat4> transforms;
+        try {
+            transforms = readMeshInstances(m_model, node, element);
+        } catch (const InputError& e) {  // accessor errors name only the accessor
+            if (std::string_view(e.what()).rfind(element, 0) == 0) throw;
+            fail(fmt::format("{}.extensions.{}", element, kMeshGpuInstancing), e.what());
+        }
+        if (transforms.empty()) transforms.push_back(glm::dmat4(1.0));
+        const int nodeIndex = static_cast<int>(&node - m_model.nodes.data());
+        for (const glm::dmat4& local : transforms) {
+            const glm::dmat4 placed = world * local;
+            if (!isFinite(placed)) fail(element, "an instance's world transform is not finite");
+            if (m_instancedMesh[node.mesh]) addInstance(node.mesh, placed, nodeIndex, element);
+            else addMesh(node.mesh, placed, element);
+        }
+    }
+
+    // An instance of an instanced mesh, whose object-space triangles are read at its first use. A
+    // singular transform (a zero scale) draws nothing: skipped with a warning.
+    void addInstance(int meshIndex, const glm::dmat4& world, int nodeIndex, const std::string& nodeElement) {
+        if (m_meshSlot[meshIndex] < 0) {
+            Mesh mesh;
+            mesh.name = m_model.meshes[meshIndex].name.empty() ? fmt::format("meshes[{}]", meshIndex)
+                                                               : m_model.meshes[meshIndex].name;
+            std::unordered_set<std::string> keys;
+            m_target = &mesh;
+            m_targetKeys = &keys;
+            try {
+                addMesh(meshIndex, glm::dmat4(1.0), nodeElement);
+            } catch (...) {
+                m_target = nullptr;
+                m_targetKeys = nullptr;
+                throw;
+            }
+            m_target = nullptr;
+            m_targetKeys = nullptr;
+            m_meshSlot[meshIndex] = static_cast<int>(m_scene.meshes.size());
+            m_scene.meshes.push_back(std::move(mesh));
+        }
+        const Mesh& mesh = m_scene.meshes[m_meshSlot[meshIndex]];
+        if (mesh.triangles.empty()) return;  // nothing survived (degenerate or skipped primitives)
+        const double det = glm::determinant(glm::dmat3(world));
+        if (!(std::abs(det) > 1.0e-30)) {
+            if (!m_warnedSingularInstance) warn(fmt::format("{}: an instance of meshes[{}] has a zero scale (singular "
+                                                            "transform) and draws nothing; skipped", nodeElement, meshIndex));
+            m_warnedSingularInstance = true;
+            return;
+        }
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::dvec3 p((corner & 1) ? mesh.bounds.max.x : mesh.bounds.min.x,
+                               (corner & 2) ? mesh.bounds.max.y : mesh.bounds.min.y,
+                               (corner & 4) ? mesh.bounds.max.z : mesh.bounds.min.z);
+            const glm::dvec3 w(world * glm::dvec4(p, 1.0));
+            if (!(std::max({std::abs(w.x), std::abs(w.y), std::abs(w.z)}) <= kMaxCoordinate))
+                fail(nodeElement, fmt::format("an instance of meshes[{}] reaches ({:.3g}, {:.3g}, {:.3g}) in world space, "
+                                              "beyond the +-{:g} units vkphoton handles",
+                                              meshIndex, w.x, w.y, w.z, kMaxCoordinate));
+            m_scene.bounds.grow(glm::vec3(w));
+        }
+        m_scene.instances.push_back({static_cast<uint32_t>(m_meshSlot[meshIndex]), glm::mat4(world), nodeIndex});
     }
 
     void addMesh(int meshIndex, const glm::dmat4& world, const std::string& nodeElement) {
@@ -414,7 +489,7 @@ private:
                                               indices);
             }
         }
-        if (m_scene.triangles.size() + indices.size() / 3 > m_limits.maxTriangles)
+        if ((m_target ? m_target->triangles : m_scene.triangles).size() + indices.size() / 3 > m_limits.maxTriangles)
             fail(element, fmt::format("the scene exceeds the limit of {} triangles", m_limits.maxTriangles));
         emitTriangles(v, indices, world, material);
     }
@@ -490,11 +565,16 @@ private:
                 for (glm::vec4& tangent : t.tangent) tangent = glm::vec4(0.0f);
             // An exact copy of an earlier triangle adds nothing to the image, but a million of them
             // overlap in every BVH leaf and make rays too long for the device's loop limit.
-            if (!m_triangleKeys.insert(triangleKey(t)).second) {
+            if (!(m_targetKeys ? *m_targetKeys : m_triangleKeys).insert(triangleKey(t)).second) {
                 ++m_scene.droppedDuplicateTriangles;
                 continue;
             }
             t.material = material;
+            if (m_target) {  // an instanced mesh, in object space (addInstance)
+                for (const glm::vec3& p : t.p) m_target->bounds.grow(p);
+                m_target->triangles.push_back(t);
+                continue;
+            }
             for (const glm::vec3& p : t.p) m_scene.bounds.grow(p);
             m_scene.triangles.push_back(t);
         }
@@ -578,6 +658,13 @@ private:
     std::optional<GltfMaterials> m_materials;  // made once the model is parsed
     size_t m_skippedPrimitives = 0;
     std::unordered_set<std::string> m_triangleKeys;
+    // Instanced meshes (gltf_instancing.h): which glTF meshes, their Scene::meshes index once
+    // read (-1 before), and where emitTriangles puts a mesh's triangles while it is read.
+    std::vector<bool> m_instancedMesh;
+    std::vector<int> m_meshSlot;
+    Mesh* m_target = nullptr;
+    std::unordered_set<std::string>* m_targetKeys = nullptr;
+    bool m_warnedSingularInstance = false;
     std::string m_nodeElement, m_primitiveElement;  // what emitTriangles names
     int m_sceneIndex = 0;
     const std::vector<std::optional<glm::dmat4>>* m_overrides = nullptr;  // flatten()'s animated local transforms

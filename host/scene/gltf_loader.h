@@ -25,6 +25,10 @@ struct GltfLimits {
     uint64_t maxMemoryBytes = UINT64_MAX;      // --max-memory, else the memory available
     // Not a limit: which glTF scene to load (--scene); -1: the file's `scene`, else scene 0.
     int sceneIndex = -1;
+    // Not a limit: a glTF mesh drawn at least twice (nodes, EXT_mesh_gpu_instancing) with at least
+    // this many triangles is kept once as an instanced mesh (docs/bvh.md) instead of copied per
+    // drawing; 0: every repeated mesh, UINT64_MAX: none (animated nodes' meshes always are).
+    uint64_t instanceMinTriangles = 64;
 };
 
 // Host memory the loader, the BVH build and the upload need per triangle at their peak, for the

@@ -134,6 +134,24 @@ struct SceneFileInfo {
     std::vector<AnimationInfo> animations;        // not played: the scene is its rest pose
 };
 
+// A mesh placed by instances (docs/bvh.md): its triangles in object space (Triangle's fields
+// then hold object-space positions, normals and tangents), one bottom-level BVH for all its
+// instances. The loader makes meshes of those glTF meshes that are drawn several times
+// (EXT_mesh_gpu_instancing or several nodes) or animated; everything else is flattened into
+// Scene::triangles. Meshes never emit light (emissive ones stay flattened).
+struct Mesh {
+    std::string name;
+    std::vector<Triangle> triangles;
+    Bounds bounds;                  // object space
+};
+
+// One placement of a mesh: object-to-world transform (affine, invertible).
+struct Instance {
+    uint32_t mesh = 0;              // index into Scene::meshes
+    glm::mat4 transform{1.0f};
+    int node = -1;                  // the glTF node that placed it (-1: none)
+};
+
 struct Scene {
     std::filesystem::path source;
     std::vector<Triangle> triangles;
@@ -148,6 +166,15 @@ struct Scene {
     size_t droppedDuplicateTriangles = 0;    // the same three world positions as an earlier one
     Environment environment;                 // --env (scene/environment.h), not from the file
     bool energyCompensation = true;          // multiple-scattering GGX (render --no-energy-compensation)
+    std::vector<Mesh> meshes;                // instanced meshes (object space), docs/bvh.md
+    std::vector<Instance> instances;         // their placements; Scene::triangles holds the rest
 };
+
+// Every triangle in world space: Scene::triangles, then each instance's mesh transformed (the
+// single-level scene the instances stand for; tests and the raster pass compare against it).
+std::vector<Triangle> flattenedTriangles(const Scene& scene);
+// One instance's triangles in world space (normals by the inverse transpose; a mirroring
+// transform swaps two vertices and flips tangent handedness, as the loader does).
+void appendInstanceTriangles(const Mesh& mesh, const glm::mat4& transform, std::vector<Triangle>& out);
 
 }  // namespace vkp

@@ -2,12 +2,15 @@
 // (closestHit and anyHit in host/bvh/bvh.cpp, which tests/bvh_test.cpp checks against brute force
 // over every triangle), so the tests check the shaders' own traversal.
 //
-// The arrays are reached through BVH_NODE(i) and BVH_TRIANGLE(i):
+// The arrays are reached through BVH_NODE(i), BVH_TRIANGLE(i), BVH_INSTANCE(i) and
+// BVH_INSTANCE_HEADER:
 //  - GLSL: the including shader declares, before including this file,
-//      readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };   // host/bvh: root at 0, children adjacent
-//      readonly buffer Triangles { GpuTriangle triangles[]; }; // in BVH order (Bvh::triangleOrder)
-//  - C++: every function takes a BvhArrays (spans of the same two arrays) as its first argument
+//      readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };   // static tree at 0, meshes', top level
+//      readonly buffer Triangles { GpuTriangle triangles[]; }; // static (BVH order), then meshes'
+//      readonly buffer Instances { GpuInstanceHeader instanceHeader; GpuInstance instances[]; };
+//  - C++: every function takes a BvhArrays (spans of the same arrays) as its first argument
 //    (BVH_ARRAYS_PARAM; nothing in GLSL).
+// docs/bvh.md describes the two levels and the hit ids.
 //
 // Ordered depth-first traversal with a per-invocation stack: at an inner node both child boxes
 // are tested, the nearer is visited next and the farther pushed with its entry distance, which is
@@ -29,20 +32,28 @@
 SHARED_BEGIN
 
 #ifdef __cplusplus
-// The tree (Bvh::nodes) and its triangles in BVH order (gpuTriangles()).
+// The trees (SceneArrays::nodes: the static tree at 0, meshes' trees, the top level), their
+// triangles (static ones in BVH order, then each mesh's) and the instances. A single tree
+// (Bvh::nodes, gpuTriangles()) has no instances: header.instanceCount 0.
 struct BvhArrays {
     std::span<const GpuBvhNode> nodes;
     std::span<const GpuTriangle> triangles;
+    std::span<const GpuInstance> instances = {};
+    GpuInstanceHeader header = {};
 };
 #define BVH_ARRAYS_PARAM const BvhArrays& bvhArrays,
 #define BVH_ARRAYS_ARG bvhArrays,
 #define BVH_NODE(i) bvhArrays.nodes[i]
 #define BVH_TRIANGLE(i) bvhArrays.triangles[i]
+#define BVH_INSTANCE(i) bvhArrays.instances[i]
+#define BVH_INSTANCE_HEADER bvhArrays.header
 #else
 #define BVH_ARRAYS_PARAM
 #define BVH_ARRAYS_ARG
 #define BVH_NODE(i) bvhNodes[i]
 #define BVH_TRIANGLE(i) triangles[i]
+#define BVH_INSTANCE(i) instances[i]
+#define BVH_INSTANCE_HEADER instanceHeader
 #endif
 
 // Whether a hit on `triangle` (index tri) counts: the including GLSL defines it as glTF's alpha
@@ -52,7 +63,7 @@ struct BvhArrays {
 #define BVH_ALPHA_TEST(triangle, tri, b1, b2, org, dir) true
 #endif
 
-// Triangle index reported by traceClosest when nothing is hit.
+// Hit id reported by traceClosest when nothing is hit.
 const uint kBvhNoTriangle = 0xffffffffu;
 
 // A tree over no triangles is a single node with count 0 and leftOrFirst 0: an inner node can
@@ -61,51 +72,95 @@ INLINE bool bvhIsEmptyRoot(GpuBvhNode root) {
     return root.count == 0u && root.leftOrFirst == 0u;
 }
 
-// Walks the tree for hits with 0 < t < tMax. Closest-hit mode (anyHit false) returns the
-// nearest hit: t, the index into triangles[] and the barycentrics (b1, b2) of v1 and v2; among
-// hits at exactly equal t the first one visited wins. Any-hit mode returns at the first hit
-// found (shadow and visibility rays). On a miss: false, t = tMax, tri = kBvhNoTriangle.
+// Rows of a 3x4 matrix (GpuInstance) applied to a point and to a direction.
+INLINE vec3 transformPoint3x4(vec4 r0, vec4 r1, vec4 r2, vec3 p) {
+    return vec3(dot(vec3(r0), p) + r0.w, dot(vec3(r1), p) + r1.w, dot(vec3(r2), p) + r2.w);
+}
+INLINE vec3 transformVector3x4(vec4 r0, vec4 r1, vec4 r2, vec3 v) {
+    return vec3(dot(vec3(r0), v), dot(vec3(r1), v), dot(vec3(r2), v));
+}
+
+// Walks the scene for hits with 0 < t < tMax. Closest-hit mode (anyHit false) returns the
+// nearest hit: t, its hit id (docs/bvh.md: the triangle's index for the static tree, the
+// instance's firstId + the index within its mesh otherwise) and the barycentrics (b1, b2) of v1
+// and v2; among hits at exactly equal t the first one visited wins. Any-hit mode returns at the
+// first hit found (shadow and visibility rays). On a miss: false, t = tMax, tri = kBvhNoTriangle.
+//
+// Two levels, one loop and one stack: the static tree (world space, root 0) is walked first
+// while the top level's root waits at the bottom of the stack. A top-level leaf enters its
+// instance: the ray goes to object space (origin and direction through worldToObject, the
+// direction not renormalised, so t means the same distance in both spaces and one running t
+// serves both levels) and the walk continues at the mesh's root; popping back below the stack
+// depth at which the instance was entered restores the world-space ray.
 INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool anyHit, OUT(float) t, OUT(uint) tri,
                         OUT(float) b1, OUT(float) b2) {
     t = tMax;
     tri = kBvhNoTriangle;
     b1 = 0.0f;
     b2 = 0.0f;
-    vec3 invDir = safeInverseDirection(dir);
-    GpuBvhNode node = BVH_NODE(0u);
-    if (bvhIsEmptyRoot(node) ||
-        intersectAabb(org, invDir, node.boundsMin, node.boundsMax, tMax) >= kInfinity) {
-        return false;
-    }
+    vec3 worldInvDir = safeInverseDirection(dir);
     uint stackNode[kBvhMaxDepth];
     float stackEntry[kBvhMaxDepth];
     uint sp = 0u;
+    GpuInstanceHeader header = BVH_INSTANCE_HEADER;
+    if (header.instanceCount > 0u) {
+        GpuBvhNode top = BVH_NODE(header.tlasRoot);
+        float entry = intersectAabb(org, worldInvDir, top.boundsMin, top.boundsMax, tMax);
+        if (entry < kInfinity) {
+            stackNode[0] = header.tlasRoot;
+            stackEntry[0] = entry;
+            sp = 1u;
+        }
+    }
+    GpuBvhNode node = BVH_NODE(0u);
+    // Visit `node` (its box is hit) or, when false, take the next one from the stack.
+    bool visit = !bvhIsEmptyRoot(node) &&
+                 intersectAabb(org, worldInvDir, node.boundsMin, node.boundsMax, tMax) < kInfinity;
+    // The ray in the space of the tree being walked, and what turns a triangle index there into
+    // a hit id; instanceDepth: the stack depth at which the current instance was entered.
+    vec3 o = org;
+    vec3 d = dir;
+    vec3 invDir = worldInvDir;
+    bool inInstance = false;
+    uint instanceDepth = 0u;
+    uint idOffset = 0u;
     bool finished = false;
     uint step = 0u;
     for (; step < kBvhMaxSteps; ++step) {
-        if (node.count > 0u) {
+        if (visit && node.count == kBvhInstanceLeaf) {
+            GpuInstance instance = BVH_INSTANCE(node.leftOrFirst);
+            o = transformPoint3x4(instance.worldToObject[0], instance.worldToObject[1], instance.worldToObject[2], org);
+            d = transformVector3x4(instance.worldToObject[0], instance.worldToObject[1], instance.worldToObject[2], dir);
+            invDir = safeInverseDirection(d);
+            inInstance = true;
+            instanceDepth = sp;
+            idOffset = instance.firstId - instance.firstTriangle;  // modulo 2^32
+            node = BVH_NODE(instance.blasRoot);
+            continue;
+        }
+        if (visit && node.count > 0u) {
             uint end = node.leftOrFirst + node.count;
             for (uint i = node.leftOrFirst; i < end; ++i) {
                 GpuTriangle triangle = BVH_TRIANGLE(i);
                 float tCandidate;
                 float b1Candidate;
                 float b2Candidate;
-                if (intersectTriangle(org, dir, vec3(triangle.v0), vec3(triangle.v1), vec3(triangle.v2), t,
+                if (intersectTriangle(o, d, vec3(triangle.v0), vec3(triangle.v1), vec3(triangle.v2), t,
                                       tCandidate, b1Candidate, b2Candidate) &&
-                    BVH_ALPHA_TEST(triangle, i, b1Candidate, b2Candidate, org, dir)) {
+                    BVH_ALPHA_TEST(triangle, i, b1Candidate, b2Candidate, o, d)) {
                     t = tCandidate;
-                    tri = i;
+                    tri = i + idOffset;
                     b1 = b1Candidate;
                     b2 = b2Candidate;
                     if (anyHit) return true;
                 }
             }
-        } else {
+        } else if (visit) {
             uint left = node.leftOrFirst;
             GpuBvhNode leftNode = BVH_NODE(left);
             GpuBvhNode rightNode = BVH_NODE(left + 1u);
-            float entryLeft = intersectAabb(org, invDir, leftNode.boundsMin, leftNode.boundsMax, t);
-            float entryRight = intersectAabb(org, invDir, rightNode.boundsMin, rightNode.boundsMax, t);
+            float entryLeft = intersectAabb(o, invDir, leftNode.boundsMin, leftNode.boundsMax, t);
+            float entryRight = intersectAabb(o, invDir, rightNode.boundsMin, rightNode.boundsMax, t);
             bool hitLeft = entryLeft < kInfinity;
             bool hitRight = entryRight < kInfinity;
             if (hitLeft && hitRight) {
@@ -128,16 +183,24 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool an
             }
         }
         // Pop the nearest pending subtree that can still hold a closer hit; the same bound as
-        // intersectAabb(..., t) would apply (exit widened by kAabbExitScale).
-        bool popped = false;
-        while (sp > 0u && !popped) {
+        // intersectAabb(..., t) would apply (exit widened by kAabbExitScale). Entries below the
+        // instance's depth belong to the world-space levels.
+        visit = false;
+        while (sp > 0u && !visit) {
+            if (inInstance && sp == instanceDepth) {
+                o = org;
+                d = dir;
+                invDir = worldInvDir;
+                inInstance = false;
+                idOffset = 0u;
+            }
             --sp;
             if (stackEntry[sp] <= t * kAabbExitScale) {
                 node = BVH_NODE(stackNode[sp]);
-                popped = true;
+                visit = true;
             }
         }
-        if (!popped) {
+        if (!visit) {
             finished = true;
             break;
         }
@@ -164,6 +227,8 @@ INLINE bool traceAny(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax) {
 #undef BVH_ARRAYS_ARG
 #undef BVH_NODE
 #undef BVH_TRIANGLE
+#undef BVH_INSTANCE
+#undef BVH_INSTANCE_HEADER
 
 SHARED_END
 #endif

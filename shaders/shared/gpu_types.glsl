@@ -53,6 +53,35 @@ struct GpuBvhNode {
 };
 STATIC_ASSERT_SIZE(GpuBvhNode, 32)
 
+// Two-level BVH (docs/bvh.md): an instance places one mesh's bottom-level tree in the world.
+// The matrices are 3x4, stored as their three rows (world = row . (p, 1)); worldToObject is the
+// inverse. Hit ids from firstId on belong to this instance (id - firstId = the triangle's index
+// within its mesh, BVH order).
+struct GpuInstance {
+    vec4 objectToWorld[3];
+    vec4 worldToObject[3];
+    uint blasRoot;          // node index of its mesh's BVH root
+    uint firstTriangle;     // its mesh's first triangle in the triangle and shading buffers
+    uint firstId;           // hit id of that triangle
+    uint flags;             // kInstance* bits
+};
+STATIC_ASSERT_SIZE(GpuInstance, 112)
+
+const uint kInstanceMirrored = 1u;  // the transform's determinant is negative (winding reversed)
+
+// Start of the instance buffer. Hit ids below staticTriangles are indices into the triangle
+// buffers (the static, world-space tree at node 0); the others belong to an instance.
+struct GpuInstanceHeader {
+    uint instanceCount;
+    uint tlasRoot;          // node index of the top-level root (when instanceCount > 0)
+    uint staticTriangles;
+    uint pad0;
+};
+STATIC_ASSERT_SIZE(GpuInstanceHeader, 16)
+
+// A top-level leaf: count == kBvhInstanceLeaf, leftOrFirst = the instance's index.
+const uint kBvhInstanceLeaf = 0x80000000u;
+
 const uint kMaterialDoubleSided = 1u;
 const uint kMaterialThinWalled = 2u;  // transmissive without KHR_materials_volume thickness
 const uint kMaterialAlphaMask = 4u;   // alphaMode MASK: a cut-out where alpha < alphaCutoff

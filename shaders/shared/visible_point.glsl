@@ -20,7 +20,7 @@ struct GpuVisiblePoint {
     uint geometricNormal;   // octahedral, on the arrival side (for offsetting gather rays)
     uint flags;
     uint pixel;
-    uint triangle;          // BVH order
+    uint triangle;          // hit id (docs/bvh.md)
     uint pad1;
 };
 STATIC_ASSERT_SIZE(GpuVisiblePoint, 64)

@@ -7,7 +7,8 @@
 //   binding 1  GpuBvhNode[]   (Bvh::nodes)
 //   binding 2  GpuTriangle[]  (gpuTriangles(), BVH order)
 //   binding 3  TestHit { float t; uint tri; float b1; float b2; uint anyHit; }         20 B
-//              miss: t = tMax, tri = 0xffffffff (kBvhNoTriangle), b1 = b2 = 0
+//              miss: t = tMax, tri = 0xffffffff (kBvhNoTriangle), b1 = b2 = 0; tri is the hit id
+//   binding 4  GpuInstanceHeader, GpuInstance[]  (instanceCount 0: the single tree at node 0)
 //   push constant: uint rayCount
 //   set 1: the termination counters (a ray whose traversal was cut short counts as a sample)
 #version 460
@@ -37,6 +38,10 @@ layout(std430, set = 0, binding = kBvhTestRayBinding) readonly buffer Rays { Tes
 layout(std430, set = 0, binding = kBvhTestNodeBinding) readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };
 layout(std430, set = 0, binding = kBvhTestTriangleBinding) readonly buffer Triangles { GpuTriangle triangles[]; };
 layout(std430, set = 0, binding = kBvhTestHitBinding) writeonly buffer Hits { TestHit hits[]; };
+layout(std430, set = 0, binding = kBvhTestInstanceBinding) readonly buffer Instances {
+    GpuInstanceHeader instanceHeader;
+    GpuInstance instances[];
+};
 layout(push_constant) uniform Push { uint rayCount; } push;
 
 #include "shared/bvh_traverse.glsl"

@@ -25,6 +25,7 @@ const uint kBvhTestRayBinding = 0u;       // TestRay
 const uint kBvhTestNodeBinding = 1u;      // GpuBvhNode
 const uint kBvhTestTriangleBinding = 2u;  // GpuTriangle, BVH order
 const uint kBvhTestHitBinding = 3u;       // TestHit
+const uint kBvhTestInstanceBinding = 4u;  // GpuInstanceHeader, GpuInstance[] (count 0: one tree)
 
 // photon_gather_test.comp
 const uint kGatherTestQueryBinding = 0u;    // GatherQuery
@@ -41,9 +42,9 @@ struct GatherTestParams {
 };
 STATIC_ASSERT_SIZE(GatherTestParams, 112)
 
-// shadow_visibility_test.comp: the scene's 0..7, then; push constants: RasterDirectParams.
-const uint kShadowTestLightBinding = kSceneBindingCount + 0u;    // GpuLight: the raster lights
-const uint kShadowTestOutputBinding = kSceneBindingCount + 1u;   // uint[3] per pixel
+// shadow_visibility_test.comp: the scene's bindings, then; push constants: RasterDirectParams.
+const uint kShadowTestLightBinding = kSceneBindingCount + 0u;  // GpuLight: the raster lights
+const uint kShadowTestOutputBinding = kSceneBindingCount + 1u;  // uint[3] per pixel
 
 // kernel_interface_test.comp: outputs[i] = inputs[i] * scale + offset.
 const uint kInterfaceTestInputBinding = 0u;
@@ -84,7 +85,7 @@ struct HarnessKernel {
 };
 struct BvhTestKernel {
     static constexpr const char* kShader = "bvh_trace_test.comp";
-    static constexpr uint32_t kBindingCount = kBvhTestHitBinding + 1u;
+    static constexpr uint32_t kBindingCount = kBvhTestInstanceBinding + 1u;
     static constexpr uint32_t kGroupSize = kTestGroupSize;
     using Push = uint32_t;
 };

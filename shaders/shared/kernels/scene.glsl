@@ -15,7 +15,8 @@ const uint kSceneLightCdfBinding = 5u;   // float: inclusive prefix sums of the 
 const uint kSceneTexturesBinding = 6u;   // GpuTexture
 const uint kSceneTexelsBinding = 7u;     // float: the environment map (textures are images: below)
 const uint kSceneTablesBinding = 8u;     // float: the BSDF's albedo tables (shared/bsdf_tables.glsl kBsdfTables)
-const uint kSceneBindingCount = 9u;
+const uint kSceneInstancesBinding = 9u;  // GpuInstanceHeader, then GpuInstance[] (two-level BVH, docs/bvh.md)
+const uint kSceneBindingCount = 10u;
 
 // The textures: one RGBA8 2-D array image (host/gpu_scene/texture_atlas.h), read with texelFetch
 // through two views, in a descriptor set of their own (set 1 holds the termination counters).
