@@ -45,9 +45,11 @@ struct BvhArrays {
 #define BVH_TRIANGLE(i) triangles[i]
 #endif
 
-// Whether a hit on `triangle` (index tri) counts: the including GLSL defines it as glTF's alpha
-// test (scene_access.glsl alphaPasses, for triangles with v0.w != 0); the host traversal has no
-// materials, so every hit counts there.
+// Whether a hit on an alpha-tested `triangle` (v0.w != 0, index tri) counts: the including GLSL
+// defines it as glTF's alpha test (scene_access.glsl alphaPasses); the host traversal has no
+// materials, so every hit counts there. It is evaluated OUTSIDE the traversal's triangle loop, by
+// the trace wrappers below (lavapipe inlines it at every trace call site: inside the loop it cost
+// every triangle test of every scene, issue 17).
 #ifndef BVH_ALPHA_TEST
 #define BVH_ALPHA_TEST(triangle, tri, b1, b2, org, dir) true
 #endif
@@ -55,18 +57,27 @@ struct BvhArrays {
 // Triangle index reported by traceClosest when nothing is hit.
 const uint kBvhNoTriangle = 0xffffffffu;
 
+// Traversals one trace may run: the first, then one per alpha-tested hit that fails the test
+// (restarting past it). A ray passing more cut-out layers than that counts as a miss and notes
+// kTerminationLoopBound.
+const uint kBvhMaxAlphaPasses = 64u;
+
 // A tree over no triangles is a single node with count 0 and leftOrFirst 0: an inner node can
 // never point at index 0 (the root), and no box encodes "empty" for the symmetric slab test.
 INLINE bool bvhIsEmptyRoot(GpuBvhNode root) {
     return root.count == 0u && root.leftOrFirst == 0u;
 }
 
-// Walks the tree for hits with 0 < t < tMax. Closest-hit mode (anyHit false) returns the
-// nearest hit: t, the index into triangles[] and the barycentrics (b1, b2) of v1 and v2; among
-// hits at exactly equal t the first one visited wins. Any-hit mode returns at the first hit
-// found (shadow and visibility rays). On a miss: false, t = tMax, tri = kBvhNoTriangle.
-INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool anyHit, OUT(float) t, OUT(uint) tri,
-                        OUT(float) b1, OUT(float) b2) {
+// Walks the tree for hits with 0 < t < tMax that come after (tMin, minTri) in (t, index) order:
+// t > tMin, or t == tMin and index > minTri (tMin 0: every hit; the alpha restarts pass the hit
+// that failed). Closest-hit mode (anyHit false) returns the nearest hit: t, the index into
+// triangles[] and the barycentrics (b1, b2) of v1 and v2; among hits at exactly equal t the
+// first one visited wins. Any-hit mode returns at the first hit found on a triangle without
+// alpha test (shadow and visibility rays); hits on alpha-tested ones only set alphaSeen. On a
+// miss: false, t = tMax, tri = kBvhNoTriangle.
+INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMin, uint minTri, float tMax, bool anyHit,
+                        OUT(float) t, OUT(uint) tri, OUT(float) b1, OUT(float) b2, OUT(bool) alphaSeen) {
+    alphaSeen = false;
     t = tMax;
     tri = kBvhNoTriangle;
     b1 = 0.0f;
@@ -92,7 +103,11 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool an
                 float b2Candidate;
                 if (intersectTriangle(org, dir, vec3(triangle.v0), vec3(triangle.v1), vec3(triangle.v2), t,
                                       tCandidate, b1Candidate, b2Candidate) &&
-                    BVH_ALPHA_TEST(triangle, i, b1Candidate, b2Candidate, org, dir)) {
+                    (tCandidate > tMin || (tCandidate == tMin && i > minTri))) {
+                    if (anyHit && triangle.v0.w != 0.0f) {
+                        alphaSeen = true;
+                        continue;
+                    }
                     t = tCandidate;
                     tri = i;
                     b1 = b1Candidate;
@@ -147,9 +162,39 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool an
     return tri != kBvhNoTriangle;
 }
 
+// One trace, alpha test outside the traversal: closest-hit mode restarts past an alpha-tested hit
+// that fails BVH_ALPHA_TEST; any-hit mode first walks ignoring alpha-tested triangles, and only
+// when it found one of them and no opaque occluder goes on as closest-hit with the alpha test
+// (scenes without alpha-tested triangles walk once, as before).
+INLINE bool traceBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool anyHit, OUT(float) t, OUT(uint) tri,
+                     OUT(float) b1, OUT(float) b2) {
+    bool anyMode = anyHit;
+    float tMin = 0.0f;
+    uint minTri = kBvhNoTriangle;
+    for (uint pass = 0u; pass < kBvhMaxAlphaPasses; ++pass) {
+        bool alphaSeen;
+        bool hit = traverseBvh(BVH_ARRAYS_ARG org, dir, tMin, minTri, tMax, anyMode, t, tri, b1, b2, alphaSeen);
+        if (anyMode) {
+            if (hit || !alphaSeen) return hit;
+            anyMode = false;
+            continue;
+        }
+        if (!hit || BVH_TRIANGLE(tri).v0.w == 0.0f ||
+            BVH_ALPHA_TEST(BVH_TRIANGLE(tri), tri, b1, b2, org, dir)) {
+            return hit;
+        }
+        tMin = t;
+        minTri = tri;
+    }
+    noteTermination(kTerminationLoopBound);
+    t = tMax;
+    tri = kBvhNoTriangle;
+    return false;
+}
+
 INLINE bool traceClosest(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, OUT(float) t, OUT(uint) tri, OUT(float) b1,
                          OUT(float) b2) {
-    return traverseBvh(BVH_ARRAYS_ARG org, dir, tMax, false, t, tri, b1, b2);
+    return traceBvh(BVH_ARRAYS_ARG org, dir, tMax, false, t, tri, b1, b2);
 }
 
 INLINE bool traceAny(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax) {
@@ -157,7 +202,7 @@ INLINE bool traceAny(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax) {
     uint tri;
     float b1;
     float b2;
-    return traverseBvh(BVH_ARRAYS_ARG org, dir, tMax, true, t, tri, b1, b2);
+    return traceBvh(BVH_ARRAYS_ARG org, dir, tMax, true, t, tri, b1, b2);
 }
 
 #undef BVH_ARRAYS_PARAM
