@@ -109,7 +109,8 @@ bool alphaPasses(uint tri, float b1, float b2, vec3 org, vec3 dir) {
     h = hashCombine(h, floatBitsToUint(dir.z));
     return uintToUnitFloat(h) < alpha;
 }
-#define BVH_ALPHA_TEST(triangle, tri, b1, b2, org, dir) ((triangle).v0.w == 0.0f || alphaPasses(tri, b1, b2, org, dir))
+// Called by traceClosest/traceAny (shared/bvh_traverse.glsl) only for hits on triangles with v0.w != 0.
+#define BVH_ALPHA_TEST(triangle, tri, b1, b2, org, dir) alphaPasses(tri, b1, b2, org, dir)
 
 #include "shared/intersect.glsl"
 #include "shared/bvh_traverse.glsl"

@@ -56,15 +56,22 @@ struct BvhArrays {
 #define BVH_INSTANCE_HEADER instanceHeader
 #endif
 
-// Whether a hit on `triangle` (index tri) counts: the including GLSL defines it as glTF's alpha
-// test (scene_access.glsl alphaPasses, for triangles with v0.w != 0); the host traversal has no
-// materials, so every hit counts there.
+// Whether a hit on an alpha-tested `triangle` (v0.w != 0, index tri) counts: the including GLSL
+// defines it as glTF's alpha test (scene_access.glsl alphaPasses); the host traversal has no
+// materials, so every hit counts there. It is evaluated OUTSIDE the traversal's triangle loop, by
+// the trace wrappers below (lavapipe inlines it at every trace call site: inside the loop it cost
+// every triangle test of every scene, issue 17).
 #ifndef BVH_ALPHA_TEST
 #define BVH_ALPHA_TEST(triangle, tri, b1, b2, org, dir) true
 #endif
 
 // Hit id reported by traceClosest when nothing is hit.
 const uint kBvhNoTriangle = 0xffffffffu;
+
+// Traversals one trace may run: the first, then one per alpha-tested hit that fails the test
+// (restarting past it). A ray passing more cut-out layers than that counts as a miss and notes
+// kTerminationLoopBound.
+const uint kBvhMaxAlphaPasses = 64u;
 
 // A tree over no triangles is a single node with count 0 and leftOrFirst 0: an inner node can
 // never point at index 0 (the root), and no box encodes "empty" for the symmetric slab test.
@@ -80,11 +87,15 @@ INLINE vec3 transformVector3x4(vec4 r0, vec4 r1, vec4 r2, vec3 v) {
     return vec3(dot(vec3(r0), v), dot(vec3(r1), v), dot(vec3(r2), v));
 }
 
-// Walks the scene for hits with 0 < t < tMax. Closest-hit mode (anyHit false) returns the
-// nearest hit: t, its hit id (docs/bvh.md: the triangle's index for the static tree, the
-// instance's firstId + the index within its mesh otherwise) and the barycentrics (b1, b2) of v1
-// and v2; among hits at exactly equal t the first one visited wins. Any-hit mode returns at the
-// first hit found (shadow and visibility rays). On a miss: false, t = tMax, tri = kBvhNoTriangle.
+// Walks the scene for hits with 0 < t < tMax that come after (tMin, minTri) in (t, hit id)
+// order: t > tMin, or t == tMin and id > minTri (tMin 0: every hit; the alpha restarts pass the
+// hit that failed). Closest-hit mode (anyHit false) returns the nearest hit: t, its hit id
+// (docs/bvh.md: the triangle's index for the static tree, the instance's firstId + the index
+// within its mesh otherwise), the index of its triangle in triangles[] (triIndex) and the
+// barycentrics (b1, b2) of v1 and v2; among hits at exactly equal t the first one visited wins.
+// Any-hit mode returns at the first hit found on a triangle without alpha test (shadow and
+// visibility rays); hits on alpha-tested ones only set alphaSeen. On a miss: false, t = tMax,
+// tri = kBvhNoTriangle.
 //
 // Two levels, one loop and one stack: the static tree (world space, root 0) is walked first
 // while the top level's root waits at the bottom of the stack. A top-level leaf enters its
@@ -92,8 +103,11 @@ INLINE vec3 transformVector3x4(vec4 r0, vec4 r1, vec4 r2, vec3 v) {
 // direction not renormalised, so t means the same distance in both spaces and one running t
 // serves both levels) and the walk continues at the mesh's root; popping back below the stack
 // depth at which the instance was entered restores the world-space ray.
-INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool anyHit, OUT(float) t, OUT(uint) tri,
-                        OUT(float) b1, OUT(float) b2) {
+INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMin, uint minTri, float tMax, bool anyHit,
+                        OUT(float) t, OUT(uint) tri, OUT(uint) triIndex, OUT(float) b1, OUT(float) b2,
+                        OUT(bool) alphaSeen) {
+    alphaSeen = false;
+    triIndex = kBvhNoTriangle;
     t = tMax;
     tri = kBvhNoTriangle;
     b1 = 0.0f;
@@ -147,9 +161,14 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool an
                 float b2Candidate;
                 if (intersectTriangle(o, d, vec3(triangle.v0), vec3(triangle.v1), vec3(triangle.v2), t,
                                       tCandidate, b1Candidate, b2Candidate) &&
-                    BVH_ALPHA_TEST(triangle, i, b1Candidate, b2Candidate, o, d)) {
+                    (tCandidate > tMin || (tCandidate == tMin && i + idOffset > minTri))) {
+                    if (anyHit && triangle.v0.w != 0.0f) {
+                        alphaSeen = true;
+                        continue;
+                    }
                     t = tCandidate;
                     tri = i + idOffset;
+                    triIndex = i;
                     b1 = b1Candidate;
                     b2 = b2Candidate;
                     if (anyHit) return true;
@@ -210,9 +229,40 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool an
     return tri != kBvhNoTriangle;
 }
 
+// One trace, alpha test outside the traversal: closest-hit mode restarts past an alpha-tested hit
+// that fails BVH_ALPHA_TEST; any-hit mode first walks ignoring alpha-tested triangles, and only
+// when it found one of them and no opaque occluder goes on as closest-hit with the alpha test
+// (scenes without alpha-tested triangles walk once, as before).
+INLINE bool traceBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool anyHit, OUT(float) t, OUT(uint) tri,
+                     OUT(float) b1, OUT(float) b2) {
+    bool anyMode = anyHit;
+    float tMin = 0.0f;
+    uint minTri = kBvhNoTriangle;
+    for (uint pass = 0u; pass < kBvhMaxAlphaPasses; ++pass) {
+        bool alphaSeen;
+        uint triIndex;
+        bool hit = traverseBvh(BVH_ARRAYS_ARG org, dir, tMin, minTri, tMax, anyMode, t, tri, triIndex, b1, b2, alphaSeen);
+        if (anyMode) {
+            if (hit || !alphaSeen) return hit;
+            anyMode = false;
+            continue;
+        }
+        if (!hit || BVH_TRIANGLE(triIndex).v0.w == 0.0f ||
+            BVH_ALPHA_TEST(BVH_TRIANGLE(triIndex), triIndex, b1, b2, org, dir)) {
+            return hit;
+        }
+        tMin = t;
+        minTri = tri;
+    }
+    noteTermination(kTerminationLoopBound);
+    t = tMax;
+    tri = kBvhNoTriangle;
+    return false;
+}
+
 INLINE bool traceClosest(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, OUT(float) t, OUT(uint) tri, OUT(float) b1,
                          OUT(float) b2) {
-    return traverseBvh(BVH_ARRAYS_ARG org, dir, tMax, false, t, tri, b1, b2);
+    return traceBvh(BVH_ARRAYS_ARG org, dir, tMax, false, t, tri, b1, b2);
 }
 
 INLINE bool traceAny(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax) {
@@ -220,7 +270,7 @@ INLINE bool traceAny(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax) {
     uint tri;
     float b1;
     float b2;
-    return traverseBvh(BVH_ARRAYS_ARG org, dir, tMax, true, t, tri, b1, b2);
+    return traceBvh(BVH_ARRAYS_ARG org, dir, tMax, true, t, tri, b1, b2);
 }
 
 #undef BVH_ARRAYS_PARAM
