@@ -202,6 +202,12 @@ float pixel(const ImageRgb& image, uint32_t x, uint32_t y, int channel = 0) {
 // The pixel whose centre sees texture coordinate (u, v).
 uint32_t at(float t) { return static_cast<uint32_t>(t * kSize); }
 
+// What a black occluder (baseColor 0, metallic 1 by default) seen head-on under the light still
+// reflects: the Kulla-Conty multiple-scattering term of Schlick's conductor Fresnel with F0 = 0,
+// whose hemispherical average is 1/21, not 0 (about 8e-4 here; exactly 0 with
+// --no-energy-compensation, where F(V.H = 1) = F0 = 0). Against 0.8 for a see-through surface.
+constexpr float kBlackOccluder = 2e-3f;
+
 void expectEverywhere(const ImageRgb& image, float expected, float tolerance, const char* what) {
     int wrong = 0;
     for (uint32_t y = 0; y < image.height; ++y)
@@ -437,8 +443,8 @@ TEST_F(GltfFeatures, AlphaMaskCutsOutAndBlendCoversByAlpha) {
         QuadDoc q;  // alpha 0.7 at cutoff 0.6: opaque and black
         addOccluder(q, {{"alphaMode", "MASK"}, {"alphaCutoff", 0.6}, {"pbrMetallicRoughness", black(0.7)}});
         const Scene scene = load(q);
-        expectEverywhere(pathTraced(scene), 0.0f, 1e-6f, "masked in, path tracer");
-        expectEverywhere(photonMapped(scene), 0.0f, 1e-6f, "masked in, photon integrator");
+        expectEverywhere(pathTraced(scene), 0.0f, kBlackOccluder, "masked in, path tracer");
+        expectEverywhere(photonMapped(scene), 0.0f, kBlackOccluder, "masked in, photon integrator");
     }
     {
         QuadDoc q;  // a texture's alpha: the left half (u < 0.5) alpha 0, the right half alpha 1
@@ -449,7 +455,7 @@ TEST_F(GltfFeatures, AlphaMaskCutsOutAndBlendCoversByAlpha) {
         const ImageRgb image = pathTraced(load(q));
         // The occluder spans 1.2: its u = 0.5 lies above x = 0 all the same.
         EXPECT_NEAR(pixel(image, at(0.2f), 10), 0.8f, 1e-3f);
-        EXPECT_NEAR(pixel(image, at(0.8f), 10), 0.0f, 1e-6f);
+        EXPECT_NEAR(pixel(image, at(0.8f), 10), 0.0f, kBlackOccluder);
     }
     {
         // BLEND, alpha 0.5: the camera sees the floor with probability 0.5, and the floor sees
@@ -508,7 +514,7 @@ TEST_F(GltfFeatures, AlphaMaskInTheRasterPassLetsTheLightThrough) {
         QuadDoc q;  // alpha 0.7 at cutoff 0.6: opaque and black
         perspective(q);
         addOccluder(q, {{"alphaMode", "MASK"}, {"alphaCutoff", 0.6}, {"pbrMetallicRoughness", black(0.7)}});
-        expectEverywhere(raster(load(q)), 0.0f, 1e-6f, "masked in, raster direct light");
+        expectEverywhere(raster(load(q)), 0.0f, kBlackOccluder, "masked in, raster direct light");
     }
     {
         QuadDoc q;  // the texture's left half alpha 0, right half alpha 1
@@ -519,7 +525,7 @@ TEST_F(GltfFeatures, AlphaMaskInTheRasterPassLetsTheLightThrough) {
         addOccluder(q, m);
         const ImageRgb image = raster(load(q));
         EXPECT_NEAR(pixel(image, at(0.2f), 10), 0.8f, 1e-3f);
-        EXPECT_NEAR(pixel(image, at(0.8f), 10), 0.0f, 1e-6f);
+        EXPECT_NEAR(pixel(image, at(0.8f), 10), 0.0f, kBlackOccluder);
     }
 }
 

@@ -4,7 +4,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/sampling.glsl"
-#define VKP_NO_BSDF_TABLES  // gathers photon power only
+#define VKP_NO_BSDF_TABLES  // no albedo tables: the test sets kBsdfNoEnergyCompensation on both sides
 #include "shared/bsdf.glsl"
 #include "test_kernels.glsl"
 #define PHOTON_GRID_BINDING kGatherTestGridBinding
