@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "base64.h"
 #include "cli_runner.h"
 #include "image/exr.h"
 #include "render/frame_sequence.h"
@@ -103,23 +104,10 @@ TEST(FrameSequence, RangesAndNames) {
     EXPECT_DOUBLE_EQ(frameTime(12, 24.0), 0.5);
 }
 
+using test::base64;
+
 // A one-triangle scene with node 0 animated by `animation` (JSON) over `times` and `outputs`
 // (floats, appended to the buffer after the triangle).
-std::string base64(const std::vector<uint8_t>& bytes) {
-    static const char* kTable = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        uint32_t v = bytes[i] << 16;
-        if (i + 1 < bytes.size()) v |= bytes[i + 1] << 8;
-        if (i + 2 < bytes.size()) v |= bytes[i + 2];
-        out += kTable[(v >> 18) & 63];
-        out += kTable[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? kTable[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? kTable[v & 63] : '=';
-    }
-    return out;
-}
-
 fs::path writeAnimated(const fs::path& dir, const std::string& name, const std::vector<float>& times,
                        const std::vector<float>& outputs, const json& channel, const std::string& outputType = "VEC3",
                        const std::string& interpolation = "LINEAR") {

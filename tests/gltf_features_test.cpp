@@ -15,6 +15,7 @@
 #include <stb/stb_image_write.h>
 #include <unistd.h>
 
+#include "base64.h"
 #include "gpu_test_support.h"
 #include "image/image.h"
 #include "image/metrics.h"
@@ -36,20 +37,7 @@ using nlohmann::json;
 
 constexpr uint32_t kSize = 32;
 
-std::string base64(const std::vector<uint8_t>& bytes) {
-    static const char* kTable = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        uint32_t v = bytes[i] << 16;
-        if (i + 1 < bytes.size()) v |= bytes[i + 1] << 8;
-        if (i + 2 < bytes.size()) v |= bytes[i + 2];
-        out += kTable[(v >> 18) & 63];
-        out += kTable[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? kTable[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? kTable[v & 63] : '=';
-    }
-    return out;
-}
+using test::base64;
 
 std::string pngUri(int width, int height, const std::vector<uint8_t>& rgba) {
     std::vector<uint8_t> bytes;

@@ -14,6 +14,7 @@
 #include <stb/stb_image_write.h>
 #include <unistd.h>
 
+#include "base64.h"
 #include "scene/gltf_loader.h"
 #include "scene/gltf_uri_policy.h"
 #include "util/errors.h"
@@ -24,20 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string base64(const std::vector<uint8_t>& bytes) {
-    static const char* kTable = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        uint32_t v = bytes[i] << 16;
-        if (i + 1 < bytes.size()) v |= bytes[i + 1] << 8;
-        if (i + 2 < bytes.size()) v |= bytes[i + 2];
-        out += kTable[(v >> 18) & 63];
-        out += kTable[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? kTable[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? kTable[v & 63] : '=';
-    }
-    return out;
-}
+using test::base64;
 
 template <typename T> void append(std::vector<uint8_t>& bytes, const T& value) {
     const auto* p = reinterpret_cast<const uint8_t*>(&value);

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "base64.h"
 #include "bvh/scene_bvh.h"
 #include "cli_runner.h"
 #include "gpu_scene/scene_buffers.h"
@@ -240,20 +241,7 @@ TEST_F(InstancedRender, UpdatedTransformsRenderLikeAFreshScene) {
 
 // ---- Loader: EXT_mesh_gpu_instancing and repeated meshes -------------------------------------
 
-std::string base64(const std::vector<uint8_t>& bytes) {
-    static const char* kTable = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        uint32_t v = bytes[i] << 16;
-        if (i + 1 < bytes.size()) v |= bytes[i + 1] << 8;
-        if (i + 2 < bytes.size()) v |= bytes[i + 2];
-        out += kTable[(v >> 18) & 63];
-        out += kTable[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? kTable[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? kTable[v & 63] : '=';
-    }
-    return out;
-}
+using test::base64;
 
 void appendFloats(std::vector<uint8_t>& bytes, std::initializer_list<float> values) {
     for (float f : values) {
