@@ -114,6 +114,45 @@ TEST_F(KernelInterfaceTest, AgreeingKernelRuns) {
     for (uint32_t i = 0; i < inputs.size(); ++i) ASSERT_EQ(result[i], 3 * i + 7) << "item " << i;
 }
 
+// Kernels of one interface share the context's compiled pipeline (compiling is the slow part on
+// lavapipe) while each keeps its own descriptor sets: two kernels bound to different buffers
+// compute their own results, and a second mismatching creation fails again (failures are not kept).
+TEST_F(KernelInterfaceTest, KernelsOfOneInterfaceShareOnePipelineAndKeepTheirOwnBindings) {
+    vk::Context& context = test::gpu();
+    std::vector<uint32_t> inputs(100);
+    for (uint32_t i = 0; i < inputs.size(); ++i) inputs[i] = i;
+    vk::Buffer in = vk::makeStorageBuffer(context, "interface test inputs", inputs);
+    vk::Buffer out1(context, "outputs 1", inputs.size() * sizeof(uint32_t), vk::kStorageUsage);
+    vk::Buffer out2(context, "outputs 2", inputs.size() * sizeof(uint32_t), vk::kStorageUsage);
+    vk::Kernel<gpu::InterfaceTestKernel> first(context);
+    const size_t compiled = context.computePipelineCount();
+    vk::Kernel<gpu::InterfaceTestKernel> second(context);
+    EXPECT_EQ(context.computePipelineCount(), compiled);
+    first.bind(gpu::kInterfaceTestInputBinding, in);
+    first.bind(gpu::kInterfaceTestOutputBinding, out1);
+    second.bind(gpu::kInterfaceTestInputBinding, in);
+    second.bind(gpu::kInterfaceTestOutputBinding, out2);
+    gpu::InterfaceTestParams params{};
+    params.count = static_cast<uint32_t>(inputs.size());
+    params.scale = 2;
+    gpu::InterfaceTestParams params2 = params;
+    params2.offset = 5;
+    context.submitAndWait([&](VkCommandBuffer cmd) {
+        first.record(cmd, inputs.size(), params);
+        second.record(cmd, inputs.size(), params2);
+        vk::computeToHostBarrier(cmd);
+    });
+    const auto result1 = out1.download<uint32_t>();
+    const auto result2 = out2.download<uint32_t>();
+    for (uint32_t i = 0; i < inputs.size(); ++i) {
+        ASSERT_EQ(result1[i], 2 * i) << "item " << i;
+        ASSERT_EQ(result2[i], 2 * i + 5) << "item " << i;
+    }
+    EXPECT_NE(creationError<WrongPushKernel>(), "(created without an error)");
+    EXPECT_NE(creationError<WrongPushKernel>(), "(created without an error)");
+    EXPECT_EQ(context.computePipelineCount(), compiled);
+}
+
 TEST_F(KernelInterfaceTest, PushConstantMismatchFailsAtCreation) {
     EXPECT_EQ(creationError<WrongPushKernel>(),
               "kernel_interface_test.comp: the shader declares push constants of 24 bytes, the host pushes 20");

@@ -8,101 +8,32 @@
 #include "vk/buffer.h"
 #include "vk/check.h"
 #include "vk/context.h"
-#include "vk/shader_reflection.h"
-#include "vk/shader_registry.h"
 #include "vk/texture_array.h"
 
 namespace vkp::vk {
 
 ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
-    : m_context(context), m_interface(std::move(interface)), m_bound(m_interface.bindingCount, false) {
+    : m_context(context), m_interface(std::move(interface)), m_bound(m_interface.bindingCount, false),
+      m_pipeline(context.computePipeline(m_interface)) {
     const VkDevice device = context.device();
-    const std::string& name = m_interface.shader;
     const uint32_t bufferCount = m_interface.bindingCount;
-    const uint32_t pushBytes = m_interface.pushBytes;
-    const auto code = shaderCode(name);
-    const ShaderInterface declared = checkKernelInterface(m_interface, code);
-    const bool terminations = declared.terminationCounters;
-    const bool textures = declared.sceneTextures;
-    VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    moduleInfo.codeSize = code.size_bytes();
-    moduleInfo.pCode = code.data();
-    check(vkCreateShaderModule(device, &moduleInfo, nullptr, &m_module),
-          fmt::format("creating the shader module {}", name));
-
-    std::vector<VkDescriptorSetLayoutBinding> bindings(bufferCount);
-    for (uint32_t i = 0; i < bufferCount; ++i) {
-        bindings[i].binding = i;
-        bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        bindings[i].descriptorCount = 1;
-        bindings[i].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
-    }
-    VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    setInfo.bindingCount = bufferCount;
-    setInfo.pBindings = bindings.data();
-    check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &m_setLayout), "creating a set layout");
-    std::vector<VkDescriptorSetLayout> setLayouts{m_setLayout};
-    if (terminations) {  // set gpu::kTerminationSet == 1: the context's termination counters
-        static_assert(gpu::kTerminationSet == 1 && gpu::kTerminationBinding == 0);
-        VkDescriptorSetLayoutBinding counters{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-        VkDescriptorSetLayoutCreateInfo countersInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-        countersInfo.bindingCount = 1;
-        countersInfo.pBindings = &counters;
-        check(vkCreateDescriptorSetLayout(device, &countersInfo, nullptr, &m_terminationLayout),
-              "creating a set layout");
-        setLayouts.push_back(m_terminationLayout);
-    }
-    if (textures) {  // set gpu::kSceneTextureSet == 2: the scene's texture array (two views)
-        static_assert(gpu::kSceneTextureSet == 2 && gpu::kSceneTextureUnormBinding == 0 &&
-                      gpu::kSceneTextureSrgbBinding == 1);
-        if (!terminations) {
-            VkDescriptorSetLayoutCreateInfo emptyInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-            check(vkCreateDescriptorSetLayout(device, &emptyInfo, nullptr, &m_emptyLayout), "creating a set layout");
-            setLayouts.push_back(m_emptyLayout);
-        }
-        VkDescriptorSetLayoutBinding views[2]{};
-        for (uint32_t i = 0; i < 2; ++i)
-            views[i] = {i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-        VkDescriptorSetLayoutCreateInfo texturesInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-        texturesInfo.bindingCount = 2;
-        texturesInfo.pBindings = views;
-        check(vkCreateDescriptorSetLayout(device, &texturesInfo, nullptr, &m_textureLayout), "creating a set layout");
-        setLayouts.push_back(m_textureLayout);
-    }
-
-    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes};
-    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layoutInfo.setLayoutCount = static_cast<uint32_t>(setLayouts.size());
-    layoutInfo.pSetLayouts = setLayouts.data();
-    layoutInfo.pushConstantRangeCount = pushBytes ? 1 : 0;
-    layoutInfo.pPushConstantRanges = &range;
-    check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &m_pipelineLayout),
-          "creating a pipeline layout");
-
-    VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-    pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    pipelineInfo.stage.module = m_module;
-    pipelineInfo.stage.pName = "main";
-    pipelineInfo.layout = m_pipelineLayout;
-    pipelineInfo.flags = VK_PIPELINE_CREATE_DISPATCH_BASE_BIT;  // windows of items (ItemRange)
-    check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &m_pipeline),
-          fmt::format("creating the compute pipeline {}", name));
-
+    const VkDescriptorSetLayout setLayout = m_pipeline.bufferSetLayout();
+    const VkDescriptorSetLayout terminationLayout = m_pipeline.terminationSetLayout();
+    const VkDescriptorSetLayout textureLayout = m_pipeline.textureSetLayout();
     const VkDescriptorPoolSize poolSizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, std::max(1u, bufferCount + 1u)},
                                                {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2u}};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     poolInfo.maxSets = 3;
-    poolInfo.poolSizeCount = textures ? 2 : 1;
+    poolInfo.poolSizeCount = textureLayout ? 2 : 1;
     poolInfo.pPoolSizes = poolSizes;
     check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &m_pool), "creating a descriptor pool");
     VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     allocInfo.descriptorPool = m_pool;
     allocInfo.descriptorSetCount = 1;
-    allocInfo.pSetLayouts = &m_setLayout;
+    allocInfo.pSetLayouts = &setLayout;
     check(vkAllocateDescriptorSets(device, &allocInfo, &m_set), "allocating a descriptor set");
-    if (terminations) {
-        allocInfo.pSetLayouts = &m_terminationLayout;
+    if (terminationLayout) {
+        allocInfo.pSetLayouts = &terminationLayout;
         check(vkAllocateDescriptorSets(device, &allocInfo, &m_terminationSet), "allocating a descriptor set");
         VkDescriptorBufferInfo info{context.terminationCounters().handle(), 0, VK_WHOLE_SIZE};
         VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -113,23 +44,13 @@ ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
         write.pBufferInfo = &info;
         vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
     }
-    if (textures) {
-        allocInfo.pSetLayouts = &m_textureLayout;
+    if (textureLayout) {
+        allocInfo.pSetLayouts = &textureLayout;
         check(vkAllocateDescriptorSets(device, &allocInfo, &m_textureSet), "allocating a descriptor set");
     }
 }
 
-ComputeKernel::~ComputeKernel() {
-    const VkDevice device = m_context.device();
-    vkDestroyDescriptorPool(device, m_pool, nullptr);
-    vkDestroyPipeline(device, m_pipeline, nullptr);
-    vkDestroyPipelineLayout(device, m_pipelineLayout, nullptr);
-    vkDestroyDescriptorSetLayout(device, m_setLayout, nullptr);
-    if (m_terminationLayout) vkDestroyDescriptorSetLayout(device, m_terminationLayout, nullptr);
-    if (m_emptyLayout) vkDestroyDescriptorSetLayout(device, m_emptyLayout, nullptr);
-    if (m_textureLayout) vkDestroyDescriptorSetLayout(device, m_textureLayout, nullptr);
-    vkDestroyShaderModule(device, m_module, nullptr);
-}
+ComputeKernel::~ComputeKernel() { vkDestroyDescriptorPool(m_context.device(), m_pool, nullptr); }
 
 void ComputeKernel::bind(uint32_t binding, const Buffer& buffer) {
     if (binding >= m_interface.bindingCount)
@@ -182,15 +103,15 @@ void ComputeKernel::record(VkCommandBuffer cmd, uint32_t groups, const void* pus
     if (pushBytes != m_interface.pushBytes)
         throw RuntimeError(fmt::format("{}: push constants are {} bytes, expected {}", m_interface.shader,
                                        pushBytes, m_interface.pushBytes));
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipelineLayout, 0, 1, &m_set, 0, nullptr);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline.pipeline());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline.layout(), 0, 1, &m_set, 0, nullptr);
     if (m_terminationSet)
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipelineLayout, gpu::kTerminationSet, 1,
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline.layout(), gpu::kTerminationSet, 1,
                                 &m_terminationSet, 0, nullptr);
     if (m_textureSet)
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipelineLayout, gpu::kSceneTextureSet, 1,
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline.layout(), gpu::kSceneTextureSet, 1,
                                 &m_textureSet, 0, nullptr);
-    if (pushBytes) vkCmdPushConstants(cmd, m_pipelineLayout, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes, push);
+    if (pushBytes) vkCmdPushConstants(cmd, m_pipeline.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes, push);
     if (groups && firstGroup) vkCmdDispatchBase(cmd, firstGroup, 0, 0, groups, 1, 1);
     else if (groups) vkCmdDispatch(cmd, groups, 1, 1);
 }

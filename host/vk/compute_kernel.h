@@ -1,4 +1,4 @@
-// One compute shader with its pipeline, a descriptor set of storage buffers (binding i = the i-th
+// One compute shader with its pipeline (compiled once per context: compute_pipeline.h), a descriptor set of storage buffers (binding i = the i-th
 // buffer) and a push-constant block, as its KernelInterface says; creating it checks that the
 // shader declares exactly that (shader_reflection.h). Recording binds, pushes and dispatches: no
 // submit, no wait. Passes use the typed form, vk::Kernel<K> (kernel.h).
@@ -11,6 +11,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "vk/compute_pipeline.h"
 #include "vk/kernel_interface.h"
 
 namespace vkp::vk {
@@ -83,19 +84,12 @@ private:
     Context& m_context;
     KernelInterface m_interface;
     std::vector<bool> m_bound;
-    VkShaderModule m_module = VK_NULL_HANDLE;
-    VkDescriptorSetLayout m_setLayout = VK_NULL_HANDLE;
-    VkPipelineLayout m_pipelineLayout = VK_NULL_HANDLE;
-    VkPipeline m_pipeline = VK_NULL_HANDLE;
+    const ComputePipeline& m_pipeline;  // the context's, shared by every kernel of this interface
     VkDescriptorPool m_pool = VK_NULL_HANDLE;
     VkDescriptorSet m_set = VK_NULL_HANDLE;
     // The shared silent-termination counters (set gpu::kTerminationSet), when the shader declares them.
-    VkDescriptorSetLayout m_terminationLayout = VK_NULL_HANDLE;
     VkDescriptorSet m_terminationSet = VK_NULL_HANDLE;
-    // The scene textures (set gpu::kSceneTextureSet), when the shader declares them; set 1 is an
-    // empty layout if the shader has no termination counters.
-    VkDescriptorSetLayout m_emptyLayout = VK_NULL_HANDLE;
-    VkDescriptorSetLayout m_textureLayout = VK_NULL_HANDLE;
+    // The scene textures (set gpu::kSceneTextureSet), when the shader declares them.
     VkDescriptorSet m_textureSet = VK_NULL_HANDLE;
     bool m_texturesBound = false;
 };

@@ -174,6 +174,7 @@ void Context::createTerminationCounters() {
 void Context::destroy() {
     if (m_device) {
         vkDeviceWaitIdle(m_device);
+        m_pipelines.clear();
         m_terminationCounters.reset();
         if (m_fence) vkDestroyFence(m_device, m_fence, nullptr);
         if (m_commandPool) vkDestroyCommandPool(m_device, m_commandPool, nullptr);

@@ -12,6 +12,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "vk/compute_pipeline.h"
+
 namespace vkp::vk {
 
 class Buffer;
@@ -44,6 +46,14 @@ public:
     // The silent-termination counters every kernel that declares them shares (set
     // gpu::kTerminationSet; shaders/shared/kernels/terminations.glsl), created zero with the device.
     const Buffer& terminationCounters() const { return *m_terminationCounters; }
+    // The compiled pipeline for a kernel interface: made on first use, then shared for the
+    // context's lifetime (compiling is the slow part of creating a kernel on lavapipe).
+    const ComputePipeline& computePipeline(const KernelInterface& interface) const {
+        return m_pipelines.get(*this, interface);
+    }
+    // How many distinct compute pipelines this context has compiled.
+    size_t computePipelineCount() const { return m_pipelines.size(); }
+
     VkPhysicalDevice physicalDevice() const { return m_physicalDevice; }
     VkDevice device() const { return m_device; }
     VkQueue queue() const { return m_queue; }
@@ -94,6 +104,7 @@ private:
     VkCommandPool m_commandPool = VK_NULL_HANDLE;
     VkFence m_fence = VK_NULL_HANDLE;
     std::unique_ptr<Buffer> m_terminationCounters;
+    mutable ComputePipelineCache m_pipelines;
 
     mutable std::atomic<size_t> m_messageCount{0};
     mutable std::mutex m_messagesMutex;

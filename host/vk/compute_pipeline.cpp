@@ -1,0 +1,116 @@
+#include "vk/compute_pipeline.h"
+
+#include <fmt/format.h>
+
+#include <vector>
+
+#include "shared/kernels/scene.glsl"
+#include "shared/kernels/terminations.glsl"
+#include "vk/check.h"
+#include "vk/context.h"
+#include "vk/shader_reflection.h"
+#include "vk/shader_registry.h"
+
+namespace vkp::vk {
+
+namespace {
+VkDescriptorSetLayout createSetLayout(VkDevice device, const std::vector<VkDescriptorSetLayoutBinding>& bindings) {
+    VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    info.bindingCount = static_cast<uint32_t>(bindings.size());
+    info.pBindings = bindings.data();
+    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+    check(vkCreateDescriptorSetLayout(device, &info, nullptr, &layout), "creating a set layout");
+    return layout;
+}
+}  // namespace
+
+ComputePipeline::ComputePipeline(const Context& context, const KernelInterface& interface)
+    : m_device(context.device()) {
+    const std::string& name = interface.shader;
+    const auto code = shaderCode(name);
+    const ShaderInterface declared = checkKernelInterface(interface, code);
+    VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    moduleInfo.codeSize = code.size_bytes();
+    moduleInfo.pCode = code.data();
+    check(vkCreateShaderModule(m_device, &moduleInfo, nullptr, &m_module),
+          fmt::format("creating the shader module {}", name));
+
+    std::vector<VkDescriptorSetLayoutBinding> buffers(interface.bindingCount);
+    for (uint32_t i = 0; i < interface.bindingCount; ++i)
+        buffers[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    m_setLayout = createSetLayout(m_device, buffers);
+    std::vector<VkDescriptorSetLayout> setLayouts{m_setLayout};
+    if (declared.terminationCounters) {  // set gpu::kTerminationSet == 1: the context's termination counters
+        static_assert(gpu::kTerminationSet == 1 && gpu::kTerminationBinding == 0);
+        m_terminationLayout =
+            createSetLayout(m_device, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}});
+        setLayouts.push_back(m_terminationLayout);
+    }
+    if (declared.sceneTextures) {  // set gpu::kSceneTextureSet == 2: the scene's texture array (two views)
+        static_assert(gpu::kSceneTextureSet == 2 && gpu::kSceneTextureUnormBinding == 0 &&
+                      gpu::kSceneTextureSrgbBinding == 1);
+        if (!declared.terminationCounters) {
+            m_emptyLayout = createSetLayout(m_device, {});
+            setLayouts.push_back(m_emptyLayout);
+        }
+        std::vector<VkDescriptorSetLayoutBinding> views(2);
+        for (uint32_t i = 0; i < 2; ++i)
+            views[i] = {i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+        m_textureLayout = createSetLayout(m_device, views);
+        setLayouts.push_back(m_textureLayout);
+    }
+
+    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, interface.pushBytes};
+    VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layoutInfo.setLayoutCount = static_cast<uint32_t>(setLayouts.size());
+    layoutInfo.pSetLayouts = setLayouts.data();
+    layoutInfo.pushConstantRangeCount = interface.pushBytes ? 1 : 0;
+    layoutInfo.pPushConstantRanges = &range;
+    check(vkCreatePipelineLayout(m_device, &layoutInfo, nullptr, &m_pipelineLayout), "creating a pipeline layout");
+
+    VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pipelineInfo.stage.module = m_module;
+    pipelineInfo.stage.pName = "main";
+    pipelineInfo.layout = m_pipelineLayout;
+    pipelineInfo.flags = VK_PIPELINE_CREATE_DISPATCH_BASE_BIT;  // windows of items (ItemRange)
+    check(vkCreateComputePipelines(m_device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &m_pipeline),
+          fmt::format("creating the compute pipeline {}", name));
+}
+
+ComputePipeline::~ComputePipeline() {
+    vkDestroyPipeline(m_device, m_pipeline, nullptr);
+    vkDestroyPipelineLayout(m_device, m_pipelineLayout, nullptr);
+    for (VkDescriptorSetLayout layout : {m_setLayout, m_terminationLayout, m_emptyLayout, m_textureLayout})
+        if (layout) vkDestroyDescriptorSetLayout(m_device, layout, nullptr);
+    vkDestroyShaderModule(m_device, m_module, nullptr);
+}
+
+const ComputePipeline& ComputePipelineCache::get(const Context& context, const KernelInterface& interface) {
+    const std::string key = fmt::format("{}|{}|{}|{}", interface.shader, interface.bindingCount, interface.pushBytes,
+                                        interface.groupSize);
+    std::lock_guard lock(m_mutex);
+    auto& slot = m_pipelines[key];
+    if (!slot) {
+        try {
+            slot = std::make_unique<ComputePipeline>(context, interface);
+        } catch (...) {
+            m_pipelines.erase(key);
+            throw;
+        }
+    }
+    return *slot;
+}
+
+size_t ComputePipelineCache::size() const {
+    std::lock_guard lock(m_mutex);
+    return m_pipelines.size();
+}
+
+void ComputePipelineCache::clear() {
+    std::lock_guard lock(m_mutex);
+    m_pipelines.clear();
+}
+
+}  // namespace vkp::vk

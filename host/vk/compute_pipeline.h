@@ -1,0 +1,63 @@
+// A compute shader compiled into a pipeline with its layouts, for one kernel interface. Creating
+// it checks the shader's SPIR-V against the interface (shader_reflection.h). lavapipe compiles
+// SPIR-V to machine code when a pipeline is created, a second or more for the large kernels, so
+// the context keeps each pipeline once made (ComputePipelineCache) and every ComputeKernel of the
+// same interface (each render, each frame, each integrator) shares it; a kernel owns only its
+// descriptor sets.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+#include "vk/kernel_interface.h"
+
+namespace vkp::vk {
+
+class Context;
+
+class ComputePipeline {
+public:
+    // Throws RuntimeError when the shader's SPIR-V does not declare what `interface` says.
+    ComputePipeline(const Context& context, const KernelInterface& interface);
+    ~ComputePipeline();
+    ComputePipeline(const ComputePipeline&) = delete;
+    ComputePipeline& operator=(const ComputePipeline&) = delete;
+
+    VkPipeline pipeline() const { return m_pipeline; }
+    VkPipelineLayout layout() const { return m_pipelineLayout; }
+    // Set 0: the storage buffers at bindings 0 .. bindingCount - 1.
+    VkDescriptorSetLayout bufferSetLayout() const { return m_setLayout; }
+    // Set gpu::kTerminationSet, or VK_NULL_HANDLE when the shader declares no termination counters.
+    VkDescriptorSetLayout terminationSetLayout() const { return m_terminationLayout; }
+    // Set gpu::kSceneTextureSet, or VK_NULL_HANDLE when the shader reads no scene textures.
+    VkDescriptorSetLayout textureSetLayout() const { return m_textureLayout; }
+
+private:
+    VkDevice m_device = VK_NULL_HANDLE;
+    VkShaderModule m_module = VK_NULL_HANDLE;
+    VkDescriptorSetLayout m_setLayout = VK_NULL_HANDLE;
+    VkDescriptorSetLayout m_terminationLayout = VK_NULL_HANDLE;
+    VkDescriptorSetLayout m_emptyLayout = VK_NULL_HANDLE;  // set 1 when textures come without counters
+    VkDescriptorSetLayout m_textureLayout = VK_NULL_HANDLE;
+    VkPipelineLayout m_pipelineLayout = VK_NULL_HANDLE;
+    VkPipeline m_pipeline = VK_NULL_HANDLE;
+};
+
+// The pipelines a context has made, by interface; they live as long as the cache (the context's
+// lifetime). Thread-safe.
+class ComputePipelineCache {
+public:
+    const ComputePipeline& get(const Context& context, const KernelInterface& interface);
+    size_t size() const;
+    void clear();
+
+private:
+    mutable std::mutex m_mutex;
+    std::map<std::string, std::unique_ptr<ComputePipeline>> m_pipelines;
+};
+
+}  // namespace vkp::vk
