@@ -86,6 +86,13 @@ TEST_P(GuidedUnbiased, MeanMatchesThePathTracer) {
     GuideRun adaptive = settingsFor(true, 24, 64, 0);
     adaptive.guide.adaptPhotons = 4;
     expectSameMean(meanOverSeeds(renderer, adaptive, 5), path, "guided, cache, adaptive grids");
+}
+
+// The k-nearest guide per vertex (no cache), with and without guide-driven roulette: a test of
+// its own so that ctest runs it beside the cached variants.
+TEST_P(GuidedUnbiased, KNearestPerVertexMeanMatchesThePathTracer) {
+    const Scene scene = test::shippedScene(GetParam());
+    Renderer renderer(test::gpu(), scene);
     GuideRun perVertex = settingsFor(true, 16, 8, 0);
     perVertex.guide.cache = false;
     const MeanAndError pathSmall = meanOverSeeds(renderer, settingsFor(false, 16, 64, 0), 5);

@@ -70,7 +70,7 @@ TEST_P(IndependentReference, PathTracerMatchesCyclesMeanLuminance) {
     const Scene scene = loadGltf(kCycles + name + ".gltf");
     Renderer renderer(test::gpu(), scene);
     const Estimate e = meanLuminanceOverSeeds(4, [&](uint32_t seed) {
-        return renderer.render<PathIntegrator>(referenceFrame(reference, 32, seed));
+        return renderer.render<PathIntegrator>(referenceFrame(reference, 16, seed));
     });
     expectAgrees(e, meanLuminance(reference), 0.015, name + ", path tracer");
 }
@@ -84,7 +84,7 @@ TEST_P(IndependentReference, PhotonIntegratorMatchesCyclesMeanLuminance) {
     photons.globalPaths = 200000;
     photons.causticPaths = 0;  // nothing specular in these scenes
     const Estimate e = meanLuminanceOverSeeds(4, [&](uint32_t seed) {
-        return renderer.render<PhotonIntegrator>(referenceFrame(reference, 8, seed), photons);
+        return renderer.render<PhotonIntegrator>(referenceFrame(reference, 4, seed), photons);
     });
     expectAgrees(e, meanLuminance(reference), 0.03, name + ", photon integrator");
 }
