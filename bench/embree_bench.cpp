@@ -13,9 +13,9 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
-#include <embree3/rtcore.h>
 #include <fmt/format.h>
 
+#include "embree_scene.h"
 #include "gpu_ray_rates.h"
 #include "median.h"
 #include "gpu_scene/scene_buffers.h"
@@ -33,58 +33,6 @@ namespace {
 
 using namespace vkp;
 using Clock = std::chrono::steady_clock;
-
-// One Embree scene of the flattened world-space triangles, built with Embree's default
-// (high-quality SAH) builder for static geometry.
-class EmbreeScene {
-public:
-    explicit EmbreeScene(const Scene& scene) : device_(rtcNewDevice(nullptr)) {
-        if (!device_) throw std::runtime_error("rtcNewDevice failed");
-        scene_ = rtcNewScene(device_);
-        RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-            geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * scene.triangles.size()));
-        auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-            geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), scene.triangles.size()));
-        for (size_t i = 0; i < scene.triangles.size(); ++i)
-            for (int k = 0; k < 3; ++k) {
-                for (int c = 0; c < 3; ++c) vertices[9 * i + 3 * k + c] = scene.triangles[i].p[k][c];
-                indices[3 * i + k] = uint32_t(3 * i + k);
-            }
-        rtcCommitGeometry(geometry);
-        rtcAttachGeometry(scene_, geometry);
-        rtcReleaseGeometry(geometry);
-        rtcCommitScene(scene_);
-    }
-    ~EmbreeScene() {
-        rtcReleaseScene(scene_);
-        rtcReleaseDevice(device_);
-    }
-    EmbreeScene(const EmbreeScene&) = delete;
-    EmbreeScene& operator=(const EmbreeScene&) = delete;
-
-    // Closest hit of one ray; returns false on a miss, else the distance and unit geometric normal.
-    bool intersect(const glm::vec3& origin, const glm::vec3& dir, float tnear, float& t, glm::vec3& normal) const {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        RTCRayHit rh{};
-        rh.ray.org_x = origin.x, rh.ray.org_y = origin.y, rh.ray.org_z = origin.z;
-        rh.ray.dir_x = dir.x, rh.ray.dir_y = dir.y, rh.ray.dir_z = dir.z;
-        rh.ray.tnear = tnear;
-        rh.ray.tfar = std::numeric_limits<float>::infinity();
-        rh.ray.mask = ~0u;
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(scene_, &context, &rh);
-        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-        t = rh.ray.tfar;
-        normal = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
-        return true;
-    }
-
-private:
-    RTCDevice device_;
-    RTCScene scene_ = nullptr;
-};
 
 struct Ray {
     glm::vec3 origin;
@@ -140,7 +88,7 @@ int main(int argc, char** argv) {
         }
 
         const auto buildStart = Clock::now();
-        const EmbreeScene embree(scene);
+        const bench::EmbreeScene embree(scene);
         const double buildSeconds = std::chrono::duration<double>(Clock::now() - buildStart).count();
 
         // Bounce rays from the camera hits, generated once (not timed), then traced.
