@@ -54,7 +54,7 @@ struct PathState {
 
 PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
     PathState st;
-    st.rng = makeSampler(sampleIndex, streamSeed);
+    st.rng = makePixelSampler(sampleIndex, streamSeed);
     vec2 jitter = nextSample2(st.rng);
     if ((params.flags & kPathFlagPixelCentres) != 0u) jitter = vec2(0.5f);
     vec2 filmPixel = vec2(float(px) + jitter.x, float(py) + jitter.y);
@@ -180,7 +180,8 @@ bool extendPath(inout PathState st) {
         nextSample(st.rng);
     }
 
-    vec3 u = vec3(nextSample(st.rng), nextSample(st.rng), nextSample(st.rng));
+    float uLayer = nextSample(st.rng);
+    vec3 u = vec3(uLayer, nextSample2(st.rng));  // the direction from one stratified 2-D point
 #ifdef GUIDED
     vec4 irradiance;
     BsdfSample bs = sampleGuided(v, u, nextSample(st.rng), irradiance);

@@ -7,6 +7,7 @@
 #include "compat.glsl"
 #include "constants.glsl"
 #include "hash.glsl"
+#include "owen_sobol.glsl"
 SHARED_BEGIN
 
 // The first kHaltonDimensions primes.
@@ -47,11 +48,19 @@ INLINE float scrambledRadicalInverse(uint base, uint index, uint scramble) {
     return min(float(digits) / float(limit), kOneMinusEpsilon);
 }
 
-// A stream of samples for one path: Halton dimensions first, then hashed random numbers.
+// A stream of samples for one path. Photon and importon paths (makeSampler): Halton dimensions
+// first, then hashed random numbers; path i is the i-th point of one sequence over all paths
+// (Keller & Wald's QMC photon tracing, the selective update's groups by the Halton period).
+// Camera paths (makePixelSampler): Owen-scrambled Sobol per pixel (owen_sobol.glsl), the sample
+// number its index.
+const uint kSamplerHalton = 0u;
+const uint kSamplerOwenSobol = 1u;
+
 struct Sampler {
-    uint index;      // sample number (Halton index)
+    uint index;      // sample number (Halton index, or the pixel's sample number)
     uint seed;       // per pixel / per photon stream and per run
     uint dimension;  // next dimension to draw
+    uint kind;       // kSamplerHalton or kSamplerOwenSobol
 };
 
 INLINE Sampler makeSampler(uint index, uint streamSeed) {
@@ -59,13 +68,22 @@ INLINE Sampler makeSampler(uint index, uint streamSeed) {
     s.index = index;
     s.seed = streamSeed;
     s.dimension = 0u;
+    s.kind = kSamplerHalton;
+    return s;
+}
+
+INLINE Sampler makePixelSampler(uint index, uint streamSeed) {
+    Sampler s = makeSampler(index, streamSeed);
+    s.kind = kSamplerOwenSobol;
     return s;
 }
 
 INLINE float nextSample(INOUT(Sampler) s) {
     uint scramble = hashCombine(s.seed, s.dimension);
     float value;
-    if (s.dimension < kHaltonDimensions) {
+    if (s.kind == kSamplerOwenSobol) {
+        value = owenSobol1(s.index, s.seed, s.dimension);
+    } else if (s.dimension < kHaltonDimensions) {
         value = scrambledRadicalInverse(haltonPrime(s.dimension), s.index, scramble);
     } else {
         value = uintToUnitFloat(hashCombine(scramble, s.index));
@@ -74,7 +92,13 @@ INLINE float nextSample(INOUT(Sampler) s) {
     return value;
 }
 
+// Two dimensions at once: a stratified 2-D point for the Sobol sampler.
 INLINE vec2 nextSample2(INOUT(Sampler) s) {
+    if (s.kind == kSamplerOwenSobol) {
+        vec2 value = owenSobol2(s.index, s.seed, s.dimension);
+        s.dimension = s.dimension + 2u;
+        return value;
+    }
     float a = nextSample(s);
     float b = nextSample(s);
     return vec2(a, b);
