@@ -2,6 +2,7 @@
 // frame"): the scene built once and moved in place (instances, punctual lights, cameras) equals a
 // fresh build of the frame's scene, byte for byte; what cannot be moved in place rebuilds; and a
 // frame rendered in a sequence equals the same frame rendered alone, bit for bit.
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -120,6 +121,33 @@ TEST(FrameSceneCli, FrameInASequenceEqualsTheFrameAlone) {
         EXPECT_FALSE(stats["frames"][i]["sceneRebuilt"].get<bool>()) << stats["frames"][i]["sceneRebuildReason"];
         EXPECT_GE(stats["frames"][i]["bvhSeconds"].get<double>(), 0.0);
     }
+}
+
+// --tile and --aov per frame: each frame's part (with the merge attributes) and its AOV channels,
+// under the frame's ####-name.
+TEST(FrameSceneCli, TilesAndAovsPerFrame) {
+    const fs::path dir = test::freshTempDir("frame_scene", "parts");
+    const std::string scene = std::string(VKPHOTON_SCENES) + "/cornell-moving.gltf";
+    const std::string common = "--width 16 --height 16 --spp 1 --quiet --validate --frames 3:4";
+    auto run = test::runVkphoton(fmt::format("render {} {} --tile 2/2 -o {}/t-#.exr", scene, common, dir.string()));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    run = test::runVkphoton(fmt::format("render {} {} -o {}/f-#.exr --aov albedo", scene, common, dir.string()));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    for (int f = 3; f <= 4; ++f) {
+        ExrAttributes attributes;
+        const ImageRgb part = readExr(dir / fmt::format("t-{}.exr", f), &attributes);
+        const ImageRgb whole = readExr(dir / fmt::format("f-{}.exr", f));
+        EXPECT_EQ(part.width, 16u);
+        EXPECT_EQ(part.height, 8u);
+        // The tile's pixels are the whole frame's lower band.
+        EXPECT_TRUE(std::equal(part.pixels.begin(), part.pixels.end(), whole.pixels.begin() + 8 * 16 * 3));
+        EXPECT_EQ(readExrChannel(dir / fmt::format("f-{}.exr", f), "Albedo.R").size(), 16u * 16u);
+        bool tagged = false;
+        for (const auto& [key, value] : attributes) tagged = tagged || key.find("crop") != std::string::npos;
+        EXPECT_TRUE(tagged);
+    }
+    run = test::runVkphoton(fmt::format("render {} {} --tile 1/2 --aov albedo -o {}/x-#.exr", scene, common, dir.string()));
+    EXPECT_EQ(run.exitCode, 2) << run.output;
 }
 
 }  // namespace

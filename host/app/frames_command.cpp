@@ -4,11 +4,13 @@
 #include <nlohmann/json.hpp>
 
 #include "app/interrupt.h"
+#include "app/merge_command.h"
 #include "app/progress.h"
 #include "image/atomic_file.h"
 #include "image/exr.h"
 #include "image/metrics.h"
 #include "image/png.h"
+#include "render/aov.h"
 #include "render/frame_scene.h"
 #include "render/frame_update.h"
 #include "render/renderer.h"
@@ -46,8 +48,9 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
         checkWritable(png);
     }
     if (!options.statsJson.empty()) checkWritable(options.statsJson);
-    if (options.aov.any()) throw InputError("--aov is not supported with --frames yet");
-    if (options.frame.crop) throw InputError("--tile and --crop cannot be combined with --frames");
+    // As for a still render: `vkphoton merge` joins the beauty image only.
+    if (options.aov.any() && options.frame.crop)
+        throw InputError("--aov cannot be combined with --tile or --crop: vkphoton merge joins the image only");
     options.lightSampling.check();
     installInterruptHandler();
 
@@ -147,7 +150,7 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
         const std::filesystem::path exrPath = frameOutputPath(pattern, f);
         std::filesystem::path pngPath = exrPath;
         pngPath.replace_extension(".png");
-        const ExrAttributes attributes{
+        ExrAttributes attributes{
             {"vkphoton/scene", options.scene.string()},
             {"vkphoton/integrator", stats.get<std::string>("integrator")},
             {"vkphoton/frame", std::to_string(f)},
@@ -158,7 +161,13 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
             {"vkphoton/partial", stats.get<bool>("partial") ? "true" : "false"},
             {"vkphoton/stopReason", stats.get<std::string>("stopReason")},
         };
-        writeFilesTogether({{exrPath, exrBytes(exrPath, result.image, attributes)},
+        // --tile / --crop: the same part of every frame, with what `vkphoton merge` needs.
+        for (auto& attribute : partAttributes(settings, stats)) attributes.push_back(std::move(attribute));
+        if (settings.crop) stats.set("crop", settings.crop->text());
+        std::vector<ExrChannel> aovs;
+        if (options.aov.any())
+            aovs = aovChannels(renderAovs(renderer.gpuScene(), makeFrame(frameScene.scene(), settings)), options.aov);
+        writeFilesTogether({{exrPath, exrBytes(exrPath, result.image, attributes, aovs)},
                             {pngPath, pngBytes(pngPath, result.image, options.display)}});
         ++written;
         frames.push_back({{"frame", f},
