@@ -20,14 +20,13 @@ void PhotonTracer::ensureCapacity(uint64_t photonBytes, uint64_t listBytes) {
     const bool photonsFit = m_photons && m_photons.size() >= photonBytes;
     const bool listFits = m_pathList && m_pathList.size() >= listBytes;
     if (photonsFit && listFits) return;
-    m_pass.reset();
+    m_pass.reset();  // bound to the old buffers; made again by the next trace
     if (!photonsFit) m_photons = vk::Buffer(m_context, "photon slots", photonBytes, vk::kStorageUsage);
     if (!listFits) m_pathList = vk::Buffer(m_context, "photon path list", std::max<uint64_t>(listBytes, 16), vk::kStorageUsage);
-    m_pass = std::make_unique<PhotonTracePass>(m_context, m_buffers, m_photons, m_counters, m_pathList);
 }
 
 void PhotonTracer::reserve(uint32_t paths, uint32_t maxDeposits) {
-    ensureCapacity(uint64_t(paths) * maxDeposits * sizeof(gpu::GpuPhoton), 16);
+    ensureCapacity(uint64_t(paths) * maxDeposits * sizeof(gpu::GpuPhoton), 16);  // the kernel: at the first trace
 }
 
 PhotonCounters PhotonTracer::trace(const PhotonSettings& settings) { return run(settings, settings.paths, false, {}); }
@@ -58,6 +57,9 @@ PhotonCounters PhotonTracer::run(const PhotonSettings& settings, uint32_t paths,
     params.pathList = listed ? 1u : 0u;
     params.lightCount = m_buffers.lightCount();
     params.totalPower = static_cast<float>(m_totalPower);
+    // The kernel is made at the first trace (its pipeline is compiled then): a tracer that never
+    // traces (a photon map filled from a selective update's slots) costs no compile.
+    if (!m_pass) m_pass = std::make_unique<PhotonTracePass>(m_context, m_buffers, m_photons, m_counters, m_pathList);
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
         m_photons.fillZero(cmd);
         m_counters.fillZero(cmd);
