@@ -148,6 +148,11 @@ TEST(FrameSceneCli, TilesAndAovsPerFrame) {
     }
     run = test::runVkphoton(fmt::format("render {} {} --tile 1/2 --aov albedo -o {}/x-#.exr", scene, common, dir.string()));
     EXPECT_EQ(run.exitCode, 2) << run.output;
+    run = test::runVkphoton(fmt::format("render {} --scene-update rebuild -o {}/y.exr --quiet", scene, dir.string()));
+    EXPECT_EQ(run.exitCode, 2) << run.output;  // needs --frames
+    EXPECT_NE(run.output.find("--scene-update"), std::string::npos) << run.output;
+    run = test::runVkphoton(fmt::format("render {} {} --scene-update sometimes -o {}/z-#.exr", scene, common, dir.string()));
+    EXPECT_EQ(run.exitCode, 2) << run.output;
 }
 
 }  // namespace
