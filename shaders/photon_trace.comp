@@ -21,6 +21,7 @@ layout(local_size_x = kPhotonTraceGroupSize) in;
 
 layout(std430, set = 0, binding = kPhotonTracePhotonBinding) writeonly buffer Photons { GpuPhoton photons[]; };
 layout(std430, set = 0, binding = kPhotonTraceCounterBinding) buffer Counters { uint counters[]; };
+layout(std430, set = 0, binding = kPhotonTracePathListBinding) readonly buffer PathList { uint pathList[]; };
 
 layout(push_constant) uniform Push { PhotonTraceParams params; };
 
@@ -117,7 +118,8 @@ EmittedPhoton emitPhoton(uint index, vec2 uPosition, vec2 uDirection, float uSid
 void main() {
     uint local = gl_GlobalInvocationID.x;
     if (local >= params.pathCount || params.lightCount == 0u) return;
-    Sampler rng = makeSampler(params.firstPath + local * max(params.pathStride, 1u), hashCombine(params.seed, kPhotonStream));
+    uint offset = params.pathList != 0u ? pathList[local] : local * max(params.pathStride, 1u);
+    Sampler rng = makeSampler(params.firstPath + offset, hashCombine(params.seed, kPhotonStream));
     float uLight = nextSample(rng);
     vec2 uPosition = nextSample2(rng);
     vec2 uDirection = nextSample2(rng);

@@ -211,6 +211,12 @@ int runCommandLine(int argc, const char* const* argv) {
                           "2002), full retraces every path each frame")
         ->check(CLI::IsMember({"selective", "full"}))
         ->capture_default_str();
+    std::string sceneUpdate = "inplace";
+    renderCmd->add_option("--scene-update", sceneUpdate,
+                          "--frames: inplace moves instances, lights and cameras in the scene built once (rebuilding "
+                          "only when other things change), rebuild builds the scene and the kernels every frame")
+        ->check(CLI::IsMember({"inplace", "rebuild"}))
+        ->capture_default_str();
     renderCmd->add_option("--photon-budget", render.photonBudget,
                           "--frames, selective: photon paths traced per map and frame, pilots included [default: "
                           "paths / 8 + one pilot per group]")
@@ -361,10 +367,12 @@ int runCommandLine(int argc, const char* const* argv) {
             if (renderCmd->get_option("--aov")->count() > 0) render.aov = parseAovList(aovList);
             if (renderCmd->get_option("--frames")->count() > 0) render.frames = parseFrameRange(framesText);
             render.photonUpdateFull = photonUpdate == "full";
+            render.sceneRebuildEachFrame = sceneUpdate == "rebuild";
             if (!render.frames && (renderCmd->get_option("--photon-update")->count() > 0 ||
+                                   renderCmd->get_option("--scene-update")->count() > 0 ||
                                    renderCmd->get_option("--photon-budget")->count() > 0 ||
                                    renderCmd->get_option("--photon-groups")->count() > 0))
-                throw InputError("--photon-update, --photon-budget and --photon-groups need --frames");
+                throw InputError("--photon-update, --scene-update, --photon-budget and --photon-groups need --frames");
             if (!render.frames &&
                 (renderCmd->get_option("--fps")->count() > 0 || renderCmd->get_option("--animation")->count() > 0))
                 throw InputError("--fps and --animation need --frames");

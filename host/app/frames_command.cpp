@@ -4,11 +4,14 @@
 #include <nlohmann/json.hpp>
 
 #include "app/interrupt.h"
+#include "app/merge_command.h"
 #include "app/progress.h"
 #include "image/atomic_file.h"
 #include "image/exr.h"
 #include "image/metrics.h"
 #include "image/png.h"
+#include "render/aov.h"
+#include "render/frame_scene.h"
 #include "render/frame_update.h"
 #include "render/renderer.h"
 #include "render/selective_frame_update.h"
@@ -45,8 +48,9 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
         checkWritable(png);
     }
     if (!options.statsJson.empty()) checkWritable(options.statsJson);
-    if (options.aov.any()) throw InputError("--aov is not supported with --frames yet");
-    if (options.frame.crop) throw InputError("--tile and --crop cannot be combined with --frames");
+    // As for a still render: `vkphoton merge` joins the beauty image only.
+    if (options.aov.any() && options.frame.crop)
+        throw InputError("--aov cannot be combined with --tile or --crop: vkphoton merge joins the image only");
     options.lightSampling.check();
     installInterruptHandler();
 
@@ -67,11 +71,16 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
                    animation.startTime(), animation.endTime(), context.deviceName(),
                    context.validationEnabled() ? " with validation" : "");
 
-    // Without a camera in the file, every frame keeps the framing of the still scene (the
-    // bounds of a moving scene change from frame to frame; the view must not follow them).
+    // Every frame takes the still scene's bounds (they set the photon radius, the directional
+    // lights' disk, the raster near plane and, without a camera in the file, the framing): so
+    // they do not depend on the frame or the range rendered, and frame N of a sequence equals
+    // frame N rendered alone. Without a camera in the file every frame keeps the still framing.
     FrameSettings frameSettings = options.frame;
+    LightSampling lightSampling = options.lightSampling;
+    Bounds stillBounds;
     {
         const Scene still = source.stillScene();
+        stillBounds = still.bounds;
         if (still.cameras.empty()) {
             const Camera fixed = chooseCamera(still, options.frame.cameraIndex,
                                               float(options.frame.width) / float(options.frame.height), options.frame.view);
@@ -79,7 +88,12 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
             frameSettings.view.lookAt = fixed.position + fixed.forward;
             frameSettings.view.fovDegrees = glm::degrees(fixed.yfov);
         }
+        if (options.lightSamplerAuto) lightSampling.sampler = autoLightSampler(still);
     }
+    // One scene (BVH, buffers), integrator and kernels for the sequence, updated in place per
+    // frame (render/frame_scene.h); rebuilt only when a frame changes what cannot be updated.
+    FrameScene frameScene(context, lightSampling, options.sceneRebuildEachFrame);
+    std::unique_ptr<Integrator> integrator;
     // --photon-update: full retrace per frame, or the selective update (render/selective_frame_update.h).
     std::unique_ptr<FrameUpdate> updateOwner;
     if (options.photonUpdateFull) {
@@ -102,16 +116,21 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
         applyEnvironment(scene, options.environment, note);
         if (!note.empty() && !options.quiet && f == range.first) fmt::print(stderr, "{}\n", note);
         scene.energyCompensation = !options.noEnergyCompensation;
+        scene.bounds = stillBounds;
         const double flattenSeconds = secondsSince(frameStart);
-        LightSampling lightSampling = options.lightSampling;
-        if (options.lightSamplerAuto) lightSampling.sampler = autoLightSampler(scene);
         const auto buildStart = Clock::now();
-        Renderer renderer(context, scene, lightSampling);  // BVH build and upload: the per-frame scene update
+        const FrameSceneChange change = frameScene.set(std::move(scene));
+        if (change.rebuilt) {
+            integrator.reset();
+            integrator = config.create(frameScene.renderer().gpuScene());
+            if (!options.quiet && f != range.first)
+                fmt::print(stderr, "frame {}: scene rebuilt: {}\n", f, change.reason);
+        }
         const double sceneUpdateSeconds = flattenSeconds + secondsSince(buildStart);
-        const std::unique_ptr<Integrator> integrator = config.create(renderer.gpuScene());
+        Renderer& renderer = frameScene.renderer();
         FrameSettings settings = frameSettings;
         settings.photonUpdate = &update;
-        settings.update = {f, time, f == range.first};
+        settings.update = {f, time, f == range.first, frameScene.generation()};
         ProgressReporter progress(fmt::format("frame {}", f), options.quiet);
         RenderResult result = renderer.render(
             settings, *integrator,
@@ -131,7 +150,7 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
         const std::filesystem::path exrPath = frameOutputPath(pattern, f);
         std::filesystem::path pngPath = exrPath;
         pngPath.replace_extension(".png");
-        const ExrAttributes attributes{
+        ExrAttributes attributes{
             {"vkphoton/scene", options.scene.string()},
             {"vkphoton/integrator", stats.get<std::string>("integrator")},
             {"vkphoton/frame", std::to_string(f)},
@@ -142,7 +161,13 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
             {"vkphoton/partial", stats.get<bool>("partial") ? "true" : "false"},
             {"vkphoton/stopReason", stats.get<std::string>("stopReason")},
         };
-        writeFilesTogether({{exrPath, exrBytes(exrPath, result.image, attributes)},
+        // --tile / --crop: the same part of every frame, with what `vkphoton merge` needs.
+        for (auto& attribute : partAttributes(settings, stats)) attributes.push_back(std::move(attribute));
+        if (settings.crop) stats.set("crop", settings.crop->text());
+        std::vector<ExrChannel> aovs;
+        if (options.aov.any())
+            aovs = aovChannels(renderAovs(renderer.gpuScene(), makeFrame(frameScene.scene(), settings)), options.aov);
+        writeFilesTogether({{exrPath, exrBytes(exrPath, result.image, attributes, aovs)},
                             {pngPath, pngBytes(pngPath, result.image, options.display)}});
         ++written;
         frames.push_back({{"frame", f},
@@ -152,10 +177,12 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
                           {"seconds", seconds},
                           {"sceneUpdateSeconds", sceneUpdateSeconds},
                           {"flattenSeconds", flattenSeconds},
-                          {"bvhSeconds", stats.get<double>("timings.bvhSeconds")},
-                          {"uploadSeconds", stats.get<double>("timings.uploadSeconds")},
+                          {"sceneRebuilt", change.rebuilt},
+                          {"sceneRebuildReason", change.rebuilt ? change.reason : std::string()},
+                          {"bvhSeconds", change.bvhSeconds},
+                          {"uploadSeconds", change.uploadSeconds},
                           {"renderSeconds", stats.get<double>("timings.renderSeconds")},
-                          {"triangles", scene.triangles.size()},
+                          {"triangles", renderer.gpuScene().arrays().triangles.size()},
                           {"partial", stats.get<bool>("partial")},
                           {"meanRadiance", meanRadiance(result.image)},
                           {"output", exrPath.string()}});

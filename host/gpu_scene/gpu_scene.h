@@ -31,9 +31,16 @@ public:
     // (same order, one each). Rebuilds (or refits) only the top level and uploads only it and the
     // instances; the static tree, the meshes' trees and every other buffer stay. Call between
     // frames, with no kernel using the scene in flight. Scene::instances keeps the load-time
-    // transforms; arrays().topLevel holds the current ones.
+    // transforms; arrays().topLevel holds the current ones. arrays().bvhBuildSeconds and
+    // uploadSeconds() then time this update.
     void updateInstanceTransforms(std::span<const glm::mat4> transforms,
                                   TopLevelUpdate mode = TopLevelUpdate::Rebuild);
+
+    // Per-frame motion of punctual lights: Scene::lights (same count, types, intensities and cones
+    // as at the build; positions and directions may change) into the light buffer, the light
+    // tree rebuilt over them and uploaded in place. Returns false, changing nothing, when the
+    // lights differ in more than position and direction (the caller rebuilds the GpuScene).
+    bool updatePunctualLights(const Scene& scene);
 
 private:
     vk::Context& m_context;

@@ -198,6 +198,7 @@ SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling, const T
     for (size_t i = 0; i < a.lights.size(); ++i)
         if (a.lights[i].type == gpu::kLightTriangle) a.triangles[a.lights[i].triangle].v1.w = static_cast<float>(i);
     a.lightSampling = sampling;
+    a.lightPower = power;
     a.lightTree = appendLightSelection(
         a.lightCdf, buildLightTree(a.lights, a.triangles, a.shading, a.materials, power),
         static_cast<uint32_t>(a.lights.size()), sampling);
@@ -326,6 +327,15 @@ void SceneBuffers::updateInstances(const SceneArrays& a) {
     if (a.topLevel.instances.empty() || first >= a.nodes.size()) return;
     m_nodes.upload(a.nodes.data() + first, (a.nodes.size() - first) * sizeof(gpu::GpuBvhNode),
                    first * sizeof(gpu::GpuBvhNode));
+}
+
+void SceneBuffers::updateLights(const SceneArrays& a) {
+    const auto padded = [](size_t bytes) { return std::max<VkDeviceSize>(16, bytes); };  // makeStorageBuffer's size
+    if (padded(a.lights.size() * sizeof(gpu::GpuLight)) != m_lights.size() ||
+        padded(a.lightCdf.size() * sizeof(float)) != m_lightCdf.size())
+        throw std::logic_error("SceneBuffers::updateLights: the lights or their selection data changed size");
+    m_lights.upload(a.lights);
+    m_lightCdf.upload(a.lightCdf);
 }
 
 void SceneBuffers::replaceLightSelection(vk::Context& context, const std::vector<float>& data) {

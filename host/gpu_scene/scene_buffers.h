@@ -38,6 +38,7 @@ struct SceneArrays {
     LightSampling lightSampling;                    // what lightCdf's header selects (--light-sampler)
     LightTreeStats lightTree;                       // the selection data after the CDF
     InstanceLevel topLevel;                         // instances, their header (binding kSceneInstancesBinding)
+    std::vector<double> lightPower;                 // per light: its selection weight (what lightCdf sums)
 
     // The traversal's view (shared/bvh_traverse.glsl) for host-side rays.
     gpu::BvhArrays bvhArrays() const { return {nodes, triangles, topLevel.instances, topLevel.header}; }
@@ -89,6 +90,9 @@ public:
     // Uploads the arrays' instances and top-level nodes after updateInstances (per frame): the
     // rest of the scene stays as uploaded. Record no kernel using the scene meanwhile.
     void updateInstances(const SceneArrays& arrays);
+    // Uploads the arrays' lights and light-selection data in place (per frame, moving punctual
+    // lights): both must keep their sizes. Record no kernel using the scene meanwhile.
+    void updateLights(const SceneArrays& arrays);
 
 private:
     vk::Buffer m_triangles;

@@ -12,8 +12,9 @@ namespace vkp {
 
 class PhotonTracePass {
 public:
+    // `pathList`: the Halton offsets PhotonTraceParams.pathList reads (at least 16 bytes).
     PhotonTracePass(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& photons,
-                    const vk::Buffer& counters);
+                    const vk::Buffer& counters, const vk::Buffer& pathList);
 
     void record(VkCommandBuffer cmd, const gpu::PhotonTraceParams& params) const;
 

@@ -19,6 +19,7 @@ struct FrameUpdateInfo {
     uint32_t frame = 0;       // the frame number (--frames FIRST:LAST)
     double time = 0.0;        // seconds: frame / fps
     bool firstFrame = true;   // the first frame of the sequence (or a still render)
+    uint64_t sceneGeneration = 0;  // changes when the frames loop rebuilt the scene (new buffers)
 };
 
 // What the photon maps of one frame cost, for --stats-json's "frames" array.

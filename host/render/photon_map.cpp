@@ -227,8 +227,7 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t first
     params.rejectedFlags = m_settings.rejectedFlags;
     const uint32_t count = static_cast<uint32_t>(slotCount);
     uint32_t state[gpu::kPhotonMapStateSize];
-    auto compact = [&](const vk::Buffer& from, const PhotonDeposit* decide) {
-        const PhotonCompaction compaction(m_context, from, count, m_map, m_state, params);
+    auto compact = [&](const PhotonCompaction& compaction, const PhotonDeposit* decide) {
         m_context.submitAndWait([&](VkCommandBuffer cmd) {
             m_map.fillZero(cmd);
             m_state.fillZero(cmd);
@@ -246,20 +245,24 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t first
         m_state.download(state, sizeof(state));
     };
     if (!deposit) {
-        compact(slots, nullptr);
+        const PhotonCompaction compaction(m_context, slots, count, m_map, m_state, params);
+        compact(compaction, nullptr);
         stats.candidates = state[gpu::kPhotonMapStateCount] + state[gpu::kPhotonMapStateDropped];
     } else {
-        compact(slots, nullptr);  // the candidates before the decision (they set the cell size)
-        stats.candidates = state[gpu::kPhotonMapStateCount] + state[gpu::kPhotonMapStateDropped];
-        // The decision writes into its slots: a copy keeps the persistent slots undecided.
+        // The decision writes into its slots: a copy keeps the persistent slots undecided. One
+        // compaction (its kernels compiled once) over the copy, before the decision (the
+        // candidates, which set the cell size) and after it.
         vk::Buffer scratch(m_context, "decided photon slots", slotCount * sizeof(gpu::GpuPhoton), vk::kStorageUsage);
         m_context.submitAndWait([&](VkCommandBuffer cmd) {
             const VkBufferCopy region{0, 0, slotCount * sizeof(gpu::GpuPhoton)};
             vkCmdCopyBuffer(cmd, slots.handle(), scratch.handle(), 1, &region);
         });
+        const PhotonCompaction compaction(m_context, scratch, count, m_map, m_state, params);
+        compact(compaction, nullptr);
+        stats.candidates = state[gpu::kPhotonMapStateCount] + state[gpu::kPhotonMapStateDropped];
         const PhotonDeposit decide(m_context, m_buffers, m_settings.deposit.importons->table(), scratch, count, m_map,
                                    *m_grid);
-        compact(scratch, &decide);
+        compact(compaction, &decide);
     }
     m_photonPower = static_cast<float>(m_totalPower / m_settings.paths);
     stats.stored = state[gpu::kPhotonMapStateCount];

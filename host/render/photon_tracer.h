@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <memory>
 #include <vector>
 
@@ -51,6 +53,11 @@ public:
     // trace keeps it (and what is bound to it). Refuses (InputError) a buffer beyond the device's
     // storage-buffer range.
     PhotonCounters trace(const PhotonSettings& settings);
+    // Traces paths.size() paths in one dispatch, path j with Halton index settings.firstPath +
+    // paths[j] (settings.paths and pathStride are ignored), into slots j * maxDeposits + k; then
+    // records `after` (may be empty: e.g. copies out of photons()) into the same submission.
+    PhotonCounters traceList(const PhotonSettings& settings, std::span<const uint32_t> paths,
+                             const std::function<void(VkCommandBuffer)>& after = {});
 
     // Allocates the slots of `paths` paths now, so traces of up to that many never reallocate.
     void reserve(uint32_t paths, uint32_t maxDeposits);
@@ -69,7 +76,11 @@ private:
     double m_totalPower;
     vk::Buffer m_photons;
     vk::Buffer m_counters;
-    std::unique_ptr<PhotonTracePass> m_pass;  // bound to m_photons: rebuilt when it is reallocated
+    vk::Buffer m_pathList;                    // PhotonTraceParams.pathList's offsets (traceList)
+    std::unique_ptr<PhotonTracePass> m_pass;  // bound to m_photons and m_pathList: rebuilt when one is reallocated
+    PhotonCounters run(const PhotonSettings& settings, uint32_t paths, bool listed,
+                       const std::function<void(VkCommandBuffer)>& after);
+    void ensureCapacity(uint64_t photonBytes, uint64_t listBytes);
     double m_nominalPower = 0.0;
     uint64_t m_slotCount = 0;
 };

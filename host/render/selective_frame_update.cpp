@@ -51,7 +51,8 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
         it = m_maps.emplace(key, std::make_unique<SelectivePhotonUpdate>(m_context, s)).first;
     }
     const auto start = Clock::now();
-    const SelectiveFrameStats frame = it->second->update(map.scene(), map.arrays(), map.buffers(), info.firstFrame);
+    const SelectiveFrameStats frame = it->second->update(map.scene(), map.arrays(), map.buffers(), info.firstFrame,
+                                                         info.sceneGeneration);
     const double traceSeconds = secondsSince(start);
     PhotonMapStats stats = map.buildFromSlots(it->second->slots(), firstPath);
     stats.traced.emitted = frame.photonPathsTraced;

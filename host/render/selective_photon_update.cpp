@@ -40,63 +40,101 @@ uint32_t SelectivePhotonUpdate::pathsInGroup(uint32_t group) const {
     return group < m_settings.paths ? (m_settings.paths - group + m_settings.groups - 1) / m_settings.groups : 0;
 }
 
-void SelectivePhotonUpdate::copyPaths(PhotonTracer& tracer, uint32_t firstPath, uint32_t stride, uint32_t count) {
+void SelectivePhotonUpdate::recordCopy(VkCommandBuffer cmd, const PhotonTracer& tracer, std::span<const uint32_t> paths) const {
+    // Path j of the trace (slots j * maxDeposits ...) to its persistent slots; runs of consecutive
+    // paths in one region each.
     const VkDeviceSize pathBytes = VkDeviceSize(m_settings.maxDeposits) * sizeof(gpu::GpuPhoton);
     std::vector<VkBufferCopy> regions;
-    if (stride == 1) {
-        regions.push_back({0, firstPath * pathBytes, count * pathBytes});
-    } else {
-        regions.reserve(count);
-        for (uint32_t j = 0; j < count; ++j)
-            regions.push_back({j * pathBytes, (firstPath + VkDeviceSize(j) * stride) * pathBytes, pathBytes});
+    for (uint32_t j = 0; j < paths.size(); ++j) {
+        if (!regions.empty() && regions.back().dstOffset + regions.back().size == paths[j] * pathBytes &&
+            regions.back().srcOffset + regions.back().size == j * pathBytes) {
+            regions.back().size += pathBytes;
+            continue;
+        }
+        regions.push_back({j * pathBytes, paths[j] * pathBytes, pathBytes});
     }
-    m_context.submitAndWait([&](VkCommandBuffer cmd) {
-        vk::memoryBarrier2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_WRITE_BIT,
-                           VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
-        vkCmdCopyBuffer(cmd, tracer.photons().handle(), m_slots.handle(), static_cast<uint32_t>(regions.size()),
-                        regions.data());
-        vk::memoryBarrier2(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
-                           VK_ACCESS_2_SHADER_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
-    });
+    vk::memoryBarrier2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    vkCmdCopyBuffer(cmd, tracer.photons().handle(), m_slots.handle(), static_cast<uint32_t>(regions.size()),
+                    regions.data());
+    vk::memoryBarrier2(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+                       VK_ACCESS_2_SHADER_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
 }
 
-void SelectivePhotonUpdate::traceGroup(PhotonTracer& tracer, uint32_t group) {
+PhotonSettings SelectivePhotonUpdate::traceSettings() const {
     PhotonSettings s;
-    s.paths = pathsInGroup(group);
-    s.firstPath = m_settings.firstPath + group;
-    s.pathStride = m_settings.groups;
+    s.firstPath = m_settings.firstPath;
     s.maxDeposits = m_settings.maxDeposits;
     s.seed = m_settings.seed;
-    tracer.trace(s);
-    copyPaths(tracer, group, m_settings.groups, s.paths);
-    m_priority[group] = 0;
-    m_lastTraced[group] = m_frame;
-    m_retraced.push_back(group);
+    return s;
+}
+
+void SelectivePhotonUpdate::appendGroupPaths(uint32_t group, std::vector<uint32_t>& paths) const {
+    for (uint32_t path = group; path < m_settings.paths; path += m_settings.groups) paths.push_back(path);
+}
+
+void SelectivePhotonUpdate::traceGroups(const std::vector<uint32_t>& groups) {
+    std::vector<uint32_t> paths;
+    if (m_settings.batched) {  // every group in one dispatch and one submission
+        for (uint32_t g : groups) appendGroupPaths(g, paths);
+        if (!paths.empty())
+            m_tracer->traceList(traceSettings(), paths,
+                                [&](VkCommandBuffer cmd) { recordCopy(cmd, *m_tracer, paths); });
+    } else {  // one strided dispatch and submission per group (the reference for the batched trace)
+        for (uint32_t g : groups) {
+            PhotonSettings s = traceSettings();
+            s.paths = pathsInGroup(g);
+            s.firstPath = m_settings.firstPath + g;
+            s.pathStride = m_settings.groups;
+            m_tracer->trace(s);
+            paths.clear();
+            appendGroupPaths(g, paths);
+            m_context.submitAndWait([&](VkCommandBuffer cmd) { recordCopy(cmd, *m_tracer, paths); });
+        }
+    }
+    for (uint32_t g : groups) {
+        m_priority[g] = 0;
+        m_lastTraced[g] = m_frame;
+        m_retraced.push_back(g);
+    }
 }
 
 SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const SceneArrays& arrays,
-                                                  const SceneBuffers& buffers, bool full) {
+                                                  const SceneBuffers& buffers, bool full, uint64_t sceneGeneration) {
     ++m_frame;
     m_marked.clear();
     m_retraced.clear();
     SelectiveFrameStats stats;
-    PhotonTracer tracer(m_context, scene, arrays, buffers);
+    // The tracer (its kernel, photon and path-list buffers) lives across frames; a new one only
+    // for new scene buffers (the frames loop rebuilt the scene) or another total light power.
+    if (!m_tracer || m_tracerBuffers != &buffers || m_tracerGeneration != sceneGeneration ||
+        m_tracerPower != arrays.totalLightPower) {
+        m_tracer.reset();
+        m_tracer = std::make_unique<PhotonTracer>(m_context, scene, arrays, buffers);
+        m_tracerBuffers = &buffers;
+        m_tracerGeneration = sceneGeneration;
+        m_tracerPower = arrays.totalLightPower;
+        m_tracer->reserve(std::max({std::min(m_settings.paths, kFullChunkPaths), pathsInGroup(0), m_pilotPaths}),
+                          m_settings.maxDeposits);
+    }
+    PhotonTracer& tracer = *m_tracer;
     const uint32_t groupPaths = pathsInGroup(0);
-    tracer.reserve(std::max({std::min(m_settings.paths, kFullChunkPaths), groupPaths, m_pilotPaths}),
-                   m_settings.maxDeposits);
     const uint32_t slotsPerPath = m_settings.maxDeposits;
     const size_t pilotSlots = size_t(m_pilotPaths) * slotsPerPath;
+    auto contiguous = [](uint32_t first, uint32_t count) {
+        std::vector<uint32_t> paths(count);
+        for (uint32_t j = 0; j < count; ++j) paths[j] = first + j;
+        return paths;
+    };
 
     if (full || !m_initialised) {
         for (uint32_t done = 0; done < m_settings.paths; done += kFullChunkPaths) {
-            PhotonSettings s;
+            PhotonSettings s = traceSettings();
             s.paths = std::min(kFullChunkPaths, m_settings.paths - done);
             s.firstPath = m_settings.firstPath + done;
-            s.maxDeposits = m_settings.maxDeposits;
-            s.seed = m_settings.seed;
-            tracer.trace(s);
-            copyPaths(tracer, done, 1, s.paths);
+            const std::vector<uint32_t> paths = contiguous(done, s.paths);
+            tracer.traceList(s, contiguous(0, s.paths), [&](VkCommandBuffer cmd) { recordCopy(cmd, tracer, paths); });
         }
         m_pilotRecord.resize(pilotSlots);
         m_slots.download(m_pilotRecord.data(), pilotSlots * sizeof(gpu::GpuPhoton));
@@ -109,16 +147,15 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
         return stats;
     }
 
-    // Pilots: paths 0 .. m_pilotPaths - 1 (pilot m of group g is path g + m * groups).
+    // Pilots: paths 0 .. m_pilotPaths - 1 (pilot m of group g is path g + m * groups), traced and
+    // copied into their slots in one submission.
     {
-        PhotonSettings s;
+        PhotonSettings s = traceSettings();
         s.paths = m_pilotPaths;
-        s.firstPath = m_settings.firstPath;
-        s.maxDeposits = m_settings.maxDeposits;
-        s.seed = m_settings.seed;
-        tracer.trace(s);
-        // Read-back (docs/photon-mapping.md): the pilots' photons, compared on the host with
-        // the last frame's (a few thousand paths).
+        const std::vector<uint32_t> pilots = contiguous(0, m_pilotPaths);
+        tracer.traceList(s, pilots, [&](VkCommandBuffer cmd) { recordCopy(cmd, tracer, pilots); });
+        // One read-back per frame (docs/photon-mapping.md): the pilots' photons, compared on the
+        // host with the last frame's (a few thousand paths).
         std::vector<gpu::GpuPhoton> now(pilotSlots);
         tracer.photons().download(now.data(), pilotSlots * sizeof(gpu::GpuPhoton));
         std::vector<char> groupMarked(m_settings.groups, 0);
@@ -132,13 +169,13 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
         for (uint32_t g = 0; g < m_settings.groups; ++g)
             if (groupMarked[g]) m_marked.push_back(g);
         m_pilotRecord = std::move(now);
-        copyPaths(tracer, 0, 1, m_pilotPaths);
         stats.pilotsTraced = m_pilotPaths;
         stats.photonPathsTraced = m_pilotPaths;
     }
 
     // Marked groups by priority (more changed pilots first, then the stalest), leaving room for
-    // the round-robin refresh of refreshGroups groups; then the refresh fills the budget.
+    // the round-robin refresh of refreshGroups groups; then the refresh fills the budget. The
+    // groups chosen are then traced together (traceGroups).
     const uint64_t budget = m_settings.budget;
     auto fits = [&](uint32_t g) { return stats.photonPathsTraced + pathsInGroup(g) <= budget; };
     std::vector<uint32_t> pending;
@@ -149,13 +186,14 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
         return m_lastTraced[a] < m_lastTraced[b];
     });
     const uint64_t reserve = uint64_t(m_settings.refreshGroups) * groupPaths;
+    std::vector<uint32_t> chosen;
+    std::vector<char> done(m_settings.groups, 0);
     for (uint32_t g : pending) {
         if (stats.photonPathsTraced + pathsInGroup(g) + reserve > budget) break;
-        traceGroup(tracer, g);
+        chosen.push_back(g);
+        done[g] = 1;
         stats.photonPathsTraced += pathsInGroup(g);
     }
-    std::vector<char> done(m_settings.groups, 0);
-    for (uint32_t g : m_retraced) done[g] = 1;
     for (uint32_t visited = 0; visited < m_settings.groups; ++visited) {
         const uint32_t g = m_refreshCursor;
         if (done[g]) {
@@ -163,10 +201,12 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
             continue;
         }
         if (!fits(g)) break;
-        traceGroup(tracer, g);
+        chosen.push_back(g);
+        done[g] = 1;
         stats.photonPathsTraced += pathsInGroup(g);
         m_refreshCursor = (m_refreshCursor + 1) % m_settings.groups;
     }
+    traceGroups(chosen);
     stats.groupsRetraced = m_retraced.size();
     for (uint32_t g = 0; g < m_settings.groups; ++g) stats.groupsPending += m_priority[g] > 0 ? 1 : 0;
     return stats;

@@ -11,6 +11,8 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <span>
 #include <vector>
 
 #include "render/photon_tracer.h"
@@ -27,6 +29,7 @@ struct SelectiveSettings {
     uint32_t pilotsPerGroup = 1;
     uint32_t budget = 0;           // paths traced per frame (pilots included); 0: paths / 8
     uint32_t refreshGroups = 1;    // unchanged groups refreshed per frame at least (round-robin)
+    bool batched = true;           // the frame's groups in one dispatch (false: one per group, the reference)
 };
 
 struct SelectiveFrameStats {
@@ -44,7 +47,10 @@ public:
 
     // One frame in a new scene (its GpuScene may be rebuilt every frame): a full trace when
     // `full` or on the first call, else the pilots and the selected groups.
-    SelectiveFrameStats update(const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers, bool full);
+    // The photon tracer is kept across calls with the same `buffers` and `sceneGeneration` (the
+    // frames loop's count of scene rebuilds), so its kernel is built once per scene.
+    SelectiveFrameStats update(const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers, bool full,
+                               uint64_t sceneGeneration = 0);
 
     // paths * maxDeposits slots, path i at i * maxDeposits (PhotonMap::buildFromSlots).
     const vk::Buffer& slots() const { return m_slots; }
@@ -60,8 +66,12 @@ public:
     uint64_t lastTraced(uint32_t group) const { return m_lastTraced[group]; } // frame of its last retrace
 
 private:
-    void traceGroup(PhotonTracer& tracer, uint32_t group);
-    void copyPaths(PhotonTracer& tracer, uint32_t firstPath, uint32_t stride, uint32_t count);
+    // Retraces `groups` (SelectiveSettings::batched: in one dispatch) into their slots.
+    void traceGroups(const std::vector<uint32_t>& groups);
+    void appendGroupPaths(uint32_t group, std::vector<uint32_t>& paths) const;
+    // Copies path j of the tracer's last trace into the slots of path paths[j].
+    void recordCopy(VkCommandBuffer cmd, const PhotonTracer& tracer, std::span<const uint32_t> paths) const;
+    PhotonSettings traceSettings() const;
 
     vk::Context& m_context;
     SelectiveSettings m_settings;
@@ -75,6 +85,10 @@ private:
     bool m_initialised = false;
     std::vector<uint32_t> m_marked;
     std::vector<uint32_t> m_retraced;
+    std::unique_ptr<PhotonTracer> m_tracer;
+    const SceneBuffers* m_tracerBuffers = nullptr;
+    uint64_t m_tracerGeneration = 0;
+    double m_tracerPower = 0.0;
 };
 
 }  // namespace vkp

@@ -89,7 +89,8 @@ struct PhotonTraceParams {
     float totalPower;     // watts, luminance-weighted sum over the lights (SceneArrays)
     uint pathStride;      // 0 or 1: paths firstPath, firstPath+1, ...; N: firstPath + local * N (one
                           // selective-update group, docs/photon-mapping.md); slots stay local * maxDeposits + k
-    uint pad1;
+    uint pathList;        // 1: path `local` is firstPath + pathList[local] (the path-list binding: a
+                          // selective update's marked groups in one dispatch), pathStride ignored; 0: off
 };
 STATIC_ASSERT_SIZE(PhotonTraceParams, 48)
 
