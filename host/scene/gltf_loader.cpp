@@ -24,6 +24,8 @@
 #include "scene/gltf_instancing.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_preflight.h"
+#include "scene/gltf_draco.h"
+#include "scene/gltf_meshopt.h"
 #include "scene/gltf_tangents.h"
 #include "util/errors.h"
 #include "util/printable.h"
@@ -240,7 +242,8 @@ private:
     }
 
     void parse() {
-        const GltfDocument document = preflightGltf(m_path, m_limits, m_files);
+        GltfDocument document = preflightGltf(m_path, m_limits, m_files);
+        const MeshoptFallbacks fallbacks = prepareMeshoptFallbacks(document);
         tinygltf::TinyGLTF gltf;
         gltf.SetFsCallbacks(m_files.callbacks());
         gltf.SetImageLoader(GltfFileAccess::imageLoader(), &m_files);
@@ -258,6 +261,8 @@ private:
             if (end > start) warn("tinygltf: " + warnings.substr(start, end - start));
             start = end + 1;
         }
+        decodeMeshoptViews(m_model, fallbacks);  // before Draco: its streams may lie in compressed views
+        decodeDracoPrimitives(m_model);
     }
 
     // What `vkphoton info` reports beside the scene: extensions, nodes, skins, animations, and the
