@@ -130,12 +130,37 @@ MeshoptFallbacks prepareMeshoptFallbacks(GltfDocument& document) {
     }
     std::string_view json(reinterpret_cast<const char*>(bytes.data()) + jsonStart, jsonLength);
     while (!json.empty() && json.back() == '\0') json.remove_suffix(1);  // padding some exporters use
-    if (json.find("meshopt_compression") == std::string_view::npos) return {};
+    const bool meshopt = json.find("meshopt_compression") != std::string_view::npos;
+    const bool draco = json.find("KHR_draco_mesh_compression") != std::string_view::npos;
+    if (!meshopt && !draco) return {};
     nlohmann::json root = nlohmann::json::parse(json);
     MeshoptFallbacks fallbacks;
-    if (!root.contains("buffers") || !root["buffers"].is_array()) return {};
-    nlohmann::json& buffers = root["buffers"];
-    for (size_t i = 0; i < buffers.size(); ++i) {
+    bool changed = false;
+    // tinygltf refuses an index accessor without a bufferView, as a Draco primitive's is: it gets
+    // the Draco stream's view as a placeholder until decodeDracoPrimitives() replaces it.
+    if (draco && root.contains("meshes") && root["meshes"].is_array() && root.contains("accessors") &&
+        root["accessors"].is_array())
+        for (nlohmann::json& mesh : root["meshes"]) {
+            if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
+            for (nlohmann::json& primitive : mesh["primitives"]) {
+                if (!primitive.is_object() || !primitive.contains("indices") || !primitive.contains("extensions")) continue;
+                const nlohmann::json& extensions = primitive["extensions"];
+                if (!extensions.is_object() || !extensions.contains("KHR_draco_mesh_compression")) continue;
+                const nlohmann::json& ext = extensions["KHR_draco_mesh_compression"];
+                const nlohmann::json& indices = primitive["indices"];
+                if (!ext.is_object() || !ext.contains("bufferView") || !ext["bufferView"].is_number_unsigned() ||
+                    !indices.is_number_unsigned() || indices.get<uint64_t>() >= root["accessors"].size())
+                    continue;  // decodeDracoPrimitives() names the error
+                nlohmann::json& accessor = root["accessors"][indices.get<size_t>()];
+                if (accessor.is_object() && !accessor.contains("bufferView")) {
+                    accessor["bufferView"] = ext["bufferView"];
+                    changed = true;
+                }
+            }
+        }
+    nlohmann::json none = nlohmann::json::array();
+    nlohmann::json& buffers = root.contains("buffers") ? root["buffers"] : none;
+    for (size_t i = 0; meshopt && buffers.is_array() && i < buffers.size(); ++i) {
         nlohmann::json& buffer = buffers[i];
         if (!buffer.is_object() || buffer.contains("uri") || (document.binary && i == 0)) continue;
         if (!buffer.contains("extensions") || !buffer["extensions"].is_object()) continue;
@@ -146,7 +171,7 @@ MeshoptFallbacks prepareMeshoptFallbacks(GltfDocument& document) {
         buffer["byteLength"] = 1;
         buffer["uri"] = "data:application/octet-stream;base64,AA==";
     }
-    if (fallbacks.empty()) return {};
+    if (fallbacks.empty() && !changed) return {};
     std::string text = root.dump();
     if (!document.binary) {
         bytes.assign(text.begin(), text.end());

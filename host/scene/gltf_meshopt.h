@@ -19,7 +19,9 @@ namespace vkp {
 // Buffer index -> its real byteLength, for each uri-less fallback buffer the JSON was changed for.
 using MeshoptFallbacks = std::map<int, uint64_t>;
 
-// Changes `document` (its JSON, repacking a .glb) only when it names a meshopt extension.
+// Changes `document` (its JSON, repacking a .glb) only when it names a meshopt extension or
+// KHR_draco_mesh_compression (whose index accessors, having no bufferView, tinygltf refuses:
+// they get the Draco view as a placeholder, replaced when the stream is decoded).
 MeshoptFallbacks prepareMeshoptFallbacks(GltfDocument& document);
 
 // Throws InputError naming the bufferView for a bad reference or a corrupt stream.
