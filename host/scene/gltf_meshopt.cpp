@@ -140,9 +140,11 @@ MeshoptFallbacks prepareMeshoptFallbacks(GltfDocument& document) {
     // the Draco stream's view as a placeholder until decodeDracoPrimitives() replaces it.
     if (draco && root.contains("meshes") && root["meshes"].is_array() && root.contains("accessors") &&
         root["accessors"].is_array())
-        for (nlohmann::json& mesh : root["meshes"]) {
+        for (size_t m = 0; m < root["meshes"].size(); ++m) {
+            nlohmann::json& mesh = root["meshes"][m];
             if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array()) continue;
-            for (nlohmann::json& primitive : mesh["primitives"]) {
+            for (size_t p = 0; p < mesh["primitives"].size(); ++p) {
+                nlohmann::json& primitive = mesh["primitives"][p];
                 if (!primitive.is_object() || !primitive.contains("indices") || !primitive.contains("extensions")) continue;
                 const nlohmann::json& extensions = primitive["extensions"];
                 if (!extensions.is_object() || !extensions.contains("KHR_draco_mesh_compression")) continue;
@@ -151,6 +153,11 @@ MeshoptFallbacks prepareMeshoptFallbacks(GltfDocument& document) {
                 if (!ext.is_object() || !ext.contains("bufferView") || !ext["bufferView"].is_number_unsigned() ||
                     !indices.is_number_unsigned() || indices.get<uint64_t>() >= root["accessors"].size())
                     continue;  // decodeDracoPrimitives() names the error
+                const size_t view = ext["bufferView"].get<size_t>();
+                const size_t views = root.contains("bufferViews") && root["bufferViews"].is_array() ? root["bufferViews"].size() : 0;
+                if (view >= views)
+                    fail(fmt::format("meshes[{}].primitives[{}].extensions.KHR_draco_mesh_compression.bufferView", m, p),
+                         fmt::format("bufferViews[{}] does not exist", view));
                 nlohmann::json& accessor = root["accessors"][indices.get<size_t>()];
                 if (accessor.is_object() && !accessor.contains("bufferView")) {
                     accessor["bufferView"] = ext["bufferView"];
