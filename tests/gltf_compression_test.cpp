@@ -16,6 +16,8 @@
 #include <unistd.h>
 
 #include "base64.h"
+#include "cli_runner.h"
+#include "image/exr.h"
 #include "scene/gltf_loader.h"
 #include "util/errors.h"
 
@@ -313,6 +315,33 @@ TEST_F(GltfCompression, MeshoptOctahedralNormals) {
     for (size_t t = 0; t < scene.triangles.size(); ++t)
         for (int k = 0; k < 3; ++k)
             EXPECT_GT(glm::dot(scene.triangles[t].n[k], plain.triangles[t].n[k]), 0.999f) << t;
+}
+
+// The CLI: the renders of the plain, Draco and meshopt files are the same image (the decoded
+// triangles are the same; Draco without quantization is lossless), and a corrupt stream is exit 2.
+TEST_F(GltfCompression, RendersEqualTheUncompressedFileAndCorruptStreamsExitWith2) {
+    const Grid g = makeGrid(6);
+    const std::string view = " --spp 2 --width 24 --height 24 --look-from 0.5,1.5,-1 --look-at 0.5,0,0.5 --env 1 --quiet";
+    std::vector<ImageRgb> images;
+    for (const auto& [name, doc] : {std::pair{"plain", plainDoc(g)}, std::pair{"draco", dracoDoc(g)},
+                                     std::pair{"meshopt", meshoptDoc(g, "INDICES")}}) {
+        const fs::path exr = m_dir / (std::string(name) + ".exr");
+        const test::RunResult r = test::runVkphoton("render " + write(doc, std::string(name) + ".gltf").string() + view +
+                                                    " -o " + exr.string());
+        ASSERT_EQ(r.exitCode, 0) << name << ": " << r.output;
+        images.push_back(readExr(exr));
+    }
+    double sum = 0.0;
+    for (float v : images[0].pixels) sum += v;
+    EXPECT_GT(sum, 0.0);  // the grid is lit: the comparison means something
+    EXPECT_EQ(images[1].pixels, images[0].pixels) << "Draco";
+    EXPECT_EQ(images[2].pixels, images[0].pixels) << "meshopt";
+    json doc = dracoDoc(g);
+    doc["bufferViews"][0]["byteLength"] = 10;  // a truncated stream
+    const test::RunResult r = test::runVkphoton("render " + write(doc, "bad.gltf").string() + view + " -o " +
+                                                (m_dir / "bad.exr").string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("KHR_draco_mesh_compression: the Draco stream does not decode"), std::string::npos) << r.output;
 }
 
 // TEXCOORD_n for any n: the set a texture reads (here TEXCOORD_2, as the texture transform's
