@@ -10,6 +10,7 @@ packages=(
   glslang-tools glslang-dev spirv-tools libspirv-cross-c-shared-dev
   libglm-dev libtinygltf-dev libopenexr-dev libstb-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev
+  libdraco-dev libmeshoptimizer-dev  # compressed glTF geometry (KHR_draco_mesh_compression, EXT_meshopt_compression)
   libembree-dev  # bench/embree_bench: the CPU reference for ray rates (docs/benchmarks.md)
   clang-14 libclang-rt-14-dev  # the glTF loader fuzzer (fuzz/): libFuzzer, ASan, UBSan
 )

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <new>
 #include <optional>
+#include <set>
 #include <string_view>
 #include <unordered_set>
 
@@ -24,6 +25,8 @@
 #include "scene/gltf_instancing.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_preflight.h"
+#include "scene/gltf_draco.h"
+#include "scene/gltf_meshopt.h"
 #include "scene/gltf_tangents.h"
 #include "util/errors.h"
 #include "util/printable.h"
@@ -87,7 +90,7 @@ std::string lastLine(std::string text) {
 struct Vertices {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
-    std::vector<glm::vec2> uvs[2];      // TEXCOORD_0, TEXCOORD_1
+    std::vector<glm::vec2> uvs[2];      // TEXCOORD_0 and the scene's second set (remapTexCoordSets)
     std::vector<glm::vec4> colors;      // COLOR_0 as RGBA
     std::vector<glm::vec4> tangents;    // TANGENT, or generated (gltf_tangents.cpp) for normal maps
 };
@@ -109,6 +112,7 @@ public:
         m_scene.source = m_path;
         m_materials.emplace(m_model, m_scene, [this](const std::string& message) { warn(message); });
         m_materials->convertAll();
+        remapTexCoordSets();
         describeFile();
         m_sceneIndex = m_limits.sceneIndex >= 0 ? m_limits.sceneIndex
                        : m_model.defaultScene >= 0 ? m_model.defaultScene
@@ -240,7 +244,8 @@ private:
     }
 
     void parse() {
-        const GltfDocument document = preflightGltf(m_path, m_limits, m_files);
+        GltfDocument document = preflightGltf(m_path, m_limits, m_files);
+        const MeshoptFallbacks fallbacks = prepareMeshoptFallbacks(document);
         tinygltf::TinyGLTF gltf;
         gltf.SetFsCallbacks(m_files.callbacks());
         gltf.SetImageLoader(GltfFileAccess::imageLoader(), &m_files);
@@ -258,6 +263,8 @@ private:
             if (end > start) warn("tinygltf: " + warnings.substr(start, end - start));
             start = end + 1;
         }
+        decodeMeshoptViews(m_model, fallbacks);  // before Draco: its streams may lie in compressed views
+        decodeDracoPrimitives(m_model);
     }
 
     // What `vkphoton info` reports beside the scene: extensions, nodes, skins, animations, and the
@@ -452,12 +459,13 @@ private:
                 fail(element, fmt::format("POSITION {} is NaN or infinite (accessors[{}])", i, attribute("POSITION")));
         if (attribute("NORMAL") >= 0) v.normals = readVec3Accessor(m_model, attribute("NORMAL"));
         if (attribute("TEXCOORD_0") >= 0) v.uvs[0] = readVec2Accessor(m_model, attribute("TEXCOORD_0"));
-        if (attribute("TEXCOORD_1") >= 0) v.uvs[1] = readVec2Accessor(m_model, attribute("TEXCOORD_1"));
+        const std::string secondSet = fmt::format("TEXCOORD_{}", m_secondTexCoordSet);
+        if (attribute(secondSet.c_str()) >= 0) v.uvs[1] = readVec2Accessor(m_model, attribute(secondSet.c_str()));
         if (attribute("COLOR_0") >= 0) v.colors = readColorAccessor(m_model, attribute("COLOR_0"));
         if (!v.normals.empty() && v.normals.size() != v.positions.size()) fail(element, "NORMAL and POSITION counts differ");
         for (int set = 0; set < 2; ++set)
             if (!v.uvs[set].empty() && v.uvs[set].size() != v.positions.size())
-                fail(element, fmt::format("TEXCOORD_{} and POSITION counts differ", set));
+                fail(element, fmt::format("TEXCOORD_{} and POSITION counts differ", set == 0 ? 0 : m_secondTexCoordSet));
         if (!v.colors.empty() && v.colors.size() != v.positions.size()) fail(element, "COLOR_0 and POSITION counts differ");
         for (size_t i = 0; i < v.colors.size(); ++i)
             if (!std::isfinite(v.colors[i].x + v.colors[i].y + v.colors[i].z + v.colors[i].w))
@@ -501,9 +509,32 @@ private:
                                m.specularTexture, m.specularColorTexture, m.sheenColorTexture, m.sheenRoughnessTexture,
                                m.clearcoatTexture, m.clearcoatRoughnessTexture}) {
             if (view < 0) continue;
-            const int set = m_scene.textureViews[view].texCoord;
-            if (set > 0 && v.uvs[set].empty())
+            const int slot = m_scene.textureViews[view].texCoord, set = m_texCoordSetOfView[view];
+            if (set > 0 && v.uvs[slot].empty())
                 fail(element, fmt::format("material \"{}\" reads TEXCOORD_{}, which the primitive does not have", m.name, set));
+        }
+    }
+
+    // A triangle holds two TEXCOORD sets (Triangle::uv, uv1; GpuTriangleShading): TEXCOORD_0 and
+    // the smallest other set any texture reads (TEXCOORD_1 when none does). Each texture view's
+    // texCoord becomes the slot (0 or 1) the device reads; the file's set stays in
+    // m_texCoordSetOfView. Textures reading a third set read TEXCOORD_0 instead, with a warning.
+    void remapTexCoordSets() {
+        m_texCoordSetOfView.clear();
+        for (const TextureView& view : m_scene.textureViews) m_texCoordSetOfView.push_back(view.texCoord);
+        int second = -1;
+        for (const int set : m_texCoordSetOfView)
+            if (set > 0 && (second < 0 || set < second)) second = set;
+        m_secondTexCoordSet = second < 0 ? 1 : second;
+        std::set<int> warned;
+        for (size_t i = 0; i < m_scene.textureViews.size(); ++i) {
+            const int set = m_texCoordSetOfView[i];
+            int& slot = m_scene.textureViews[i].texCoord;
+            slot = set == 0 ? 0 : set == m_secondTexCoordSet ? 1 : 0;
+            if (set != 0 && set != m_secondTexCoordSet && warned.insert(set).second)
+                warn(fmt::format("textures read TEXCOORD_{}, but a triangle holds two sets (TEXCOORD_0 and TEXCOORD_{} in "
+                                 "this file): they read TEXCOORD_0 instead",
+                                 set, m_secondTexCoordSet));
         }
     }
 
@@ -656,6 +687,8 @@ private:
     tinygltf::Model m_model;
     Scene m_scene;
     std::optional<GltfMaterials> m_materials;  // made once the model is parsed
+    std::vector<int> m_texCoordSetOfView;     // the file's TEXCOORD set of each Scene::textureViews entry
+    int m_secondTexCoordSet = 1;              // the set Triangle::uv1 holds (remapTexCoordSets)
     size_t m_skippedPrimitives = 0;
     std::unordered_set<std::string> m_triangleKeys;
     // Instanced meshes (gltf_instancing.h): which glTF meshes, their Scene::meshes index once

@@ -13,8 +13,9 @@
 namespace vkp {
 namespace {
 
-// TEXCOORD sets the device holds per vertex: 0 and 1 (GpuTriangleShading).
-constexpr int kMaxTexCoordSet = 1;
+// TEXCOORD_n: any n (the loader maps the sets the textures read to the device's two per
+// triangle, gltf_loader.cpp remapTexCoordSets); this only bounds nonsense.
+constexpr int kMaxTexCoordSet = 1 << 20;
 
 [[noreturn]] void fail(const std::string& element, const std::string& what) {
     throw InputError(fmt::format("{}: {}", element, what));
@@ -235,7 +236,7 @@ int GltfMaterials::texture(int gltfTexture, int texCoord, const tinygltf::Extens
     if (const auto* e = extension(extensions, "KHR_texture_transform"))
         readTransform(*e, element + ".extensions.KHR_texture_transform", view);
     if (view.texCoord < 0 || view.texCoord > kMaxTexCoordSet)
-        fail(element + ".texCoord", fmt::format("{} is not a TEXCOORD set vkphoton reads (0 to {})", view.texCoord,
+        fail(element + ".texCoord", fmt::format("{} is not a TEXCOORD set (0 to {})", view.texCoord,
                                                 kMaxTexCoordSet));
     readSampler(gltfTexture, view);
     const auto key = std::make_pair(source, srgb);

@@ -268,6 +268,13 @@ private:
         return *file;
     }
 
+    // A buffer without data of its own: EXT/KHR_meshopt_compression's decoding target.
+    static bool isMeshoptFallback(const Json& buffer) {
+        const Json* extensions = find(buffer, "extensions");
+        return extensions && extensions->is_object() &&
+               (extensions->contains("EXT_meshopt_compression") || extensions->contains("KHR_meshopt_compression"));
+    }
+
     void checkBuffers(const Json& root, const JsonSpan& span, bool binary) {
         forEachObject(root, "buffers", [&](const Json& buffer, const std::string& element, size_t i) {
             const uint64_t length = *uintField(buffer, "byteLength", element, true);
@@ -275,6 +282,12 @@ private:
             m_bufferLengths.push_back(length);
             const Json* uri = find(buffer, "uri");
             if (!uri) {
+                if (isMeshoptFallback(buffer)) {  // decoded from compressed views (gltf_meshopt.h)
+                    if (length > m_limits.maxFileBytes)
+                        fail(element, fmt::format("the meshopt fallback's byteLength {} exceeds the {}-byte limit",
+                                                  length, m_limits.maxFileBytes));
+                    return;
+                }
                 if (!binary || i != 0) fail(element, "no uri (only the first buffer of a .glb may omit it)");
                 if (!span.binLength) fail(element, "the .glb has no BIN chunk to hold it");
                 if (length > *span.binLength)
