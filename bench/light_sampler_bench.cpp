@@ -8,8 +8,14 @@
 // than power where most lights are occluded).
 // Usage: build/bench/light_sampler_bench [SCENE] [--size N --reference-spp N --reference FILE.exr
 //          --spp 4,16,64 --seconds S --methods area,power,bvh,photon --reference-method M --seeds K --device D]
+//          --integrator path|photon --photons N --caustic-photons N]
 // With --seconds, each method renders for that long (--time-limit) and reports the spp it reached.
+// Methods take turns per seed (seed 1 of every method, then seed 2...), so that the load of a shared
+// machine falls on all of them alike. --integrator photon renders with the photon integrator (its
+// visible points' next-event estimation uses the sampler; the photon maps are built in each render
+// and count in its time); the reference is always path traced.
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -19,6 +25,7 @@
 #include "image/metrics.h"
 #include "reference_image.h"
 #include "render/integrators/path_integrator.h"
+#include "render/integrators/photon_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/stopwatch.h"
@@ -32,7 +39,8 @@ int main(int argc, char** argv) {
     double seconds = 0.0;
     std::vector<uint32_t> spps{4, 16, 64};
     std::vector<std::string> methods{"area", "power", "bvh"};
-    std::string device, referencePath, referenceMethod = "bvh";
+    std::string device, referencePath, referenceMethod = "bvh", integrator = "path";
+    PhotonIntegratorSettings photon;
     app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
     app.add_option("--size", size, "image size")->capture_default_str();
     app.add_option("--reference-spp", referenceSpp, "path-traced reference samples per pixel")->capture_default_str();
@@ -47,6 +55,11 @@ int main(int argc, char** argv) {
     app.add_option("--seeds", seeds, "independent renders per row (relMSE averaged)")->capture_default_str();
     app.add_option("--max-depth", maxDepth)->capture_default_str();
     app.add_option("--device", device);
+    app.add_option("--integrator", integrator, "path or photon")->check(CLI::IsMember({"path", "photon"}))
+        ->capture_default_str();
+    app.add_option("--photons", photon.globalPaths, "--integrator photon: global map paths")->capture_default_str();
+    app.add_option("--caustic-photons", photon.causticPaths, "--integrator photon: caustic map paths")
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     try {
         const Scene scene = loadGltf(scenePath);
@@ -66,33 +79,37 @@ int main(int argc, char** argv) {
             Renderer renderer(context, scene, sampling.at(referenceMethod));
             reference = bench::referenceImage(renderer, base, referenceSpp, referencePath);
         }
-        fmt::print("| method | spp | s | relMSE |\n|---|---|---|---|\n");
+        struct Row { std::string method; std::unique_ptr<Renderer> renderer; double error = 0, time = 0, spp = 0; };
+        std::vector<Row> rows;
         for (const std::string& method : methods) {
             const auto prepare = Clock::now();
-            Renderer renderer(context, scene, sampling.at(method));
+            rows.push_back({method, std::make_unique<Renderer>(context, scene, sampling.at(method))});
             const double prepareSeconds = secondsSince(prepare);  // light BVH, photon cells
             if (prepareSeconds > 0.05) fmt::print("({} set-up: {:.2f} s)\n", method, prepareSeconds);
-            auto row = [&](uint32_t spp, double limit) {
-                double error = 0.0, time = 0.0, done = 0.0;
-                for (uint32_t k = 0; k < seeds; ++k) {
+        }
+        fmt::print("integrator: {}\n| method | spp | s | relMSE |\n|---|---|---|---|\n", integrator);
+        const std::vector<uint32_t> counts = seconds > 0.0 ? std::vector<uint32_t>{1u << 20} : spps;
+        for (uint32_t spp : counts) {
+            for (Row& row : rows) row.error = row.time = row.spp = 0.0;
+            for (uint32_t k = 0; k < seeds; ++k) {
+                for (Row& row : rows) {
                     FrameSettings s = base;
                     s.samplesPerPixel = spp;
-                    s.timeLimitSeconds = limit;
+                    s.timeLimitSeconds = seconds;
                     s.seed = 1 + k;
                     const auto start = Clock::now();
-                    const RenderResult r = renderer.render<PathIntegrator>(s);
-                    time += secondsSince(start);
-                    error += relativeMse(r.image, reference);
-                    done += double(r.stats.get<uint64_t>("counters.samplesPerPixel"));
+                    const RenderResult r = integrator == "photon" ? row.renderer->render<PhotonIntegrator>(s, photon)
+                                                                  : row.renderer->render<PathIntegrator>(s);
+                    row.time += secondsSince(start);
+                    row.error += relativeMse(r.image, reference);
+                    row.spp += double(r.stats.get<uint64_t>("counters.samplesPerPixel"));
                 }
-                fmt::print("| {} | {:.0f} | {:.2f} | {:.5f} |\n", method, done / seeds, time / seeds, error / seeds);
-                std::fflush(stdout);
-            };
-            if (seconds > 0.0) {
-                row(1u << 20, seconds);
-            } else {
-                for (uint32_t spp : spps) row(spp, 0.0);
             }
+            for (const Row& row : rows) {
+                fmt::print("| {} | {:.0f} | {:.2f} | {:.5f} |\n", row.method, row.spp / seeds, row.time / seeds,
+                           row.error / seeds);
+            }
+            std::fflush(stdout);
         }
     } catch (const std::exception& e) {
         fmt::print(stderr, "error: {}\n", e.what());

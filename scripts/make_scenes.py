@@ -405,6 +405,76 @@ def door_slit(path):
     b.write(path)
 
 
+# A hall of cubicles lit by many small lights among the partitions (issue 16's ">= 1,000 small lights among
+# occluders"): CUBICLES x CUBICLES cells of CUBICLE_SIZE, partitions PARTITION_HEIGHT high (below the ceiling) with
+# a doorway at one end of every cell edge, and in every cell a LIGHTS_PER_SIDE x LIGHTS_PER_SIDE grid of small
+# single-triangle lights facing down under the partitions' top, so most lights are hidden from most places.
+CUBICLES = 8
+CUBICLE_SIZE = 2.0
+HALL_HEIGHT = 3.0
+PARTITION_HEIGHT = 2.0
+PARTITION_THICKNESS = 0.06
+CUBICLE_DOOR = 0.7
+LIGHTS_PER_SIDE = 4
+SMALL_LIGHT_SIZE = 0.12
+SMALL_LIGHT_HEIGHT = 1.8
+SMALL_LIGHT_RADIANCE = (24.0, 21.0, 17.0)
+
+
+def partition_box(parts, x0, x1, z0, z1):
+    """The four sides and the top of a partition segment [x0, x1] x [0, PARTITION_HEIGHT] x [z0, z1]."""
+    h = PARTITION_HEIGHT
+    parts.quad([(x0, 0, z0), (x0, 0, z1), (x0, h, z1), (x0, h, z0)], (-1.0, 0.0, 0.0))
+    parts.quad([(x1, 0, z0), (x1, 0, z1), (x1, h, z1), (x1, h, z0)], (1.0, 0.0, 0.0))
+    parts.quad([(x0, 0, z0), (x1, 0, z0), (x1, h, z0), (x0, h, z0)], (0.0, 0.0, -1.0))
+    parts.quad([(x0, 0, z1), (x1, 0, z1), (x1, h, z1), (x0, h, z1)], (0.0, 0.0, 1.0))
+    parts.quad([(x0, h, z0), (x1, h, z0), (x1, h, z1), (x0, h, z1)], (0.0, 1.0, 0.0))
+
+
+def cubicles_1024(path):
+    """1,024 small lights (one triangle each) in 8 x 8 cubicles of a closed hall."""
+    b = GltfBuilder()
+    n, s, t = CUBICLES, CUBICLE_SIZE, PARTITION_THICKNESS / 2
+    e = n * s / 2
+    shell = Parts()
+    shell.quad([(-e, 0, -e), (e, 0, -e), (e, 0, e), (-e, 0, e)], (0.0, 1.0, 0.0))
+    shell.emit(b, "floor", b.material("floor", FLOOR_COLOR))
+    shell = Parts()
+    shell.quad([(-e, HALL_HEIGHT, -e), (e, HALL_HEIGHT, -e), (e, HALL_HEIGHT, e), (-e, HALL_HEIGHT, e)], (0.0, -1.0, 0.0))
+    for axis_n, c in (((1.0, 0.0, 0.0), -e), ((-1.0, 0.0, 0.0), e)):
+        shell.quad([(c, 0, -e), (c, 0, e), (c, HALL_HEIGHT, e), (c, HALL_HEIGHT, -e)], axis_n)
+    for axis_n, c in (((0.0, 0.0, 1.0), -e), ((0.0, 0.0, -1.0), e)):
+        shell.quad([(-e, 0, c), (e, 0, c), (e, HALL_HEIGHT, c), (-e, HALL_HEIGHT, c)], axis_n)
+    shell.emit(b, "shell", b.material("shell", WHITE))
+    walls = Parts()
+    for line in range(1, n):
+        c = -e + line * s
+        for cell in range(n):
+            u0, u1 = -e + cell * s, -e + (cell + 1) * s
+            # the doorway alternates ends so that no straight corridor crosses the hall
+            a, b_ = (u0 + CUBICLE_DOOR, u1) if (line + cell) % 2 == 0 else (u0, u1 - CUBICLE_DOOR)
+            partition_box(walls, c - t, c + t, a, b_)  # partitions in planes x = const
+            partition_box(walls, a, b_, c - t, c + t)  # and z = const
+    walls.emit(b, "partitions", b.material("partition", WALL_Z_COLOR))
+    positions, normals, indices = [], [], []
+    r = SMALL_LIGHT_SIZE / 2
+    for iz in range(n * LIGHTS_PER_SIDE):
+        for ix in range(n * LIGHTS_PER_SIDE):
+            cx = -e + (ix + 0.5) * s / LIGHTS_PER_SIDE
+            cz = -e + (iz + 0.5) * s / LIGHTS_PER_SIDE
+            base = len(positions)
+            # counter-clockwise seen from below: the front face looks down
+            positions += [(cx - r, SMALL_LIGHT_HEIGHT, cz - r), (cx + r, SMALL_LIGHT_HEIGHT, cz - r),
+                          (cx, SMALL_LIGHT_HEIGHT, cz + r)]
+            normals += [(0.0, -1.0, 0.0)] * 3
+            indices += [base, base + 1, base + 2]
+    b.mesh("lights", positions, normals, indices, b.material("light", (0.0, 0.0, 0.0), emissive=SMALL_LIGHT_RADIANCE))
+    # In cell (3, 3) near its corner, looking diagonally across the hall through the doorways.
+    eye = (-1.8, 1.55, -1.8)
+    b.camera(eye, yfov=math.radians(60), aspect=4 / 3, rotation=look_at_rotation(eye, (5.0, 0.9, 4.0)))
+    b.write(path)
+
+
 def spheres_outdoor(path):
     """Three spheres on a ground square and no lights: a scene for environments (--env, docs/environment.md)."""
     b = GltfBuilder()
@@ -437,6 +507,7 @@ def main():
     rooms_10x10(os.path.join(args.out, "rooms-10x10.gltf"))
     door_slit(os.path.join(args.out, "door-slit.gltf"))
     spheres_outdoor(os.path.join(args.out, "spheres-outdoor.gltf"))
+    cubicles_1024(os.path.join(args.out, "cubicles-1024.gltf"))
 
 
 if __name__ == "__main__":

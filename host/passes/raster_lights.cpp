@@ -19,9 +19,11 @@ float radicalInverse2(uint32_t i) {
 
 }  // namespace
 
-std::vector<gpu::GpuLight> buildRasterLights(const SceneArrays& a, uint32_t areaSamples) {
+std::vector<gpu::GpuLight> buildRasterLights(const SceneArrays& a, uint32_t areaSamples, const std::vector<bool>* keep) {
     std::vector<gpu::GpuLight> out;
-    for (const gpu::GpuLight& light : a.lights) {
+    for (size_t index = 0; index < a.lights.size(); ++index) {
+        const gpu::GpuLight& light = a.lights[index];
+        if (keep && index < keep->size() && !(*keep)[index]) continue;
         if (light.type == gpu::kLightEnvironment) continue;  // left to the compute integrators
         if (light.type != gpu::kLightTriangle) {
             out.push_back(light);

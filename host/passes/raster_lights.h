@@ -12,6 +12,8 @@
 
 namespace vkp {
 
-std::vector<gpu::GpuLight> buildRasterLights(const SceneArrays& arrays, uint32_t areaSamples);
+// `keep` (per light of arrays.lights, may be null): lights marked false are left out (render/light_reach.h).
+std::vector<gpu::GpuLight> buildRasterLights(const SceneArrays& arrays, uint32_t areaSamples,
+                                             const std::vector<bool>* keep = nullptr);
 
 }  // namespace vkp

@@ -115,7 +115,7 @@ LightCellStats buildLightCells(std::vector<float>& data, uint32_t lightCount, st
     return stats;
 }
 
-LightCellStats prepareLightCells(GpuScene& scene, const LightSampling& sampling) {
+LightCellStats prepareLightCells(GpuScene& scene, const LightSampling& sampling, LightReach* reach) {
     const auto start = Clock::now();
     const SceneArrays& arrays = scene.arrays();
     const uint32_t lightCount = static_cast<uint32_t>(arrays.lights.size());
@@ -136,6 +136,7 @@ LightCellStats prepareLightCells(GpuScene& scene, const LightSampling& sampling)
         map.build(0);
         photons = map.downloadPhotons();  // Read-back: the cells are built on the host
     }
+    if (reach) *reach = buildLightReach(photons, lightCount, cellSize);
     std::vector<float> data = arrays.lightCdf;
     LightCellStats stats = buildLightCells(data, lightCount, photons, cellSize, sampling.cellK, sampling.cellFloor);
     scene.replaceLightSelection(std::move(data));

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gpu_scene/light_tree.h"
+#include "render/light_reach.h"
 #include "shared/photon.glsl"
 
 namespace vkp {
@@ -33,6 +34,7 @@ LightCellStats buildLightCells(std::vector<float>& data, uint32_t lightCount, st
 
 // Traces sampling.cellPhotons photon paths, keeps their primary photons and uploads the cells
 // into the scene's light-selection buffer.
-LightCellStats prepareLightCells(GpuScene& scene, const LightSampling& sampling);
+// With `reach`, also keeps which lights reach which cells (render/light_reach.h).
+LightCellStats prepareLightCells(GpuScene& scene, const LightSampling& sampling, LightReach* reach = nullptr);
 
 }  // namespace vkp

@@ -14,7 +14,10 @@ namespace vkp {
 Renderer::Renderer(vk::Context& context, const Scene& scene, LightSampling lightSampling)
     : m_scene(context, scene, lightSampling) {
     lightSampling.check();
-    if (lightSampling.sampler == LightSampler::Photon) m_lightCells = prepareLightCells(m_scene, lightSampling);
+    if (lightSampling.sampler == LightSampler::Photon) {
+        m_lightReach.emplace();
+        m_lightCells = prepareLightCells(m_scene, lightSampling, &*m_lightReach);
+    }
 }
 
 RenderResult Renderer::render(const FrameSettings& settings, Integrator& integrator, const ProgressCallback& progress,
@@ -29,7 +32,7 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     if (settings.timeLimitSeconds > 0.0)
         frame.control.deadline = settings.timeLimitFrom.value_or(start) +
                                  std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(settings.timeLimitSeconds));
-    const RasterDirectLight raster(m_scene, settings, frame.gpuCamera);
+    const RasterDirectLight raster(m_scene, settings, frame.gpuCamera, m_lightReach ? &*m_lightReach : nullptr);
     frame.rasterDirect = &raster.direct();
     frame.rasterFlags = raster.pathFlags();
 

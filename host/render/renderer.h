@@ -59,6 +59,7 @@ public:
 private:
     GpuScene m_scene;
     std::optional<LightCellStats> m_lightCells;  // --light-sampler photon
+    std::optional<LightReach> m_lightReach;      // --light-sampler photon: for --direct raster
 };
 
 }  // namespace vkp
