@@ -69,6 +69,20 @@ TEST(BsdfTransmission, RoughDielectricSamplingMatchesPdf) {
                 }
 }
 
+// A solid of ior 1 is an invisible interface even when rough: every microfacet refracts wo to -wo,
+// so the layer is a Dirac that passes the light straight through with weight 1 (white tint).
+TEST(BsdfTransmission, RoughSolidOfIorOneIsInvisible) {
+    BsdfParams p = glass(0.7f, false);
+    p.ior = 1.0f;
+    const glm::vec3 wo = direction(0.6f, 0.4f);
+    for (float u : {0.1f, 0.5f, 0.9f}) {
+        const BsdfSample s = sampleBsdf(p, wo, true, true, glm::vec3(0.5f, u, 1.0f - u));
+        EXPECT_EQ(s.lobe, kLobeDelta | kLobeTransmission);
+        EXPECT_NEAR(glm::length(s.wi + wo), 0.0f, 1e-5f);
+        EXPECT_NEAR(s.weight.x, 1.0f, 1e-6f);
+    }
+}
+
 // Radiance and importance: the radiance BTDF through a solid's interface is the adjoint of the
 // importance BTDF, f_radiance(wo -> wi, eta) = f_importance(-wi -> -wo, 1/eta) (Veach 1997, 5.2),
 // so radiance entering glass is scaled by eta^2 = (n_wo / n_wi)^2 and importance is not. Reflection is

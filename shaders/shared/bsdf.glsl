@@ -312,17 +312,23 @@ INLINE float dielectricEta(BsdfParams p, bool entering) {
     return (entering || p.thinWalled != 0u) ? 1.0f / ior : ior;
 }
 
+// The dielectric layer is a Dirac: smooth (roughness < kDeltaRoughness), or a solid of ior 1, whose
+// microfacets all refract wo to -wo (an invisible interface; Walter's half vector degenerates).
+INLINE bool dielectricIsDelta(BsdfParams p) {
+    return specularIsDelta(p) || (p.thinWalled == 0u && !iorIsInfinite(p) && p.ior < 1.001f);
+}
+
 // f of the rough dielectric layer (tinted, without the 'transmission' weight) for wo.z > 0 and wi on
 // either side; what sampleRoughDielectricLayer samples (tests check the two agree).
 INLINE vec3 evalDielectricLayer(BsdfParams p, vec3 wo, vec3 wi, bool entering, bool radiance) {
-    if (specularIsDelta(p)) return vec3(0.0f);
+    if (dielectricIsDelta(p)) return vec3(0.0f);
     float f = evalRoughDielectric(wo, wi, bsdfAlpha(p), dielectricEta(p, entering), p.thinWalled != 0u,
                                   iorIsInfinite(p), radiance);
     return wi.z < 0.0f ? p.baseColor * f : vec3(f);
 }
 
 INLINE float pdfDielectricLayer(BsdfParams p, vec3 wo, vec3 wi, bool entering) {
-    if (specularIsDelta(p)) return 0.0f;
+    if (dielectricIsDelta(p)) return 0.0f;
     return pdfRoughDielectric(wo, wi, bsdfAlpha(p), dielectricEta(p, entering), p.thinWalled != 0u,
                               iorIsInfinite(p));
 }
@@ -358,7 +364,7 @@ INLINE BsdfSample sampleRoughDielectricLayer(BsdfParams p, vec3 wo, bool enterin
 // Samples the whole BSDF: u.x picks the layer (and, rescaled, the opaque lobe), u.yz the direction.
 INLINE BsdfSample sampleBsdf(BsdfParams p, vec3 wo, bool entering, bool radiance, vec3 u) {
     if (u.x < p.transmission) {
-        if (specularIsDelta(p)) return sampleDielectric(p, wo, entering, radiance, vec2(u.y, u.z));
+        if (dielectricIsDelta(p)) return sampleDielectric(p, wo, entering, radiance, vec2(u.y, u.z));
         return sampleRoughDielectricLayer(p, wo, entering, radiance,
                                           vec3(min(u.x / p.transmission, kOneMinusEpsilon), u.y, u.z));
     }
