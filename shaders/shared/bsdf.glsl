@@ -8,9 +8,11 @@
 //    Fm = baseColor + (1 - baseColor)(1 - VdotH)^5 (Schlick), and specular_brdf the GGX microfacet
 //    reflection D G2 / (4 |NdotL| |NdotV|) (shared/bsdf_microfacet.glsl). specular = 0 is exactly
 //    Lambert. Roughness below kDeltaRoughness makes the specular lobe a perfect mirror.
-//  - with probability `transmission` (KHR_materials_transmission) the hit is instead a smooth
-//    dielectric: exact Fresnel picks reflection or refraction (tinted by baseColor); thin-walled
-//    surfaces transmit straight through.
+//  - with probability `transmission` (KHR_materials_transmission) the hit is instead a dielectric:
+//    smooth (roughness < kDeltaRoughness): exact Fresnel picks reflection or refraction (tinted by
+//    baseColor), thin-walled surfaces transmit straight through; rough: the GGX BSDF of Walter et al.
+//    2007 (shared/bsdf_rough_dielectric.glsl). The dielectric layer is sampled, not evaluated:
+//    its samples carry kLobeDelta (no light sampling, no MIS), see sampleBsdf.
 // One code path for evaluation, sampling and pdf: sampling picks a lobe with a probability from
 // the lobes' estimated albedos at wo (bsdfLobeProbabilities), and returns the mixture pdf.
 #ifndef VKP_BSDF_GLSL
@@ -20,6 +22,7 @@
 #include "sampling.glsl"
 #include "bsdf_microfacet.glsl"
 #include "bsdf_sheen.glsl"
+#include "bsdf_rough_dielectric.glsl"
 #include "bsdf_tables.glsl"  // GLSL: a storage buffer (VKP_BSDF_TABLES_BINDING)
 SHARED_BEGIN
 
@@ -303,10 +306,67 @@ INLINE BsdfSample sampleDielectric(BsdfParams p, vec3 wo, bool entering, bool ra
     return s;
 }
 
+// The ratio n(wo side) / n(other side) of the dielectric layer; thin walls count as entering.
+INLINE float dielectricEta(BsdfParams p, bool entering) {
+    float ior = max(p.ior, 1.0f);
+    return (entering || p.thinWalled != 0u) ? 1.0f / ior : ior;
+}
+
+// The dielectric layer is a Dirac: smooth (roughness < kDeltaRoughness), or a solid of ior 1, whose
+// microfacets all refract wo to -wo (an invisible interface; Walter's half vector degenerates).
+INLINE bool dielectricIsDelta(BsdfParams p) {
+    return specularIsDelta(p) || (p.thinWalled == 0u && !iorIsInfinite(p) && p.ior < 1.001f);
+}
+
+// f of the rough dielectric layer (tinted, without the 'transmission' weight) for wo.z > 0 and wi on
+// either side; what sampleRoughDielectricLayer samples (tests check the two agree).
+INLINE vec3 evalDielectricLayer(BsdfParams p, vec3 wo, vec3 wi, bool entering, bool radiance) {
+    if (dielectricIsDelta(p)) return vec3(0.0f);
+    float f = evalRoughDielectric(wo, wi, bsdfAlpha(p), dielectricEta(p, entering), p.thinWalled != 0u,
+                                  iorIsInfinite(p), radiance);
+    return wi.z < 0.0f ? p.baseColor * f : vec3(f);
+}
+
+INLINE float pdfDielectricLayer(BsdfParams p, vec3 wo, vec3 wi, bool entering) {
+    if (dielectricIsDelta(p)) return 0.0f;
+    return pdfRoughDielectric(wo, wi, bsdfAlpha(p), dielectricEta(p, entering), p.thinWalled != 0u,
+                              iorIsInfinite(p));
+}
+
+// Samples the rough dielectric layer (roughness >= kDeltaRoughness). Its samples are distributed by
+// pdfDielectricLayer but the lobe is flagged kLobeDelta: evalBsdf and light sampling
+// do not see the dielectric layer, so integrators must take its samples at full weight (as a
+// mirror's), and photon paths pass through it like through smooth glass. Rough reflection off the
+// layer is kLobeDelta too, transmission adds kLobeTransmission.
+INLINE BsdfSample sampleRoughDielectricLayer(BsdfParams p, vec3 wo, bool entering, bool radiance, vec3 u) {
+    BsdfSample s;
+    s.lobe = kLobeNone;
+    s.pdf = 0.0f;
+    s.weight = vec3(0.0f);
+    float w;
+    s.wi = sampleRoughDielectric(wo, bsdfAlpha(p), dielectricEta(p, entering), p.thinWalled != 0u,
+                                 iorIsInfinite(p), radiance, u, w);
+    if (s.wi.z == 0.0f || w <= 0.0f) {
+        s.wi = vec3(0.0f, 0.0f, 1.0f);
+        return s;
+    }
+    // pdf stays 0 as for every kLobeDelta sample (pdfDielectricLayer has the layer's density).
+    if (s.wi.z > 0.0f) {
+        s.weight = vec3(w);
+        s.lobe = kLobeDelta;
+    } else {
+        s.weight = p.baseColor * w;
+        s.lobe = kLobeDelta | kLobeTransmission;
+    }
+    return s;
+}
+
 // Samples the whole BSDF: u.x picks the layer (and, rescaled, the opaque lobe), u.yz the direction.
 INLINE BsdfSample sampleBsdf(BsdfParams p, vec3 wo, bool entering, bool radiance, vec3 u) {
     if (u.x < p.transmission) {
-        return sampleDielectric(p, wo, entering, radiance, vec2(u.y, u.z));
+        if (dielectricIsDelta(p)) return sampleDielectric(p, wo, entering, radiance, vec2(u.y, u.z));
+        return sampleRoughDielectricLayer(p, wo, entering, radiance,
+                                          vec3(min(u.x / p.transmission, kOneMinusEpsilon), u.y, u.z));
     }
     BsdfSample s;
     s.lobe = kLobeNone;

@@ -28,7 +28,8 @@ const uint kHarnessPdfBsdf = 6u;
 const uint kHarnessFresnelDielectric = 7u;
 const uint kHarnessOrthonormalBasis = 8u;
 const uint kHarnessSampleBsdf = 9u;
-const uint kHarnessFunctionCount = 10u;
+const uint kHarnessRoughDielectric = 10u;
+const uint kHarnessFunctionCount = 11u;
 
 INLINE uvec4 floatBits(vec4 v) {
     return uvec4(floatBitsToUint(v.x), floatBitsToUint(v.y), floatBitsToUint(v.z), floatBitsToUint(v.w));
@@ -98,6 +99,19 @@ INLINE uvec4 evaluateHarnessFunction(uint function, HarnessInput in_) {
         vec3 wo = harnessDirection(vec2(in_.a.x, in_.a.y));
         BsdfSample s = sampleBsdf(p, wo, true, true, vec3(in_.a.z, in_.b.x, in_.b.y));
         return floatBits(vec4(s.wi.x, s.wi.y, s.wi.z, s.pdf));
+    }
+    if (function == kHarnessRoughDielectric) {
+        // Rough glass (roughness 0.1 .. 1), solid or thin, entering or leaving: one sample of
+        // sampleBsdf and the layer's eval and pdf at the sampled direction.
+        BsdfParams p = harnessBsdfParams(in_);
+        p.roughness = 0.1f + 0.9f * in_.a.w;
+        p.transmission = 1.0f;
+        p.thinWalled = in_.u.z & 1u;
+        bool entering = (in_.u.z & 2u) == 0u;
+        vec3 wo = harnessDirection(vec2(in_.a.x, in_.a.y));
+        BsdfSample s = sampleBsdf(p, wo, entering, true, vec3(in_.b.w, in_.a.z, in_.b.x));
+        return floatBits(vec4(s.wi.z, s.weight.x, evalDielectricLayer(p, wo, s.wi, entering, true).x,
+                              pdfDielectricLayer(p, wo, s.wi, entering)));
     }
     return uvec4(0u);
 }
