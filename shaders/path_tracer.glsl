@@ -161,7 +161,7 @@ bool extendPath(inout PathState st) {
     st.throughput *= v.transmittance;
 
     if (emitsTowards(v.material, v.hit.frontFace)) {
-        vec3 le = emittedRadiance(v.material, v.hit.uv);
+        vec3 le = v.emitted;
         if (le.r + le.g + le.b > 0.0f) {
             float weight = 1.0f;
             if (useNee && !st.lastDelta) weight = emissionMisWeight(v, st.lastPdf, params.lightCount, st.lastPosition, st.lastNormal);

@@ -42,6 +42,7 @@ struct PathVertex {
     SurfaceHit hit;
     GpuMaterial material;
     BsdfParams bsdf;
+    vec3 emitted;         // the material's emission at the hit (factor x texture), either side
     float distance;       // from the ray's origin (kInfinity when the ray escaped)
     vec3 transmittance;   // exp(-sigma * distance): what the ray's medium let through
     vec3 n;               // shading normal on the arrival side (+z of the frame), world space
@@ -73,11 +74,16 @@ bool traceVertex(Ray ray, out PathVertex v) {
         return false;
     }
     v.transmittance = exp(-ray.mediumSigma * v.distance);
-    v.hit = surfaceAt(tri, b1, b2, ray.dir);
+    // Every texture of the hit's material in one loop (normal map, BSDF, emission): one inlined
+    // texture lookup instead of one per texture slot (issue 17).
+    MaterialTexels texels;
+    v.hit = surfaceTexelsAt(tri, b1, b2, ray.dir, ~0u, texels);
     v.triangle = tri;
     v.barycentrics = vec2(b1, b2);
     v.material = materials[v.hit.material];
-    v.bsdf = bsdfParamsAtHit(v.material, v.hit);
+    v.bsdf = bsdfParamsOf(v.material, texels);
+    v.bsdf.baseColor *= v.hit.color.rgb;
+    v.emitted = emittedRadianceOf(v.material, texels);
     v.n = v.hit.frontFace ? v.hit.shadingNormal : -v.hit.shadingNormal;
     shadingFrame(v.n, -ray.dir, v.t, v.b, v.wo);
     return true;

@@ -79,6 +79,97 @@ vec4 sampleTexture(int index, vec4 uv) {
     return mix(a, b, f.y);
 }
 
+// The texels a surface point reads from its material's textures (sampleMaterialTextures), vec4(1)
+// for a texture the material lacks or that the point does not need (a factor times 1 is itself).
+struct MaterialTexels {
+    vec4 baseColor;
+    vec4 metallicRoughness;
+    vec4 emissive;
+    vec4 normal;
+    vec4 specular;
+    vec4 specularColor;
+    vec4 sheenColor;
+    vec4 sheenRoughness;
+    vec4 clearcoat;
+    vec4 clearcoatRoughness;
+};
+
+// Texture slots of a material (bits of sampleMaterialTextures' `slots`).
+const uint kMaterialTextureBaseColor = 0u;
+const uint kMaterialTextureMetallicRoughness = 1u;
+const uint kMaterialTextureEmissive = 2u;
+const uint kMaterialTextureNormal = 3u;
+const uint kMaterialTextureSpecular = 4u;
+const uint kMaterialTextureSpecularColor = 5u;
+const uint kMaterialTextureSheenColor = 6u;
+const uint kMaterialTextureSheenRoughness = 7u;
+const uint kMaterialTextureClearcoat = 8u;
+const uint kMaterialTextureClearcoatRoughness = 9u;
+const uint kMaterialTextureSlots = 10u;
+
+int materialTexture(GpuMaterial m, uint slot) {
+    switch (slot) {
+    case kMaterialTextureBaseColor: return m.baseColorTexture;
+    case kMaterialTextureMetallicRoughness: return m.metallicRoughnessTexture;
+    case kMaterialTextureEmissive: return m.emissiveTexture;
+    case kMaterialTextureNormal: return m.normalTexture;
+    case kMaterialTextureSpecular: return m.specularTexture;
+    case kMaterialTextureSpecularColor: return m.specularColorTexture;
+    case kMaterialTextureSheenColor: return m.sheenColorTexture;
+    case kMaterialTextureSheenRoughness: return m.sheenRoughnessTexture;
+    case kMaterialTextureClearcoat: return m.clearcoatTexture;
+    default: return m.clearcoatRoughnessTexture;
+    }
+}
+
+// The slots of the textures m has, among `wanted`; the sheen colour, clearcoat and emissive
+// textures only where their factor is non-zero (the texel could not change the result).
+uint materialTextureSlots(GpuMaterial m, uint wanted) {
+    uint slots = 0u;
+    for (uint slot = 0u; slot < kMaterialTextureSlots; ++slot)
+        if (materialTexture(m, slot) >= 0) slots |= 1u << slot;
+    if (!(maxComponent(m.sheenColor) > 0.0f)) slots &= ~(1u << kMaterialTextureSheenColor);
+    if (!(m.clearcoat > 0.0f)) slots &= ~(1u << kMaterialTextureClearcoat);
+    if (!(m.emissive.r > 0.0f || m.emissive.g > 0.0f || m.emissive.b > 0.0f)) slots &= ~(1u << kMaterialTextureEmissive);
+    return slots & wanted;
+}
+
+// Samples the textures of m named by `slots` at uv (both TEXCOORD sets), all through ONE
+// sampleTexture call site: lavapipe inlines a function at every call, and one call per texture
+// slot made the path tracer's shader several times larger, slower to compile and slower to run
+// even on untextured scenes (issue 17). Untextured materials run no iteration.
+MaterialTexels sampleMaterialTextures(GpuMaterial m, vec4 uv, uint slots) {
+    MaterialTexels t;
+    t.baseColor = vec4(1.0f);
+    t.metallicRoughness = vec4(1.0f);
+    t.emissive = vec4(1.0f);
+    t.normal = vec4(1.0f);
+    t.specular = vec4(1.0f);
+    t.specularColor = vec4(1.0f);
+    t.sheenColor = vec4(1.0f);
+    t.sheenRoughness = vec4(1.0f);
+    t.clearcoat = vec4(1.0f);
+    t.clearcoatRoughness = vec4(1.0f);
+    for (uint k = 0u; k < kMaterialTextureSlots && slots != 0u; ++k) {
+        uint slot = uint(findLSB(slots));
+        slots &= slots - 1u;
+        vec4 v = sampleTexture(materialTexture(m, slot), uv);
+        switch (slot) {
+        case kMaterialTextureBaseColor: t.baseColor = v; break;
+        case kMaterialTextureMetallicRoughness: t.metallicRoughness = v; break;
+        case kMaterialTextureEmissive: t.emissive = v; break;
+        case kMaterialTextureNormal: t.normal = v; break;
+        case kMaterialTextureSpecular: t.specular = v; break;
+        case kMaterialTextureSpecularColor: t.specularColor = v; break;
+        case kMaterialTextureSheenColor: t.sheenColor = v; break;
+        case kMaterialTextureSheenRoughness: t.sheenRoughness = v; break;
+        case kMaterialTextureClearcoat: t.clearcoat = v; break;
+        default: t.clearcoatRoughness = v; break;
+        }
+    }
+    return t;
+}
+
 // Both TEXCOORD sets of triangle s at barycentrics (b1, b2).
 vec4 interpolatedUv(GpuTriangleShading s, float b1, float b2) {
     float b0 = 1.0f - b1 - b2;
@@ -132,6 +223,11 @@ vec3 offsetRayOrigin(vec3 p, vec3 n, vec3 dir) {
 
 #include "material_extensions.glsl"
 
+// Emission from the sampled texels (sampleMaterialTextures with the emissive slot).
+vec3 emittedRadianceOf(GpuMaterial m, MaterialTexels texels) {
+    return m.emissive * texels.emissive.rgb;
+}
+
 vec3 emittedRadiance(GpuMaterial m, vec4 uv) {
     vec3 e = m.emissive;
     if (m.emissiveTexture >= 0 && (e.r > 0.0f || e.g > 0.0f || e.b > 0.0f))
@@ -153,14 +249,15 @@ struct SurfaceHit {
 
 // The normal map's normal (glTF: tangent space +X along the tangent, +Y along
 // cross(normal, tangent) * w, scaled in xy by normalTexture.scale) around unit normal n, with the
-// interpolated world-space tangent t (not yet orthogonalised) and w < 0 as `negative`.
-vec3 normalMapped(GpuMaterial m, vec3 t, bool negative, vec4 uv, vec3 n) {
+// interpolated world-space tangent t (not yet orthogonalised), w < 0 as `negative`, and the normal
+// texture's texel `texel`.
+vec3 normalMapped(GpuMaterial m, vec3 t, bool negative, vec3 texel, vec3 n) {
     t -= n * dot(n, t);
     float len = length(t);
     if (!(len > 1.0e-6f)) return n;
     t /= len;
     vec3 b = cross(n, t) * (negative ? -1.0f : 1.0f);
-    vec3 c = sampleTexture(m.normalTexture, uv).xyz * 2.0f - 1.0f;
+    vec3 c = texel * 2.0f - 1.0f;
     vec3 mapped = t * (c.x * m.normalScale) + b * (c.y * m.normalScale) + n * c.z;
     float mappedLength = length(mapped);
     return mappedLength > 1.0e-6f ? mapped / mappedLength : n;
@@ -190,7 +287,9 @@ float lightIndexOfHit(uint id) {
 // instanced triangle's vertices, normals and tangents go through its instance's transform (normals
 // by the inverse transpose; a mirroring transform reverses the winding, so the geometric normal is
 // negated and the tangent handedness flipped, as the loader does for flattened meshes).
-SurfaceHit surfaceAt(uint id, float b1, float b2, vec3 rayDir) {
+// `wanted`: the material texture slots (bits 1 << kMaterialTexture*) to sample there, all in one
+// loop (sampleMaterialTextures); the normal map's is used here when wanted.
+SurfaceHit surfaceTexelsAt(uint id, float b1, float b2, vec3 rayDir, uint wanted, out MaterialTexels texels) {
     uint tri = id;
     bool instanced = id >= instanceHeader.staticTriangles;
     GpuInstance inst;
@@ -221,12 +320,14 @@ SurfaceHit surfaceAt(uint id, float b1, float b2, vec3 rayDir) {
     float len = length(n);
     n = len > 0.0f ? n / len : hit.geometricNormal;
     GpuMaterial m = materials[s.material];
-    if (m.normalTexture >= 0 && s.tangentSign != kTangentNone) {
+    if (s.tangentSign == kTangentNone) wanted &= ~(1u << kMaterialTextureNormal);
+    texels = sampleMaterialTextures(m, hit.uv, materialTextureSlots(m, wanted));
+    if ((wanted & (1u << kMaterialTextureNormal)) != 0u && m.normalTexture >= 0 && s.tangentSign != kTangentNone) {
         vec3 tangent = b0 * decodeOctahedral(s.tangent0) + b1 * decodeOctahedral(s.tangent1) +
                        b2 * decodeOctahedral(s.tangent2);
         if (instanced)
             tangent = transformVector3x4(inst.objectToWorld[0], inst.objectToWorld[1], inst.objectToWorld[2], tangent);
-        n = normalMapped(m, tangent, (s.tangentSign == kTangentNegative) != mirrored, hit.uv, n);
+        n = normalMapped(m, tangent, (s.tangentSign == kTangentNegative) != mirrored, texels.normal.xyz, n);
     }
     if (dot(n, hit.geometricNormal) < 0.0f) n = -n;
     hit.shadingNormal = n;
@@ -237,24 +338,32 @@ SurfaceHit surfaceAt(uint id, float b1, float b2, vec3 rayDir) {
     return hit;
 }
 
-// The material's parameters at a surface point: uv holds both TEXCOORD sets (SurfaceHit.uv).
-// COLOR_0 multiplies the base colour (the callers: bsdfParamsAtHit).
-BsdfParams bsdfParamsAt(GpuMaterial m, vec4 uv) {
-    vec4 base = m.baseColor;
-    if (m.baseColorTexture >= 0) base *= sampleTexture(m.baseColorTexture, uv);
-    float metallic = m.metallic;
-    float roughness = m.roughness;
-    if (m.metallicRoughnessTexture >= 0) {
-        vec4 mr = sampleTexture(m.metallicRoughnessTexture, uv);
-        roughness *= mr.g;  // glTF: roughness in G, metalness in B
-        metallic *= mr.b;
-    }
+// The surface with its normal map applied (surfaceTexelsAt without other textures).
+SurfaceHit surfaceAt(uint id, float b1, float b2, vec3 rayDir) {
+    MaterialTexels texels;
+    return surfaceTexelsAt(id, b1, b2, rayDir, 1u << kMaterialTextureNormal, texels);
+}
+
+// The material texture slots the BSDF reads (all but emissive and normal).
+const uint kBsdfTextureSlots = ~((1u << kMaterialTextureEmissive) | (1u << kMaterialTextureNormal));
+
+// The material's parameters from the texels at a surface point (sampleMaterialTextures with
+// kBsdfTextureSlots at least). COLOR_0 multiplies the base colour (the callers: bsdfParamsAtHit).
+BsdfParams bsdfParamsOf(GpuMaterial m, MaterialTexels texels) {
+    vec4 base = m.baseColor * texels.baseColor;
+    float metallic = m.metallic * texels.metallicRoughness.b;  // glTF: roughness in G, metalness in B
+    float roughness = m.roughness * texels.metallicRoughness.g;
     BsdfParams p = makeBsdfParams(base.rgb, clamp(metallic, 0.0f, 1.0f), clamp(roughness, 0.0f, 1.0f));
     p.transmission = clamp(m.transmission, 0.0f, 1.0f);
     p.ior = m.ior;
     p.thinWalled = (m.flags & kMaterialThinWalled) != 0u ? 1u : 0u;
-    materialExtensionsAt(m, uv, p);
+    materialExtensionsAt(m, texels, p);
     return p;
+}
+
+// The material's parameters at a surface point: uv holds both TEXCOORD sets (SurfaceHit.uv).
+BsdfParams bsdfParamsAt(GpuMaterial m, vec4 uv) {
+    return bsdfParamsOf(m, sampleMaterialTextures(m, uv, materialTextureSlots(m, kBsdfTextureSlots)));
 }
 
 BsdfParams bsdfParamsAtHit(GpuMaterial m, SurfaceHit hit) {
@@ -422,11 +531,17 @@ LightSample sampleLight(uint index, float selectPdf, bool solidAngle, vec3 x, ve
 // epsilon, so neither the surface nor the light's own triangle can occlude the sample.
 bool lightVisible(vec3 x, vec3 ng, LightSample ls) {
     vec3 origin = offsetRayOrigin(x, ng, ls.wi);
-    if (ls.distance >= kInfinity) return !traceAny(origin, ls.wi, kInfinity);
-    vec3 toLight = ls.position - origin;
-    float distance = length(toLight);
-    float tMax = distance - 2.0f * rayEpsilon(ls.position);
-    return tMax <= 0.0f || !traceAny(origin, toLight / distance, tMax);
+    vec3 dir = ls.wi;
+    float tMax = kInfinity;
+    if (ls.distance < kInfinity) {
+        vec3 toLight = ls.position - origin;
+        float distance = length(toLight);
+        tMax = distance - 2.0f * rayEpsilon(ls.position);
+        if (tMax <= 0.0f) return true;
+        dir = toLight / distance;
+    }
+    // One traceAny call site: lavapipe inlines the whole traversal at each (issue 17).
+    return !traceAny(origin, dir, tMax);
 }
 
 #endif

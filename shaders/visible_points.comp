@@ -70,7 +70,7 @@ void findVisiblePoint() {
         if (emitsTowards(v.material, v.hit.frontFace)) {
             float weight = lastDelta ? 1.0f : emissionMisWeight(v, lastPdf, params.lightCount, lastPosition, lastNormal);
             if (rasterCoversEmission(params.flags, depth, lastDelta)) weight = 0.0f;
-            radiance += throughput * emittedRadiance(v.material, v.hit.uv) * weight;
+            radiance += throughput * v.emitted * weight;
         }
 
         // --direct raster: the first vertex's covered lights come from the raster pass.
