@@ -111,6 +111,20 @@ TEST_F(LightSamplerRender, BvhMeanEqualsPowerWithFourLights) {
     expectSameMean(scene, "four lights", 32, 16);
 }
 
+// The photon cells' mixture (cells where photons arrived, the BVH floor elsewhere) with one emissive
+// triangle, and with four lights of every kind (triangle, point, spot, sun: the sun stays outside the
+// tree and the cells), estimates the same image as power sampling.
+TEST_F(LightSamplerRender, PhotonCellsMeanEqualsPowerWithOneAndFourLights) {
+    LightSampling photon{LightSampler::Photon};
+    photon.cellPhotons = 20000;
+    for (const bool more : {false, true}) {
+        const Scene scene = boxScene(more);
+        ASSERT_EQ(buildSceneArrays(scene).lights.size(), more ? 4u : 1u);
+        expectSameMean(scene, more ? "four lights, photon" : "one light, photon", 32, 16, {LightSampler::Power},
+                       photon);
+    }
+}
+
 TEST_F(LightSamplerRender, BvhMeanEqualsPowerInTheHundredRooms) {
     const Scene scene = loadGltf(std::string(VKPHOTON_SCENES) + "/rooms-10x10.gltf");
     ASSERT_EQ(buildSceneArrays(scene).lights.size(), 200u);  // 100 quads
