@@ -31,15 +31,6 @@ size_t componentSize(int componentType) {
     }
 }
 
-int componentCount(int type) {
-    switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return 1;
-    case TINYGLTF_TYPE_VEC2: return 2;
-    case TINYGLTF_TYPE_VEC3: return 3;
-    case TINYGLTF_TYPE_VEC4: return 4;
-    default: return 0;
-    }
-}
 
 bool isUnsignedInteger(int componentType) {
     return componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
@@ -108,7 +99,7 @@ void decode(const tinygltf::Model& model, int index, int components, Resize&& re
     const size_t compSize = componentSize(a.componentType);
     if (compSize == 0) fail(name, fmt::format("invalid componentType {}", a.componentType));
     static constexpr const char* kTypeNames[] = {"", "SCALAR", "VEC2", "VEC3", "VEC4"};
-    if (componentCount(a.type) != components) fail(name, fmt::format("the type must be {}", kTypeNames[components]));
+    if (tinygltf::GetNumComponentsInType(a.type) != components) fail(name, fmt::format("the type must be {}", kTypeNames[components]));
     const size_t elementSize = compSize * components;
     Span dense;
     if (a.bufferView >= 0) dense = checkedSpan(model, a.bufferView, a.byteOffset, 0, a.count, elementSize, name);

@@ -22,15 +22,6 @@ constexpr size_t kMaxDecodedElements = size_t(1) << 26;
     throw InputError(fmt::format("{}: {}", element, what));
 }
 
-int componentCount(int type) {
-    switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return 1;
-    case TINYGLTF_TYPE_VEC2: return 2;
-    case TINYGLTF_TYPE_VEC3: return 3;
-    case TINYGLTF_TYPE_VEC4: return 4;
-    default: return 0;
-    }
-}
 
 // Appends `bytes` as a new buffer with one bufferView over it, and points the accessor at it.
 void attach(tinygltf::Model& model, int accessorIndex, std::vector<unsigned char> bytes, int componentType) {
@@ -96,8 +87,8 @@ void decodePrimitive(tinygltf::Model& model, tinygltf::Primitive& primitive, con
         tinygltf::Accessor& accessor = accessorAt(model, it->second, where);
         const draco::PointAttribute* attribute = mesh->GetAttributeByUniqueId(static_cast<uint32_t>(id.Get<int>()));
         if (!attribute) fail(where, fmt::format("the Draco stream has no attribute {}", id.Get<int>()));
-        const int components = componentCount(accessor.type);
-        if (components == 0 || attribute->num_components() != components)
+        const int components = tinygltf::GetNumComponentsInType(accessor.type);
+        if (components <= 0 || attribute->num_components() != components)
             fail(where, fmt::format("the Draco attribute has {} components, accessors[{}] {}",
                                     int(attribute->num_components()), it->second, components));
         if (accessor.count != points)
