@@ -114,22 +114,29 @@ LightSampler autoLightSampler(const Scene& scene) {
     return lights > kAutoBvhLights ? LightSampler::Bvh : LightSampler::Power;
 }
 
-int runRender(const RenderCommandOptions& options, const IntegratorConfig& config) {
-    if (options.frames) return runRenderFrames(options, config);
-    const auto start = Clock::now();
-    const std::filesystem::path exrPath = options.output.empty() ? defaultOutput(options.scene) : options.output;
-    if (exrPath.extension() != ".exr")
-        throw InputError(fmt::format("-o {}: the output must end in .exr (a .png is written beside it)", exrPath.string()));
-    std::filesystem::path pngPath = exrPath;
-    pngPath.replace_extension(".png");
-    // Every output is checked before any work: a bad path must not cost a render.
-    checkWritable(exrPath);
-    checkWritable(pngPath);
+void checkRenderOutputs(const RenderCommandOptions& options, const std::vector<std::filesystem::path>& exrs) {
+    for (const std::filesystem::path& exr : exrs) {
+        if (exr.extension() != ".exr")
+            throw InputError(fmt::format("-o {}: the output must end in .exr (a .png is written beside it)", exr.string()));
+        std::filesystem::path png = exr;
+        png.replace_extension(".png");
+        checkWritable(exr);
+        checkWritable(png);
+    }
     if (!options.statsJson.empty()) checkWritable(options.statsJson);
     // `vkphoton merge` joins the beauty image only; parts with AOV layers would lose them.
     if (options.aov.any() && options.frame.crop)
         throw InputError("--aov cannot be combined with --tile or --crop: vkphoton merge joins the image only");
     options.lightSampling.check();
+}
+
+int runRender(const RenderCommandOptions& options, const IntegratorConfig& config) {
+    if (options.frames) return runRenderFrames(options, config);
+    const auto start = Clock::now();
+    const std::filesystem::path exrPath = options.output.empty() ? defaultOutput(options.scene) : options.output;
+    std::filesystem::path pngPath = exrPath;
+    pngPath.replace_extension(".png");
+    checkRenderOutputs(options, {exrPath});
     // Signals from here on stop the work and write what there is (app/interrupt.h).
     installInterruptHandler();
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <vector>
 #include <string>
 
 #include "gpu_scene/light_tree.h"
@@ -103,6 +104,10 @@ struct GltfLimits;
 namespace vk { class Context; }
 GltfLimits deviceSceneLimits(const vk::Context& context, double maxMemoryGiB);
 
+// Checks, before any work, what a render of `options` will write: every EXR path in `exrs` (and
+// the PNG beside it) and the stats JSON writable, the EXRs named .exr, flags that cannot combine.
+// Throws InputError: a bad path or flag must not cost a render.
+void checkRenderOutputs(const RenderCommandOptions& options, const std::vector<std::filesystem::path>& exrs);
 // Renders with the integrator `config` builds (its settings checked already).
 int runRender(const RenderCommandOptions& options, const IntegratorConfig& config);
 int runGuideGrid(const GuideGridCommandOptions& options);

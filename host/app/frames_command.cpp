@@ -41,17 +41,8 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
     const std::filesystem::path pattern = framesOutputPattern(options);
     if (pattern.extension() != ".exr")
         throw InputError(fmt::format("-o {}: the output must end in .exr (a .png is written beside it)", pattern.string()));
-    for (const uint32_t f : {range.first, range.last}) {
-        std::filesystem::path exr = frameOutputPath(pattern, f), png = exr;
-        png.replace_extension(".png");
-        checkWritable(exr);
-        checkWritable(png);
-    }
-    if (!options.statsJson.empty()) checkWritable(options.statsJson);
-    // As for a still render: `vkphoton merge` joins the beauty image only.
-    if (options.aov.any() && options.frame.crop)
-        throw InputError("--aov cannot be combined with --tile or --crop: vkphoton merge joins the image only");
-    options.lightSampling.check();
+    // The first and the last frame's files stand for all (the same folder, the same pattern).
+    checkRenderOutputs(options, {frameOutputPath(pattern, range.first), frameOutputPath(pattern, range.last)});
     installInterruptHandler();
 
     vk::Context context({options.validate, options.device});
