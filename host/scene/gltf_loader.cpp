@@ -749,20 +749,9 @@ Scene GltfSceneSource::stillScene() {
 }
 
 Scene loadGltf(const std::filesystem::path& path, const GltfLimits& limits) {
-    // Every message starts with the file; the parts below name only the element.
-    try {
-        return Loader(path, limits).load();
-    } catch (const InputError& e) {
-        throw InputError(fmt::format("{}: {}", path.string(), e.what()));
-    } catch (const RuntimeError& e) {
-        throw RuntimeError(fmt::format("{}: {}", path.string(), e.what()));
-    } catch (const std::bad_alloc&) {
-        throw InputError(fmt::format("{}: out of memory while loading (is the file hostile?)", path.string()));
-    } catch (const std::exception& e) {
-        // tinygltf reports by return value, but a malformed file must never escape as anything
-        // but bad input.
-        throw InputError(fmt::format("{}: unreadable glTF: {}", path.string(), e.what()));
-    }
+    // tinygltf reports by return value, but a malformed file must never escape as anything but
+    // bad input: withFileName maps every exception to an error naming the file.
+    return withFileName(path, [&] { return Loader(path, limits).load(); });
 }
 
 }  // namespace vkp
