@@ -10,16 +10,9 @@
 namespace vkp {
 namespace {
 
-void appendPositions(std::span<const Triangle> triangles, const std::vector<uint32_t>& order,
-                     std::vector<gpu::GpuTriangle>& out) {
-    for (uint32_t index : order) {
-        const Triangle& t = triangles[index];
-        gpu::GpuTriangle g{};
-        g.v0 = glm::vec4(t.p[0], 0.0f);
-        g.v1 = glm::vec4(t.p[1], 0.0f);
-        g.v2 = glm::vec4(t.p[2], 0.0f);
-        out.push_back(g);
-    }
+void appendPositions(std::span<const Triangle> triangles, const Bvh& tree, std::vector<gpu::GpuTriangle>& out) {
+    const std::vector<gpu::GpuTriangle> positions = gpuTriangles(triangles, tree);
+    out.insert(out.end(), positions.begin(), positions.end());
 }
 
 bool finite(const glm::dmat4& m) {
@@ -113,7 +106,7 @@ SceneBvh buildSceneBvh(const Scene& scene) {
     bvh.nodes = staticTree.nodes;
     bvh.staticDepth = staticTree.depth;
     bvh.staticOrder = staticTree.triangleOrder;
-    appendPositions(scene.triangles, staticTree.triangleOrder, bvh.triangles);
+    appendPositions(scene.triangles, staticTree, bvh.triangles);
     InstanceLevel& top = bvh.top;
     top.header.staticTriangles = static_cast<uint32_t>(bvh.triangles.size());
     if (scene.instances.empty()) return bvh;
@@ -152,7 +145,7 @@ SceneBvh buildSceneBvh(const Scene& scene) {
         top.meshTriangles[m] = static_cast<uint32_t>(mesh.triangles.size());
         for (const Triangle& t : mesh.triangles)
             for (const glm::vec3& p : t.p) top.meshBounds[m].grow(p);
-        appendPositions(mesh.triangles, tree.triangleOrder, bvh.triangles);
+        appendPositions(mesh.triangles, tree, bvh.triangles);
     }
 
     uint64_t nextId = top.header.staticTriangles;
