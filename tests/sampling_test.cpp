@@ -204,5 +204,35 @@ TEST(Sampling, TriangleLightSolidAnglePdf) {
     EXPECT_GT(r.pValue, kSignificance) << r.details;
 }
 
+// The camera paths' Owen-scrambled Sobol points (owen_sobol.glsl): every power-of-two prefix of a
+// pixel's samples is stratified in 1-D (one point per 1/n interval) and in 2-D (one point per cell
+// of every elementary 2^a x 2^b grid, a x b = n: a (0,2)-sequence), for any seed and dimension.
+TEST(OwenSobol, PrefixesAreStratifiedIn1DAnd2D) {
+    for (uint32_t seed : {0u, 12345u, 0xdeadbeefu})
+        for (uint32_t dimension : {0u, 2u, 7u, 30u}) {
+            for (uint32_t n : {4u, 16u, 64u}) {
+                std::vector<int> line(n, 0);
+                for (uint32_t i = 0; i < n; ++i) {
+                    const float v = owenSobol1(i, seed, dimension);
+                    ASSERT_GE(v, 0.0f);
+                    ASSERT_LT(v, 1.0f);
+                    line[static_cast<int>(v * n)]++;
+                }
+                for (int h : line) EXPECT_EQ(h, 1) << "1-D, seed " << seed << ", dimension " << dimension << ", n " << n;
+                for (uint32_t columns = 1; columns <= n; columns *= 2) {
+                    const uint32_t rows = n / columns;
+                    std::vector<int> grid(n, 0);
+                    for (uint32_t i = 0; i < n; ++i) {
+                        const glm::vec2 p = owenSobol2(i, seed, dimension);
+                        grid[static_cast<int>(p.y * rows) * columns + static_cast<int>(p.x * columns)]++;
+                    }
+                    for (int h : grid)
+                        EXPECT_EQ(h, 1) << "2-D " << columns << "x" << rows << ", seed " << seed << ", dimension "
+                                        << dimension;
+                }
+            }
+        }
+}
+
 }  // namespace
 }  // namespace vkp

@@ -1,8 +1,12 @@
 // Owen-scrambled Sobol samples for camera paths (Burley, "Practical Hash-based Owen Scrambling",
 // JCGT 2020): each dimension (or pair of dimensions) is the first (or first two) Sobol dimension(s)
 // of a randomly shuffled sample index, Owen-scrambled by a hash. Every 1-D and 2-D projection is
-// then stratified at every power-of-two sample count, and different dimensions are decorrelated by
-// their own index shuffle ("padding", as pbrt-v4's PaddedSobolSampler). The scrambled Halton
+// then stratified at every power-of-two sample count, and different dimensions get their own index
+// shuffle ("padding", after pbrt-v4's PaddedSobolSampler). Known flaw: the shuffle is a nested
+// uniform scramble, so an index's low bits still decide every padded dimension's coarsest strata
+// (two dimensions share their first bit up to a flip: |r| up to 0.6 over 64 samples); pbrt-v4
+// permutes the index within the pixel's sample count instead, which the sampler would need to
+// know. Even so it beat Halton and independent random numbers (docs/benchmarks.md). The Halton
 // sequence is not fit for a pixel's few samples: at 4-64 spp, dimensions in bases 29..131 see only
 // their first digit change, so pairs of them fall on lines, and a path's error per sample rises by
 // 1.4-1.6x over independent random numbers (docs/benchmarks.md, issue 17).
