@@ -29,7 +29,7 @@ void main() {
     vec3 normalSum = vec3(0.0f);
     float depth = kAovBackgroundDepth;
     for (uint s = 0u; s < kAovSamples; ++s) {
-        Sampler rng = makePixelSampler(s, hashCombine(hashCombine(params.seed, kAovStream), pixel));
+        Sampler rng = makePixelSampler(s, kAovSamples, hashCombine(hashCombine(params.seed, kAovStream), pixel));
         vec2 jitter = s == 0u ? vec2(0.5f) : nextSample2(rng);
         Ray ray = rayFrom(params.camera.position,
                           cameraRayDirection(params.camera, params.width, params.height,

@@ -78,7 +78,7 @@ void finalGather() {
         radiance = radianceNearest(params.grid, vp.position, params.k, params.maxRadius, 0u,
                                    kPhotonPrimary | kPhotonCaustic, s.bsdf, s.wo, s.t, s.b, s.n);
     } else {
-        Sampler rng = makePixelSampler(params.sampleIndex * params.gatherRays + params.rayIndex,
+        Sampler rng = makePixelSampler(params.sampleIndex * params.gatherRays + params.rayIndex, params.gatherRays,
                                   hashCombine(hashCombine(params.seed, kFinalGatherStream), pixel));
         radiance = gatherRay(vp, s, rng) / float(params.gatherRays);
     }

@@ -54,7 +54,7 @@ struct PathState {
 
 PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
     PathState st;
-    st.rng = makePixelSampler(sampleIndex, streamSeed);
+    st.rng = makePixelSampler(sampleIndex, params.camera.pixelSamples, streamSeed);
     vec2 jitter = nextSample2(st.rng);
     if ((params.flags & kPathFlagPixelCentres) != 0u) jitter = vec2(0.5f);
     vec2 filmPixel = vec2(float(px) + jitter.x, float(py) + jitter.y);

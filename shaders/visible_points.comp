@@ -32,7 +32,7 @@ const uint kVisiblePointStream = 0x56495350u;  // "VISP"
 void findVisiblePoint() {
     uint pixel = gl_GlobalInvocationID.x;
     if (pixel >= params.width * params.height) return;
-    Sampler rng = makePixelSampler(params.sampleIndex, hashCombine(hashCombine(params.seed, kVisiblePointStream), pixel));
+    Sampler rng = makePixelSampler(params.sampleIndex, params.camera.pixelSamples, hashCombine(hashCombine(params.seed, kVisiblePointStream), pixel));
     vec2 jitter = nextSample2(rng);
     if ((params.flags & kPathFlagPixelCentres) != 0u) jitter = vec2(0.5f);
     vec2 filmPixel = vec2(float(pixel % params.width) + jitter.x, float(pixel / params.width) + jitter.y);

@@ -123,6 +123,7 @@ Frame makeFrame(const Scene& scene, const FrameSettings& settings) {
     frame.update = settings.update;
     frame.camera = chooseCamera(scene, settings.cameraIndex, float(settings.width) / float(settings.height), settings.view);
     frame.gpuCamera = makeGpuCamera(frame.camera, settings.width, settings.height);
+    frame.gpuCamera.pixelSamples = settings.samplesPerPixel;
     return frame;
 }
 

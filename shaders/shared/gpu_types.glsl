@@ -187,7 +187,10 @@ struct GpuCamera {
     vec3 right;             // unit vectors of the camera frame (world)
     float aspect;           // width / height
     vec3 up;
-    float pad0;
+    // Samples per pixel of the render: the camera paths' sampler permutes each dimension's sample
+    // numbers within them (owen_sobol.glsl). A sampler setting, kept here because every camera
+    // kernel reads this struct and the guided tracer's push constants have no byte left.
+    uint pixelSamples;
     vec3 forward;
     // glTF orthographic camera: ymag (half the view's height); 0: pinhole. In the padding, not
     // at the end: the guided path tracer's push constants are exactly the guaranteed 128 bytes.

@@ -52,7 +52,7 @@ INLINE float scrambledRadicalInverse(uint base, uint index, uint scramble) {
 // first, then hashed random numbers; path i is the i-th point of one sequence over all paths
 // (Keller & Wald's QMC photon tracing, the selective update's groups by the Halton period).
 // Camera paths (makePixelSampler): Owen-scrambled Sobol per pixel (owen_sobol.glsl), the sample
-// number its index.
+// number its index, permuted per dimension within the pixel's sample count.
 const uint kSamplerHalton = 0u;
 const uint kSamplerOwenSobol = 1u;
 
@@ -61,6 +61,7 @@ struct Sampler {
     uint seed;       // per pixel / per photon stream and per run
     uint dimension;  // next dimension to draw
     uint kind;       // kSamplerHalton or kSamplerOwenSobol
+    uint count;      // Owen-Sobol: the pixel's sample count in this stream (permutation size)
 };
 
 INLINE Sampler makeSampler(uint index, uint streamSeed) {
@@ -69,12 +70,16 @@ INLINE Sampler makeSampler(uint index, uint streamSeed) {
     s.seed = streamSeed;
     s.dimension = 0u;
     s.kind = kSamplerHalton;
+    s.count = 1u;
     return s;
 }
 
-INLINE Sampler makePixelSampler(uint index, uint streamSeed) {
+// Sample `index` of the `count` a pixel takes in the stream `streamSeed` (indices past `count` are
+// taken as further blocks of `count`; the stratification holds for each whole block).
+INLINE Sampler makePixelSampler(uint index, uint count, uint streamSeed) {
     Sampler s = makeSampler(index, streamSeed);
     s.kind = kSamplerOwenSobol;
+    s.count = count;
     return s;
 }
 
@@ -82,7 +87,7 @@ INLINE float nextSample(INOUT(Sampler) s) {
     uint scramble = hashCombine(s.seed, s.dimension);
     float value;
     if (s.kind == kSamplerOwenSobol) {
-        value = owenSobol1(s.index, s.seed, s.dimension);
+        value = owenSobol1(s.index, s.count, s.seed, s.dimension);
     } else if (s.dimension < kHaltonDimensions) {
         value = scrambledRadicalInverse(haltonPrime(s.dimension), s.index, scramble);
     } else {
@@ -95,7 +100,7 @@ INLINE float nextSample(INOUT(Sampler) s) {
 // Two dimensions at once: a stratified 2-D point for the Sobol sampler.
 INLINE vec2 nextSample2(INOUT(Sampler) s) {
     if (s.kind == kSamplerOwenSobol) {
-        vec2 value = owenSobol2(s.index, s.seed, s.dimension);
+        vec2 value = owenSobol2(s.index, s.count, s.seed, s.dimension);
         s.dimension = s.dimension + 2u;
         return value;
     }
