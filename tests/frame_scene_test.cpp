@@ -19,6 +19,7 @@
 #include "gpu_test_support.h"
 #include "image/exr.h"
 #include "render/frame_scene.h"
+#include "vk/buffer.h"
 #include "test_scenes.h"
 
 namespace vkp {
@@ -96,6 +97,41 @@ TEST_F(FrameSceneTest, WhatCannotMoveInPlaceRebuilds) {
     FrameScene always(test::gpu(), LightSampling{}, /*alwaysRebuild=*/true);
     always.set(a);
     EXPECT_TRUE(always.set(a).rebuilt);
+}
+
+// --light-sampler photon: a frame that moves instances and punctual lights in place traces the
+// light cells again in the moved scene: the light-selection data (CPU copy and GPU buffer) equal a
+// fresh build of the moved scene word for word; a frame in which nothing moved keeps its cells.
+TEST_F(FrameSceneTest, PhotonLightCellsFollowInPlaceMotion) {
+    const Scene a = withLights(test::instancedCornell(6, 3), {0.0f, 1.5f, 0.0f}, {0.4f, -1.0f, -0.4f});
+    const Scene b = movedScene(a, 11);
+    LightSampling sampling;
+    sampling.sampler = LightSampler::Photon;
+    sampling.cellPhotons = 20000;
+    FrameScene frames(test::gpu(), sampling);
+    frames.set(a);
+    const std::vector<float> before = frames.renderer().gpuScene().arrays().lightCdf;
+    ASSERT_TRUE(frames.renderer().lightCells());
+    EXPECT_GT(frames.renderer().lightCells()->cells, 0u);
+
+    const FrameSceneChange still = frames.set(a);
+    EXPECT_FALSE(still.rebuilt) << still.reason;
+    EXPECT_EQ(still.lightCellSeconds, 0.0);
+    EXPECT_TRUE(sameBytes(frames.renderer().gpuScene().arrays().lightCdf, before));
+
+    const FrameSceneChange change = frames.set(b);
+    EXPECT_FALSE(change.rebuilt) << change.reason;
+    EXPECT_GT(change.lightCellSeconds, 0.0);
+    const std::vector<float>& updated = frames.renderer().gpuScene().arrays().lightCdf;
+    EXPECT_FALSE(sameBytes(updated, before));  // the cells moved with the lights and occluders
+    const Renderer fresh(test::gpu(), b, sampling);
+    EXPECT_TRUE(sameBytes(updated, fresh.gpuScene().arrays().lightCdf));
+    // The GPU buffer (with headroom after the data) holds the same words.
+    const vk::Buffer& buffer = *frames.renderer().gpuScene().buffers().bindings().buffers[gpu::kSceneLightCdfBinding];
+    std::vector<float> uploaded = buffer.download<float>();
+    ASSERT_GE(uploaded.size(), updated.size());
+    uploaded.resize(updated.size());
+    EXPECT_TRUE(sameBytes(uploaded, updated));
 }
 
 // cornell-moving.gltf's sphere is an instance: frames 1 and 2 of a sequence move it in place

@@ -172,6 +172,7 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
                           {"sceneRebuildReason", change.rebuilt ? change.reason : std::string()},
                           {"bvhSeconds", change.bvhSeconds},
                           {"uploadSeconds", change.uploadSeconds},
+                          {"lightCellSeconds", change.lightCellSeconds},
                           {"renderSeconds", stats.get<double>("timings.renderSeconds")},
                           {"triangles", renderer.gpuScene().arrays().triangles.size()},
                           {"partial", stats.get<bool>("partial")},

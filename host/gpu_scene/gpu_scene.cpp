@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "shared/light_selection.glsl"
 #include "util/printable.h"
 #include "util/stopwatch.h"
 
@@ -29,9 +30,9 @@ GpuScene::GpuScene(vk::Context& context, const Scene& scene, LightSampling light
           return buffers;
       }()) {}
 
-void GpuScene::replaceLightSelection(std::vector<float> data) {
+bool GpuScene::replaceLightSelection(std::vector<float> data) {
     m_arrays.lightCdf = std::move(data);
-    m_buffers.replaceLightSelection(m_context, m_arrays.lightCdf);
+    return m_buffers.replaceLightSelection(m_context, m_arrays.lightCdf);
 }
 
 bool GpuScene::updatePunctualLights(const Scene& scene) {
@@ -64,7 +65,11 @@ bool GpuScene::updatePunctualLights(const Scene& scene) {
     const LightTreeStats tree = appendLightSelection(
         selection, buildLightTree(lights, m_arrays.triangles, m_arrays.shading, m_arrays.materials, m_arrays.lightPower),
         count, m_arrays.lightSampling);
-    if (selection.size() != m_arrays.lightCdf.size()) return false;
+    // The tree must keep its size; a photon light-cell table after it (render/light_cells) is
+    // replaced by the empty one appendLightSelection writes: the owner refreshes it
+    // (Renderer::refreshLightCells), until then next-event estimation uses the light BVH alone.
+    const uint32_t oldCells = gpu::lightCellsStart(gpu::LightSelectionArrays{m_arrays.lightCdf, {}}, count);
+    if (gpu::lightCellsStart(gpu::LightSelectionArrays{selection, {}}, count) != oldCells) return false;
     m_arrays.lights = std::move(lights);
     m_arrays.lightCdf = std::move(selection);
     m_arrays.lightTree = tree;

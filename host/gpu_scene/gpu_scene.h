@@ -24,9 +24,10 @@ public:
     const SceneArrays& arrays() const { return m_arrays; }
     const SceneBuffers& buffers() const { return m_buffers; }
     double uploadSeconds() const { return m_uploadSeconds; }
-    // Replaces the light-selection data (SceneArrays::lightCdf) and its buffer: --light-sampler
-    // photon's cells (render/light_cells.h), before any kernel binds the scene.
-    void replaceLightSelection(std::vector<float> data);
+    // Replaces the light-selection data (SceneArrays::lightCdf): --light-sampler photon's cells
+    // (render/light_cells.h). In the same buffer when it fits (returns true); else in a new one
+    // (returns false: kernels that bound the scene before must bind it again).
+    bool replaceLightSelection(std::vector<float> data);
     // Per-frame rigid motion (docs/bvh.md): new object-to-world transforms of Scene::instances
     // (same order, one each). Rebuilds (or refits) only the top level and uploads only it and the
     // instances; the static tree, the meshes' trees and every other buffer stay. Call between

@@ -332,14 +332,22 @@ void SceneBuffers::updateInstances(const SceneArrays& a) {
 void SceneBuffers::updateLights(const SceneArrays& a) {
     const auto padded = [](size_t bytes) { return std::max<VkDeviceSize>(16, bytes); };  // makeStorageBuffer's size
     if (padded(a.lights.size() * sizeof(gpu::GpuLight)) != m_lights.size() ||
-        padded(a.lightCdf.size() * sizeof(float)) != m_lightCdf.size())
-        throw std::logic_error("SceneBuffers::updateLights: the lights or their selection data changed size");
+        a.lightCdf.size() * sizeof(float) > m_lightCdf.size())
+        throw std::logic_error("SceneBuffers::updateLights: the lights changed size or their selection data outgrew its buffer");
     m_lights.upload(a.lights);
     m_lightCdf.upload(a.lightCdf);
 }
 
-void SceneBuffers::replaceLightSelection(vk::Context& context, const std::vector<float>& data) {
-    m_lightCdf = vk::makeStorageBuffer(context, "light CDF", data);
+bool SceneBuffers::replaceLightSelection(vk::Context& context, const std::vector<float>& data) {
+    const VkDeviceSize bytes = data.size() * sizeof(float);
+    if (bytes <= m_lightCdf.size()) {
+        if (!data.empty()) m_lightCdf.upload(data);
+        return true;
+    }
+    // Headroom: per-frame photon light cells (render --frames) vary in size from frame to frame.
+    m_lightCdf = vk::Buffer(context, "light CDF", 2 * bytes, vk::kStorageUsage);
+    m_lightCdf.upload(data);
+    return false;
 }
 
 uint64_t SceneBuffers::bytes() const {

@@ -84,14 +84,18 @@ public:
     // texture array (set gpu::kSceneTextureSet).
     vk::KernelBindings bindings() const;
     uint32_t lightCount() const { return m_lightCount; }
-    // Uploads new light-selection data (the CDF, then shared/light_selection.glsl's layout).
-    void replaceLightSelection(vk::Context& context, const std::vector<float>& data);
+    // Uploads new light-selection data (the CDF, then shared/light_selection.glsl's layout): into
+    // the buffer in place when it fits (kernels that bound the scene keep seeing it; returns
+    // true), else into a new buffer of twice the data's size (kernels must bind the scene again;
+    // returns false). Record no kernel using the scene meanwhile.
+    bool replaceLightSelection(vk::Context& context, const std::vector<float>& data);
     uint64_t bytes() const;
     // Uploads the arrays' instances and top-level nodes after updateInstances (per frame): the
     // rest of the scene stays as uploaded. Record no kernel using the scene meanwhile.
     void updateInstances(const SceneArrays& arrays);
     // Uploads the arrays' lights and light-selection data in place (per frame, moving punctual
-    // lights): both must keep their sizes. Record no kernel using the scene meanwhile.
+    // lights): the lights must keep their size, the selection data must fit its buffer. Record no
+    // kernel using the scene meanwhile.
     void updateLights(const SceneArrays& arrays);
 
 private:

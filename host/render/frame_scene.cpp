@@ -14,6 +14,17 @@ template <typename T> bool sameBytes(const std::vector<T>& a, const std::vector<
 
 bool sameBounds(const Bounds& a, const Bounds& b) { return a.min == b.min && a.max == b.max; }
 
+// Whether anything that moves in place (instances, punctual lights) differs between the two.
+bool somethingMoved(const Scene& current, const Scene& next) {
+    for (size_t i = 0; i < current.instances.size(); ++i)
+        if (current.instances[i].transform != next.instances[i].transform) return true;
+    for (size_t i = 0; i < current.lights.size(); ++i)
+        if (current.lights[i].position != next.lights[i].position ||
+            current.lights[i].direction != next.lights[i].direction)
+            return true;
+    return false;
+}
+
 }  // namespace
 
 FrameScene::FrameScene(vk::Context& context, LightSampling lightSampling, bool alwaysRebuild)
@@ -51,14 +62,12 @@ FrameSceneChange FrameScene::set(Scene next) {
     m_retiredScene.reset();
     if (m_renderer && !m_alwaysRebuild) {
         change.reason = whyNotInPlace(*m_scene, next);
-        // --light-sampler photon: the light cells come from photons traced in the scene as built.
-        if (change.reason.empty() && m_lightSampling.sampler == LightSampler::Photon)
-            change.reason = "--light-sampler photon (its light cells are traced in the built scene)";
         if (change.reason.empty()) {
             GpuScene& gpu = m_renderer->gpuScene();
             if (!gpu.updatePunctualLights(next)) {
                 change.reason = "a punctual light changed more than its position and direction";
             } else {
+                const bool moved = somethingMoved(*m_scene, next);
                 std::vector<glm::mat4> transforms;
                 transforms.reserve(next.instances.size());
                 for (const Instance& instance : next.instances) transforms.push_back(instance.transform);
@@ -70,6 +79,17 @@ FrameSceneChange FrameScene::set(Scene next) {
                 m_scene->instances = std::move(next.instances);
                 m_scene->lights = std::move(next.lights);
                 m_scene->cameras = std::move(next.cameras);
+                // --light-sampler photon: the cells and the light reach follow the motion (the
+                // cells' photons have their own fixed seed: the same scene gives the same cells).
+                if (moved && m_lightSampling.sampler == LightSampler::Photon) {
+                    const bool sameBuffer = m_renderer->refreshLightCells();
+                    change.lightCellSeconds = m_renderer->lightCells()->seconds;
+                    if (!sameBuffer) {  // a new light-selection buffer: integrators must bind it
+                        change.rebuilt = true;
+                        change.reason = "the photon light cells outgrew their buffer";
+                        ++m_generation;
+                    }
+                }
                 return change;
             }
         }

@@ -3,6 +3,8 @@
 // photon tracer stay too. Each frame's flattened scene moves the instances (top level rebuilt,
 // GpuScene::updateInstanceTransforms), punctual lights (light buffer and light tree, in place)
 // and cameras; only what cannot be updated in place rebuilds everything (FrameSceneChange::reason).
+// With --light-sampler photon, a frame in which something moved traces the light cells (and the
+// raster pass's light reach) again in the moved scene.
 #pragma once
 
 #include <memory>
@@ -19,6 +21,7 @@ struct FrameSceneChange {
     std::string reason;        // why it was rebuilt ("first frame", what changed)
     double bvhSeconds = 0.0;   // BVH build, or the top level's rebuild
     double uploadSeconds = 0.0;
+    double lightCellSeconds = 0.0;  // --light-sampler photon: the light cells traced again (0: not this frame)
 };
 
 class FrameScene {

@@ -139,7 +139,7 @@ LightCellStats prepareLightCells(GpuScene& scene, const LightSampling& sampling,
     if (reach) *reach = buildLightReach(photons, lightCount, cellSize);
     std::vector<float> data = arrays.lightCdf;
     LightCellStats stats = buildLightCells(data, lightCount, photons, cellSize, sampling.cellK, sampling.cellFloor);
-    scene.replaceLightSelection(std::move(data));
+    stats.sameBuffer = scene.replaceLightSelection(std::move(data));
     stats.seconds = secondsSince(start);
     return stats;
 }

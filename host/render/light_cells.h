@@ -25,6 +25,7 @@ struct LightCellStats {
     uint64_t bytes = 0;            // the table in the light-selection buffer
     float cellSize = 0.0f;
     double seconds = 0.0;          // photon tracing and table build
+    bool sameBuffer = true;        // uploaded into the scene's light-selection buffer in place
 };
 
 // Replaces the cell table at the end of `data` (a SceneArrays::lightCdf of lightCount lights) by
@@ -32,8 +33,9 @@ struct LightCellStats {
 LightCellStats buildLightCells(std::vector<float>& data, uint32_t lightCount, std::span<const gpu::GpuPhoton> photons,
                                float cellSize, uint32_t k, float floorProbability);
 
-// Traces sampling.cellPhotons photon paths, keeps their primary photons and uploads the cells
-// into the scene's light-selection buffer.
+// Traces sampling.cellPhotons photon paths in the scene as it is now (instances and punctual
+// lights where they last moved), keeps their primary photons and uploads the cells into the
+// scene's light-selection buffer (GpuScene::replaceLightSelection: in place when they fit).
 // With `reach`, also keeps which lights reach which cells (render/light_reach.h).
 LightCellStats prepareLightCells(GpuScene& scene, const LightSampling& sampling, LightReach* reach = nullptr);
 

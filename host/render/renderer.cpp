@@ -12,12 +12,16 @@
 namespace vkp {
 
 Renderer::Renderer(vk::Context& context, const Scene& scene, LightSampling lightSampling)
-    : m_scene(context, scene, lightSampling) {
+    : m_scene(context, scene, lightSampling), m_lightSampling(lightSampling) {
     lightSampling.check();
-    if (lightSampling.sampler == LightSampler::Photon) {
-        m_lightReach.emplace();
-        m_lightCells = prepareLightCells(m_scene, lightSampling, &*m_lightReach);
-    }
+    refreshLightCells();
+}
+
+bool Renderer::refreshLightCells() {
+    if (m_lightSampling.sampler != LightSampler::Photon) return true;
+    if (!m_lightReach) m_lightReach.emplace();
+    m_lightCells = prepareLightCells(m_scene, m_lightSampling, &*m_lightReach);
+    return m_lightCells->sameBuffer;
 }
 
 RenderResult Renderer::render(const FrameSettings& settings, Integrator& integrator, const ProgressCallback& progress,

@@ -42,6 +42,14 @@ public:
     Renderer(vk::Context& context, const Scene& scene, LightSampling lightSampling = {});
 
     const GpuScene& gpuScene() const { return m_scene; }
+    // --light-sampler photon: traces the light cells' photons again in the scene as it is now
+    // (after in-place motion: GpuScene::updateInstanceTransforms, updatePunctualLights) and
+    // replaces the cells and the light reach. Returns false when the cells no longer fit the
+    // light-selection buffer: integrators built before must then be built again. Other samplers:
+    // nothing to do (true).
+    bool refreshLightCells();
+    const std::optional<LightCellStats>& lightCells() const { return m_lightCells; }
+    const std::optional<LightReach>& lightReach() const { return m_lightReach; }
     // For per-frame instance motion (GpuScene::updateInstanceTransforms) between renders.
     GpuScene& gpuScene() { return m_scene; }
 
@@ -58,6 +66,7 @@ public:
 
 private:
     GpuScene m_scene;
+    LightSampling m_lightSampling;
     std::optional<LightCellStats> m_lightCells;  // --light-sampler photon
     std::optional<LightReach> m_lightReach;      // --light-sampler photon: for --direct raster
 };
