@@ -13,7 +13,10 @@
 SHARED_BEGIN
 
 // Solid angles (steradians) outside which a triangle light is sampled by area instead.
-const float kMinSphericalSolidAngle = 3.0e-4f;
+// Below 3e-3 sr (a triangle seen under ~3 degrees) area sampling's pdf hardly varies over the
+// triangle, and Arvo's warp loses float precision (on lavapipe, whose sin and cos are polynomials,
+// samples of 3e-4..1e-3 sr triangles moved by 0.1-1 % of the triangle against the C++ build).
+const float kMinSphericalSolidAngle = 3.0e-3f;
 const float kMaxSphericalSolidAngle = 6.22f;
 
 // Solid angle of the spherical triangle of unit directions a, b, c (Van Oosterom & Strackee 1983).
@@ -45,12 +48,6 @@ INLINE bool useSphericalSampling(float solidAngle, bool allowed) {
     return allowed && useSphericalSampling(solidAngle);
 }
 
-// Angle between unit vectors, accurate for small and large angles.
-INLINE float angleBetweenUnit(vec3 a, vec3 b) {
-    if (dot(a, b) < 0.0f) return kPi - 2.0f * asin(min(length(a + b) * 0.5f, 1.0f));
-    return 2.0f * asin(min(length(b - a) * 0.5f, 1.0f));
-}
-
 // v - (v.w) w, normalized (w unit).
 INLINE vec3 orthogonalizedAgainst(vec3 v, vec3 w) {
     vec3 r = v - dot(v, w) * w;
@@ -71,16 +68,19 @@ INLINE vec2 sampleSphericalTriangle(vec3 v0, vec3 v1, vec3 v2, vec3 p, vec2 u, O
     vec3 nca = cross(c, a);
     if (dot(nab, nab) <= 0.0f || dot(nbc, nbc) <= 0.0f || dot(nca, nca) <= 0.0f) return vec2(0.0f);
     nab = normalize(nab);
-    nbc = normalize(nbc);
     nca = normalize(nca);
-    float alpha = angleBetweenUnit(nab, -nca);
-    float beta = angleBetweenUnit(nbc, -nab);
-    float gamma = angleBetweenUnit(nca, -nbc);
+    // The angle alpha at a only through its cosine and sine, and the area A = alpha + beta +
+    // gamma - pi from Van Oosterom & Strackee's formula (the pdf's own, triangleSolidAngle): no
+    // inverse sine. Mesa's asin (a low-order polynomial) is off by ~1e-4 rad, and A, a small
+    // difference of three angles for small triangles, took that error with it: lavapipe's samples
+    // missed the pdf's triangle by up to 2 % of its size (tests/light_selection_test.cpp,
+    // LightSelectionGpu).
+    float cosAlpha = clamp(-dot(nab, nca), -1.0f, 1.0f);
+    float sinAlpha = length(cross(nab, nca));
+    float area = sphericalTriangleArea(a, b, c);
 
     // Area A' = u0 * A of the sub-triangle a b' c' that the sample's arc ends on.
-    float apPi = kPi + u.x * (alpha + beta + gamma - kPi);
-    float cosAlpha = cos(alpha);
-    float sinAlpha = sin(alpha);
+    float apPi = kPi + u.x * area;
     float sinPhi = sin(apPi) * cosAlpha - cos(apPi) * sinAlpha;
     float cosPhi = cos(apPi) * cosAlpha + sin(apPi) * sinAlpha;
     float k1 = cosPhi + cosAlpha;

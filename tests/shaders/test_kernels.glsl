@@ -20,6 +20,28 @@ struct HarnessParams {
 };
 STATIC_ASSERT_SIZE(HarnessParams, 8)
 
+// light_selection_test.comp: the light sampler's shared functions (light_selection_harness.glsl).
+const uint kLightTestInputBinding = 0u;      // LightHarnessInput
+const uint kLightTestOutputBinding = 1u;     // LightHarnessOutput
+const uint kLightTestSelectionBinding = 2u;  // float: the light-selection data (SceneArrays::lightCdf)
+const uint kLightTestLightBinding = 3u;      // GpuLight
+struct LightTestParams {
+    uint count;
+    uint lightCount;
+};
+STATIC_ASSERT_SIZE(LightTestParams, 8)
+
+// bsdf_sampling_test.comp: sampleBsdf for one material and direction; push constants: uint count.
+const uint kBsdfSamplingCaseBinding = 0u;     // BsdfSamplingCase
+const uint kBsdfSamplingRandomBinding = 1u;   // vec4: the sample's random numbers (xyz)
+const uint kBsdfSamplingOutputBinding = 2u;   // vec4: wi, 1 (0 when no lobe was sampled)
+const uint kBsdfSamplingTablesBinding = 3u;   // float: the BSDF's albedo tables (kBsdfTables)
+struct BsdfSamplingCase {
+    BsdfParams bsdf;
+    vec4 wo;                                  // xyz, in the shading frame
+};
+STATIC_ASSERT_SIZE(BsdfSamplingCase, 96)
+
 // bvh_trace_test.comp; push constants: uint rayCount.
 const uint kBvhTestRayBinding = 0u;       // TestRay
 const uint kBvhTestNodeBinding = 1u;      // GpuBvhNode
@@ -82,6 +104,18 @@ struct HarnessKernel {
     static constexpr uint32_t kBindingCount = kHarnessTablesBinding + 1u;
     static constexpr uint32_t kGroupSize = kTestGroupSize;
     using Push = HarnessParams;
+};
+struct LightTestKernel {
+    static constexpr const char* kShader = "light_selection_test.comp";
+    static constexpr uint32_t kBindingCount = kLightTestLightBinding + 1u;
+    static constexpr uint32_t kGroupSize = kTestGroupSize;
+    using Push = LightTestParams;
+};
+struct BsdfSamplingKernel {
+    static constexpr const char* kShader = "bsdf_sampling_test.comp";
+    static constexpr uint32_t kBindingCount = kBsdfSamplingTablesBinding + 1u;
+    static constexpr uint32_t kGroupSize = kTestGroupSize;
+    using Push = uint32_t;
 };
 struct BvhTestKernel {
     static constexpr const char* kShader = "bvh_trace_test.comp";
