@@ -8,7 +8,12 @@
 #include <gtest/gtest.h>
 
 #include "chi_square.h"
+#include "gpu_scene/scene_buffers.h"
+#include "gpu_test_support.h"
 #include "shared/bsdf.glsl"
+#include "shaders/test_kernels.glsl"
+#include "vk/buffer.h"
+#include "vk/kernel.h"
 
 namespace vkp {
 namespace {
@@ -220,19 +225,24 @@ std::vector<GridCase> gridCases() {
     return cases;
 }
 
+BsdfParams gridParams(const GridCase& c) {
+    BsdfParams p = makeBsdfParams(glm::vec3(0.8f, 0.6f, 0.3f), c.metallic, c.roughness);
+    p.specular = c.specular;
+    p.specularColor = c.specularColor;
+    p.clearcoat = c.clearcoat;
+    p.clearcoatRoughness = 0.3f;
+    p.sheenColor = glm::vec3(0.7f, 0.5f, 0.9f) * c.sheen;
+    p.sheenRoughness = 0.5f;
+    return p;
+}
+
 TEST(Bsdf, SamplingMatchesPdfOverParameterGrid) {
     const std::vector<GridCase> cases = gridCases();
     // Sidak-corrected 1% significance over the grid.
     const double significance = 1.0 - std::pow(0.99, 1.0 / cases.size());
     uint32_t seed = 100;
     for (const GridCase& c : cases) {
-        BsdfParams p = makeBsdfParams(glm::vec3(0.8f, 0.6f, 0.3f), c.metallic, c.roughness);
-        p.specular = c.specular;
-        p.specularColor = c.specularColor;
-        p.clearcoat = c.clearcoat;
-        p.clearcoatRoughness = 0.3f;
-        p.sheenColor = glm::vec3(0.7f, 0.5f, 0.9f) * c.sheen;
-        p.sheenRoughness = 0.5f;
+        const BsdfParams p = gridParams(c);
         const glm::vec3 wo = direction(c.cosWo, 0.3f);
         std::mt19937 rng(seed++);
         std::uniform_real_distribution<float> u(0.0f, kOneMinusEpsilon);
@@ -253,6 +263,79 @@ TEST(Bsdf, SamplingMatchesPdfOverParameterGrid) {
         EXPECT_EQ(mismatches, 0) << describe(c);
         EXPECT_GT(r.pValue, significance) << describe(c) << ": " << r.details;
     }
+}
+
+
+// The same grid sampled by the GPU build of sampleBsdf (lavapipe): its directions against the C++
+// pdfBsdf (chi-square), so the shaders' sampling, not only the host's, follows the pdf that MIS
+// and the photon estimates use.
+class BsdfGpu : public test::GpuTest {};
+
+std::vector<glm::vec4> sampleOnGpu(const BsdfParams& p, glm::vec3 wo, const std::vector<glm::vec4>& randoms) {
+    vk::Context& context = test::gpu();
+    const std::vector<BsdfSamplingCase> testCase{{p, glm::vec4(wo, 0.0f)}};
+    vk::Buffer caseBuffer = vk::makeStorageBuffer(context, "bsdf sampling case", testCase);
+    vk::Buffer random = vk::makeStorageBuffer(context, "bsdf sampling randoms", randoms);
+    vk::Buffer out(context, "bsdf samples", randoms.size() * sizeof(glm::vec4), vk::kStorageUsage);
+    vk::Buffer tables = makeBsdfTablesBuffer(context);
+    vk::Kernel<BsdfSamplingKernel> kernel(context);
+    kernel.bind(kBsdfSamplingCaseBinding, caseBuffer);
+    kernel.bind(kBsdfSamplingRandomBinding, random);
+    kernel.bind(kBsdfSamplingOutputBinding, out);
+    kernel.bind(kBsdfSamplingTablesBinding, tables);
+    const uint32_t count = static_cast<uint32_t>(randoms.size());
+    context.submitAndWait([&](VkCommandBuffer cmd) {
+        kernel.record(cmd, count, count);
+        vk::computeToHostBarrier(cmd);
+    });
+    return out.download<glm::vec4>();
+}
+
+TEST_F(BsdfGpu, SamplingMatchesPdfOverParameterGrid) {
+    const std::vector<GridCase> cases = gridCases();
+    const double significance = 1.0 - std::pow(0.99, 1.0 / cases.size());
+    constexpr int kSamples = 100000;
+    uint32_t seed = 500;
+    for (const GridCase& c : cases) {
+        const BsdfParams p = gridParams(c);
+        const glm::vec3 wo = direction(c.cosWo, 0.3f);
+        std::mt19937 rng(seed++);
+        std::uniform_real_distribution<float> u(0.0f, kOneMinusEpsilon);
+        std::vector<glm::vec4> randoms(kSamples);
+        for (glm::vec4& r : randoms) r = glm::vec4(u(rng), u(rng), u(rng), 0.0f);
+        const std::vector<glm::vec4> samples = sampleOnGpu(p, wo, randoms);
+        const auto r = test::chiSquareSphere(
+            [&](int i, glm::vec3& w) {
+                if (samples[i].w == 0.0f) return false;
+                w = glm::normalize(glm::vec3(samples[i]));
+                return true;
+            },
+            [&](const glm::vec3& w) { return static_cast<double>(pdfBsdf(p, wo, w)); }, kSamples);
+        EXPECT_GT(r.pValue, significance) << describe(c) << ": " << r.details;
+    }
+}
+
+// The GPU test can fail: the GPU's samples of one material against another's pdf.
+TEST_F(BsdfGpu, ChiSquareRejectsAnotherMaterialsSamples) {
+    const GridCase c = gridCases()[4];  // a rough-0.2 metal: the lobe is the whole distribution
+    ASSERT_EQ(c.metallic, 1.0f);
+    BsdfParams sampled = gridParams(c);
+    BsdfParams claimed = sampled;
+    claimed.roughness = sampled.roughness * 1.5f;
+    const glm::vec3 wo = direction(c.cosWo, 0.3f);
+    std::mt19937 rng(77);
+    std::uniform_real_distribution<float> u(0.0f, kOneMinusEpsilon);
+    std::vector<glm::vec4> randoms(100000);
+    for (glm::vec4& r : randoms) r = glm::vec4(u(rng), u(rng), u(rng), 0.0f);
+    const std::vector<glm::vec4> samples = sampleOnGpu(sampled, wo, randoms);
+    const auto r = test::chiSquareSphere(
+        [&](int i, glm::vec3& w) {
+            if (samples[i].w == 0.0f) return false;
+            w = glm::normalize(glm::vec3(samples[i]));
+            return true;
+        },
+        [&](const glm::vec3& w) { return static_cast<double>(pdfBsdf(claimed, wo, w)); }, 100000);
+    EXPECT_LT(r.pValue, 1e-6) << r.details;
 }
 
 }  // namespace
