@@ -1,13 +1,17 @@
 // --light-sampler on the GPU: every sampler estimates the same image. The path tracer's mean
-// radiance with the light BVH equals power sampling's (two-sample test over seeds) on scenes with
-// 1, 4 and 200 lights (rooms-10x10: 100 quads); the photon integrator's visible points too.
+// radiance with the light BVH and the photon cells equals power sampling's (two-sample test over
+// seeds) on scenes with 1, 4 and 200 lights (rooms-10x10: 100 quads); the guided path tracer, the
+// photon integrator (visible points and final gathers) and SPPM too, on the four-light box.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "gpu_test_support.h"
 #include "image/image.h"
+#include "render/integrators/guided_integrator.h"
 #include "render/integrators/path_integrator.h"
+#include "render/integrators/photon_integrator.h"
+#include "render/integrators/progressive_photon_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "test_scenes.h"
@@ -50,8 +54,10 @@ struct Moments {
     double standardError = 0.0;
 };
 
+enum class IntegratorKind { Path, Guided, Photon, ProgressivePhoton };
+
 Moments meanOverSeeds(const Scene& scene, LightSampling sampling, uint32_t size, uint32_t spp, int seeds,
-                      uint32_t maxDepth = 3) {
+                      uint32_t maxDepth = 3, IntegratorKind kind = IntegratorKind::Path) {
     Renderer renderer(test::gpu(), scene, sampling);
     double sum = 0.0, sumSq = 0.0;
     for (int seed = 0; seed < seeds; ++seed) {
@@ -61,7 +67,16 @@ Moments meanOverSeeds(const Scene& scene, LightSampling sampling, uint32_t size,
         s.samplesPerPixel = spp;
         s.seed = 300 + seed;
         s.maxDepth = maxDepth;
-        const RenderResult r = renderer.render<PathIntegrator>(s);
+        GuideSettings guide;
+        guide.photons = 10000;
+        PhotonIntegratorSettings photon;  // the same photon maps for every sampler (same seed)
+        photon.globalPaths = 10000;
+        photon.causticPaths = 2000;
+        photon.gatherRays = 1;
+        const RenderResult r = kind == IntegratorKind::Path     ? renderer.render<PathIntegrator>(s)
+                               : kind == IntegratorKind::Guided ? renderer.render<GuidedIntegrator>(s, guide)
+                               : kind == IntegratorKind::Photon ? renderer.render<PhotonIntegrator>(s, photon)
+                                                                : renderer.render<ProgressivePhotonIntegrator>(s, photon);
         EXPECT_EQ(r.stats.get<uint64_t>("counters.nonFiniteSamples"), 0u);
         const double m = meanValue(r.image);
         sum += m;
@@ -75,15 +90,15 @@ Moments meanOverSeeds(const Scene& scene, LightSampling sampling, uint32_t size,
 
 void expectSameMean(const Scene& scene, const std::string& name, uint32_t size, uint32_t spp,
                     LightSampling a = {LightSampler::Power}, LightSampling b = {LightSampler::Bvh},
-                    uint32_t maxDepth = 3) {
+                    uint32_t maxDepth = 3, IntegratorKind kind = IntegratorKind::Path) {
     constexpr int kSeeds = 6;
-    const Moments power = meanOverSeeds(scene, a, size, spp, kSeeds, maxDepth);
-    const Moments bvh = meanOverSeeds(scene, b, size, spp, kSeeds, maxDepth);
+    const Moments power = meanOverSeeds(scene, a, size, spp, kSeeds, maxDepth, kind);
+    const Moments bvh = meanOverSeeds(scene, b, size, spp, kSeeds, maxDepth, kind);
     const double se = std::sqrt(power.standardError * power.standardError + bvh.standardError * bvh.standardError);
     ASSERT_GT(power.mean, 0.0);
     // 5 standard errors of the difference (t, 10 dof: ~0.05% two-sided) plus 0.5% for float noise.
     EXPECT_NEAR(bvh.mean, power.mean, 5.0 * se + 0.005 * power.mean)
-        << name << ": bvh " << bvh.mean << " +- " << bvh.standardError << " vs power " << power.mean << " +- "
+        << name << ": " << bvh.mean << " +- " << bvh.standardError << " vs power " << power.mean << " +- "
         << power.standardError;
 }
 
@@ -141,6 +156,30 @@ TEST_F(LightSamplerRender, PhotonCellsMeanEqualsPower) {
         expectSameMean(scene, name, 32, 16, {LightSampler::Power}, photon);
     }
 }
+
+// Every integrator that estimates direct light with next-event estimation: bvh and photon cells
+// against power on the box with four lights (one directional, outside the light BVH). The photon
+// integrators' photon maps are the same for every sampler (same seeds), so their density
+// estimation bias cancels and only next-event estimation differs.
+class LightSamplerEveryIntegrator : public test::GpuTest, public ::testing::WithParamInterface<IntegratorKind> {};
+
+TEST_P(LightSamplerEveryIntegrator, BvhAndPhotonCellsMeanEqualsPower) {
+    const Scene scene = boxScene(true);
+    LightSampling photon{LightSampler::Photon};
+    photon.cellPhotons = 20000;
+    expectSameMean(scene, "four lights, bvh", 24, 8, {LightSampler::Power}, {LightSampler::Bvh}, 3, GetParam());
+    expectSameMean(scene, "four lights, photon cells", 24, 8, {LightSampler::Power}, photon, 3, GetParam());
+}
+
+std::string integratorName(const ::testing::TestParamInfo<IntegratorKind>& info) {
+    constexpr const char* kNames[] = {"path", "guided", "photon", "progressive_photon"};
+    return kNames[static_cast<int>(info.param)];
+}
+
+INSTANTIATE_TEST_SUITE_P(NextEventEstimators, LightSamplerEveryIntegrator,
+                         ::testing::Values(IntegratorKind::Guided, IntegratorKind::Photon,
+                                           IntegratorKind::ProgressivePhoton),
+                         integratorName);
 
 // Same seed, same sampler: the same image bit for bit.
 TEST_F(LightSamplerRender, BvhIsReproducible) {
