@@ -92,6 +92,7 @@ struct MaterialTexels {
     vec4 sheenRoughness;
     vec4 clearcoat;
     vec4 clearcoatRoughness;
+    vec4 transmission;
 };
 
 // Texture slots of a material (bits of sampleMaterialTextures' `slots`).
@@ -105,7 +106,8 @@ const uint kMaterialTextureSheenColor = 6u;
 const uint kMaterialTextureSheenRoughness = 7u;
 const uint kMaterialTextureClearcoat = 8u;
 const uint kMaterialTextureClearcoatRoughness = 9u;
-const uint kMaterialTextureSlots = 10u;
+const uint kMaterialTextureTransmission = 10u;
+const uint kMaterialTextureSlots = 11u;
 
 int materialTexture(GpuMaterial m, uint slot) {
     switch (slot) {
@@ -118,18 +120,20 @@ int materialTexture(GpuMaterial m, uint slot) {
     case kMaterialTextureSheenColor: return m.sheenColorTexture;
     case kMaterialTextureSheenRoughness: return m.sheenRoughnessTexture;
     case kMaterialTextureClearcoat: return m.clearcoatTexture;
-    default: return m.clearcoatRoughnessTexture;
+    case kMaterialTextureClearcoatRoughness: return m.clearcoatRoughnessTexture;
+    default: return m.transmissionTexture;
     }
 }
 
-// The slots of the textures m has, among `wanted`; the sheen colour, clearcoat and emissive
-// textures only where their factor is non-zero (the texel could not change the result).
+// The slots of the textures m has, among `wanted`; the sheen colour, clearcoat, transmission and
+// emissive textures only where their factor is non-zero (the texel could not change the result).
 uint materialTextureSlots(GpuMaterial m, uint wanted) {
     uint slots = 0u;
     for (uint slot = 0u; slot < kMaterialTextureSlots; ++slot)
         if (materialTexture(m, slot) >= 0) slots |= 1u << slot;
     if (!(maxComponent(m.sheenColor) > 0.0f)) slots &= ~(1u << kMaterialTextureSheenColor);
     if (!(m.clearcoat > 0.0f)) slots &= ~(1u << kMaterialTextureClearcoat);
+    if (!(m.transmission > 0.0f)) slots &= ~(1u << kMaterialTextureTransmission);
     if (!(m.emissive.r > 0.0f || m.emissive.g > 0.0f || m.emissive.b > 0.0f)) slots &= ~(1u << kMaterialTextureEmissive);
     return slots & wanted;
 }
@@ -150,6 +154,7 @@ MaterialTexels sampleMaterialTextures(GpuMaterial m, vec4 uv, uint slots) {
     t.sheenRoughness = vec4(1.0f);
     t.clearcoat = vec4(1.0f);
     t.clearcoatRoughness = vec4(1.0f);
+    t.transmission = vec4(1.0f);
     for (uint k = 0u; k < kMaterialTextureSlots && slots != 0u; ++k) {
         uint slot = uint(findLSB(slots));
         slots &= slots - 1u;
@@ -164,7 +169,8 @@ MaterialTexels sampleMaterialTextures(GpuMaterial m, vec4 uv, uint slots) {
         case kMaterialTextureSheenColor: t.sheenColor = v; break;
         case kMaterialTextureSheenRoughness: t.sheenRoughness = v; break;
         case kMaterialTextureClearcoat: t.clearcoat = v; break;
-        default: t.clearcoatRoughness = v; break;
+        case kMaterialTextureClearcoatRoughness: t.clearcoatRoughness = v; break;
+        default: t.transmission = v; break;
         }
     }
     return t;
@@ -354,7 +360,7 @@ BsdfParams bsdfParamsOf(GpuMaterial m, MaterialTexels texels) {
     float metallic = m.metallic * texels.metallicRoughness.b;  // glTF: roughness in G, metalness in B
     float roughness = m.roughness * texels.metallicRoughness.g;
     BsdfParams p = makeBsdfParams(base.rgb, clamp(metallic, 0.0f, 1.0f), clamp(roughness, 0.0f, 1.0f));
-    p.transmission = clamp(m.transmission, 0.0f, 1.0f);
+    p.transmission = clamp(m.transmission * texels.transmission.r, 0.0f, 1.0f);  // KHR_materials_transmission
     p.ior = m.ior;
     p.thinWalled = (m.flags & kMaterialThinWalled) != 0u ? 1u : 0u;
     materialExtensionsAt(m, texels, p);

@@ -558,6 +558,43 @@ TEST_F(GltfFeatures, ConstantTiltNormalMapGivesTheTiltedCosine) {
     expectEverywhere(pathTraced(load(q)), expectedTilted(glm::vec3(127.5f, 127.5f, 255.0f), wi), 2e-3f, "scale 0");
 }
 
+// KHR_materials_transmission's transmissionTexture: its R channel (linear) multiplies
+// transmissionFactor. The quad is thin-walled (no KHR_materials_volume) of ior 1, so its dielectric
+// layer reflects nothing (Fresnel 0) and sends everything on below, where there is nothing: a pixel
+// shows only the opaque layer's share, 0.8 (1 - transmission). 4x4 texels, NEAREST: R = 64 (and
+// G, B that must not be read) everywhere but texel (0, 0), R = 255.
+TEST_F(GltfFeatures, TransmissionTextureScalesTheTransmissionFactor) {
+    const json nearest = {{"magFilter", 9728}};
+    const auto transmissive = [&](QuadDoc& q, double factor, const std::string& image) {
+        q.material()["extensions"]["KHR_materials_transmission"] = {
+            {"transmissionFactor", factor}, {"transmissionTexture", {{"index", q.texture(image, nearest)}}}};
+    };
+    const std::string marked = pngUri(4, 4, markedImage(4, 4, {64, 255, 0, 255}, 0, 0, {255, 0, 255, 255}));
+    {
+        QuadDoc q;
+        transmissive(q, 1.0, marked);
+        const Scene scene = load(q);
+        ASSERT_GE(scene.materials[0].transmissionTexture, 0);
+        const float quarter = 0.8f * (1.0f - 64.0f / 255.0f);
+        for (const auto& [name, image] : {std::pair{"path tracer", pathTraced(scene)},
+                                          std::pair{"photon integrator", photonMapped(scene)}}) {
+            EXPECT_NEAR(pixel(image, at(0.1f), at(0.1f)), 0.0f, 1e-3f) << name << ": texel R 255, transmission 1";
+            EXPECT_NEAR(pixel(image, at(0.6f), at(0.6f)), quarter, 1e-3f) << name << ": texel R 64";
+            EXPECT_NEAR(pixel(image, at(0.9f), at(0.3f)), quarter, 1e-3f) << name << ": texel R 64";
+        }
+        // Factor 0.5 scales the texel: R 255 gives 0.5.
+        QuadDoc half;
+        transmissive(half, 0.5, marked);
+        EXPECT_NEAR(pixel(pathTraced(load(half)), at(0.1f), at(0.1f)), 0.4f, 1e-3f) << "factor 0.5 x texel R 255";
+    }
+    {
+        // A texture of R = 0 renders like transmissionFactor 0: the plain quad.
+        QuadDoc q;
+        transmissive(q, 1.0, pngUri(2, 2, markedImage(2, 2, {0, 255, 255, 255}, 0, 0, {0, 255, 255, 255})));
+        expectEverywhere(pathTraced(load(q)), 0.8f, 1e-3f, "transmission texture R 0");
+    }
+}
+
 // Known tangents: a quad in the z = 0 plane with u along +x and v down the image (v = 1 - y):
 // tangent +x, and the map's +Y (image up) is +y = cross(+z, +x): w = +1. Mirrored u: tangent -x, w = -1.
 TEST(GltfTangents, GeneratedTangentsMatchKnownOnes) {

@@ -25,6 +25,7 @@ gpu::GpuMaterial toGpu(const Material& m, bool emitterDoubleSided) {
     g.metallic = m.metallic;
     g.roughness = m.roughness;
     g.transmission = m.transmission;
+    g.transmissionTexture = m.transmissionTexture;
     g.ior = m.ior;
     g.thickness = m.thickness;
     // Beer-Lambert: attenuationColor is the colour after attenuationDistance; sigma = -ln(c)/d.

@@ -14,7 +14,7 @@ constexpr std::array kExtensions{
     GltfExtension{"KHR_materials_specular", Read, "specular strength and F0 colour, factors and textures"},
     GltfExtension{"KHR_materials_clearcoat", Read, "coat factor and roughness with textures (not clearcoatNormalTexture)"},
     GltfExtension{"KHR_materials_sheen", Read, "Charlie sheen colour and roughness with textures"},
-    GltfExtension{"KHR_materials_transmission", Read, "transmissionFactor (not the texture)"},
+    GltfExtension{"KHR_materials_transmission", Read, "transmissionFactor and transmissionTexture (R)"},
     GltfExtension{"KHR_materials_volume", Read, "thicknessFactor and attenuation (not the thickness texture)"},
     GltfExtension{"KHR_mesh_quantization", Read, "any component type for positions, normals, texture coordinates"},
     GltfExtension{"EXT_mesh_gpu_instancing", Read, "TRANSLATION, ROTATION and SCALE of each instance (other attributes ignored)"},

@@ -507,7 +507,7 @@ private:
     void checkTexCoordSets(const Material& m, const Vertices& v, const std::string& element) const {
         for (const int view : {m.baseColorTexture, m.metallicRoughnessTexture, m.emissiveTexture, m.normalTexture,
                                m.specularTexture, m.specularColorTexture, m.sheenColorTexture, m.sheenRoughnessTexture,
-                               m.clearcoatTexture, m.clearcoatRoughnessTexture}) {
+                               m.clearcoatTexture, m.clearcoatRoughnessTexture, m.transmissionTexture}) {
             if (view < 0) continue;
             const int slot = m_scene.textureViews[view].texCoord, set = m_texCoordSetOfView[view];
             if (set > 0 && v.uvs[slot].empty())

@@ -123,8 +123,11 @@ void GltfMaterials::readExtensions(const tinygltf::Material& source, const std::
     const auto name = [&](const char* ext) { return fmt::format("{}.extensions.{}", element, ext); };
     if (const auto* e = extension(source.extensions, "KHR_materials_emissive_strength"))
         m.emissive *= static_cast<float>(numberOr(*e, "emissiveStrength", 1.0, name("KHR_materials_emissive_strength")));
-    if (const auto* e = extension(source.extensions, "KHR_materials_transmission"))
-        m.transmission = static_cast<float>(numberOr(*e, "transmissionFactor", 0.0, name("KHR_materials_transmission")));
+    if (const auto* e = extension(source.extensions, "KHR_materials_transmission")) {
+        const std::string transmission = name("KHR_materials_transmission");
+        m.transmission = static_cast<float>(numberOr(*e, "transmissionFactor", 0.0, transmission));
+        m.transmissionTexture = extensionTexture(*e, "transmissionTexture", false, transmission);
+    }
     if (const auto* e = extension(source.extensions, "KHR_materials_ior"))
         m.ior = static_cast<float>(numberOr(*e, "ior", 1.5, name("KHR_materials_ior")));
     if (const auto* e = extension(source.extensions, "KHR_materials_specular")) {

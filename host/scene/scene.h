@@ -57,7 +57,8 @@ struct Material {
     glm::vec3 emissive{0.0f};       // emissiveFactor * KHR_materials_emissive_strength
     float metallic = 1.0f;
     float roughness = 1.0f;
-    float transmission = 0.0f;      // KHR_materials_transmission
+    float transmission = 0.0f;      // KHR_materials_transmission: transmissionFactor
+    int transmissionTexture = -1;   // its R channel multiplies transmissionFactor
     float ior = 1.5f;               // KHR_materials_ior
     float thickness = 0.0f;         // KHR_materials_volume; 0 (or no extension) = thin-walled
     glm::vec3 attenuationColor{1.0f};

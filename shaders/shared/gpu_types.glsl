@@ -101,7 +101,7 @@ struct GpuMaterial {
     int baseColorTexture;   // index into the texture table, -1 when absent
     int metallicRoughnessTexture;
     int emissiveTexture;
-    uint pad0;
+    int transmissionTexture;  // KHR_materials_transmission, R channel; -1 when absent
     int normalTexture;      // tangent-space normal map, -1 when absent
     float normalScale;
     float alphaCutoff;
