@@ -163,6 +163,7 @@ TEST_F(GltfDeformation, NodeWeightsOverrideMeshWeights) {
     // Node 0 draws the mesh with its own weight 1, node 1 (moved up by 5) with the mesh's 0.5.
     doc["nodes"] = {{{"mesh", 0}, {"weights", {1.0}}}, {{"mesh", 0}, {"translation", {0, 5, 0}}}};
     doc["scenes"] = {{{"nodes", {0, 1}}}};
+    doc["materials"][0].erase("emissiveFactor");  // emissive meshes are never instanced
     GltfLimits limits;
     limits.instanceMinTriangles = 0;  // a repeated mesh would be instanced; different weights must not share it
     const Scene scene = loadGltf(write(doc.finish()), limits);
@@ -180,6 +181,7 @@ TEST_F(GltfDeformation, InstancedMeshKeepsItsMorphedShape) {
     Doc doc = morphQuad();
     doc["nodes"] = {{{"mesh", 0}}, {{"mesh", 0}, {"translation", {0, 5, 0}}}};  // both with the mesh's weight
     doc["scenes"] = {{{"nodes", {0, 1}}}};
+    doc["materials"][0].erase("emissiveFactor");  // emissive meshes are never instanced
     GltfLimits limits;
     limits.instanceMinTriangles = 0;
     const Scene scene = loadGltf(write(doc.finish()), limits);
@@ -281,7 +283,7 @@ Doc skinnedStrip(const std::vector<uint8_t>& joints, double jointAngle) {
     const int inverseBind = doc.accessor(ibm, kFloat, "MAT4");
     doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", position}, {"JOINTS_0", jointAccessor},
                                                        {"WEIGHTS_0", weightAccessor}}},
-                                       {"indices", indices}, {"material", 0}}}}}}};
+                                       {"indices", indices}, {"material", 0}}}}}};
     const double s = std::sin(jointAngle / 2), c = std::cos(jointAngle / 2);
     doc["nodes"] = {{{"mesh", 0}, {"skin", 0}, {"translation", {5, 5, 5}}},
                     {{"translation", {0, 0, 3}}, {"children", {2}}},
@@ -317,6 +319,28 @@ TEST_F(GltfDeformation, TwoBoneStripBentByItsJoint) {
     expectVertices(scene.triangles, kStripIndices, expected);
     for (const Triangle& t : scene.triangles)  // no NORMAL: flat, and the bend is about z
         for (const glm::vec3& n : t.n) expectNear(n, {0, 0, 1}, "normal");
+}
+
+TEST_F(GltfDeformation, TwoSkinsDrawingOneMeshAreNotShared) {
+    constexpr double kRightAngle = 1.5707963267948966;
+    Doc doc = skinnedStrip(kStripJoints, kRightAngle);
+    // nodes[4] draws the strip with skins[1], joints nodes[5] and [6] (both up by 10, no inverse binds):
+    // every vertex moves by (0, 10, 0). A repeated mesh would be instanced; its skins differ.
+    doc["nodes"].push_back({{"mesh", 0}, {"skin", 1}});
+    doc["nodes"].push_back({{"translation", {0, 10, 0}}});
+    doc["nodes"].push_back({{"translation", {0, 10, 0}}});
+    doc["skins"].push_back({{"joints", {5, 6}}});
+    doc["scenes"][0]["nodes"] = {0, 1, 4, 5, 6};
+    doc["materials"][0].erase("emissiveFactor");  // emissive meshes are never instanced
+    GltfLimits limits;
+    limits.instanceMinTriangles = 0;
+    const Scene scene = loadGltf(write(doc.finish()), limits);
+    ASSERT_TRUE(scene.instances.empty());
+    ASSERT_EQ(scene.triangles.size(), 8u);
+    expectVertices({scene.triangles.begin(), scene.triangles.begin() + 4}, kStripIndices, bentStrip(kRightAngle));
+    std::vector<glm::vec3> lifted;
+    for (size_t i = 0; i < kStrip.size(); i += 3) lifted.emplace_back(kStrip[i], kStrip[i + 1] + 10, kStrip[i + 2]);
+    expectVertices({scene.triangles.begin() + 4, scene.triangles.end()}, kStripIndices, lifted);
 }
 
 TEST_F(GltfDeformation, JointAnimationIsPlayedPerFrame) {

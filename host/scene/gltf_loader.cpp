@@ -553,9 +553,9 @@ private:
     void morph(const tinygltf::Primitive& primitive, Vertices& v, const std::string& element) {
         if (!primitive.targets.empty()) {
             const tinygltf::Mesh& mesh = m_model.meshes[m_meshIndex];
-            const bool nodeWeights = m_drawingNode && !m_drawingNode->weights.empty();
-            const std::string weightsElement = nodeWeights ? m_nodeElement + ".weights" : fmt::format("meshes[{}].weights", m_meshIndex);
-            const std::vector<double>& weights = nodeWeights ? m_drawingNode->weights : mesh.weights;
+            const std::vector<double>& weights = morphWeights(*m_drawingNode, mesh);
+            const std::string weightsElement =
+                &weights == &mesh.weights ? fmt::format("meshes[{}].weights", m_meshIndex) : m_nodeElement + ".weights";
             for (const std::string& semantic : applyMorphTargets(m_model, primitive, weights, weightsElement, v.positions,
                                                                  v.normals, v.tangents, element))
                 warnOnce(fmt::format("morph target attribute {} is not applied (only POSITION, NORMAL and TANGENT are)",
