@@ -343,6 +343,26 @@ TEST_F(GltfDeformation, TwoSkinsDrawingOneMeshAreNotShared) {
     expectVertices({scene.triangles.begin() + 4, scene.triangles.end()}, kStripIndices, lifted);
 }
 
+TEST_F(GltfDeformation, MirroringJointsKeepFrontFacesAndNormalsTogether) {
+    // The armature's root mirrors x (scale -1, 1, 1): the skinned strip lies in x <= 0, its
+    // NORMALs (+z) go through the inverse transpose (still +z), and each triangle is turned so
+    // that its counter-clockwise face points along them, as a mirrored node's triangles are.
+    Doc doc = skinnedStrip(kStripJoints, 0.0);
+    const std::vector<float> normals(18, 0.0f);
+    std::vector<float> up = normals;
+    for (size_t i = 2; i < up.size(); i += 3) up[i] = 1.0f;
+    doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = doc.accessor(up, kFloat, "VEC3");
+    doc["nodes"][1]["scale"] = {-1, 1, 1};
+    const Scene scene = loadGltf(write(doc.finish()));
+    ASSERT_EQ(scene.triangles.size(), 4u);
+    for (const Triangle& t : scene.triangles) {
+        const glm::vec3 face = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+        EXPECT_GT(face.z, 0.0f);
+        for (const glm::vec3& p : t.p) EXPECT_LE(p.x, 0.0f);
+        for (const glm::vec3& n : t.n) expectNear(n, {0, 0, 1}, "normal");
+    }
+}
+
 TEST_F(GltfDeformation, JointAnimationIsPlayedPerFrame) {
     Doc doc = skinnedStrip(kStripJoints, 0.0);
     // joint 1 (nodes[3]) turns from 0 to 90 degrees about z over one second.
