@@ -180,16 +180,9 @@ SceneAnimation::SceneAnimation(const tinygltf::Model& model, const WarningSink& 
         m_animations.push_back(std::move(animation));
     }
     if (weightChannels > 0)
-        warn(fmt::format("{} `weights` animation channel(s) ignored: morph targets are not animated", weightChannels));
-    size_t skinned = 0;
-    for (const tinygltf::Node& node : model.nodes) skinned += node.skin >= 0 ? 1 : 0;
-    if (skinned > 0)
-        warn(fmt::format("{} skinned node(s): skins are not applied, their meshes are posed statically (bind pose)", skinned));
-    size_t morphed = 0;
-    for (const tinygltf::Mesh& mesh : model.meshes)
-        for (const tinygltf::Primitive& primitive : mesh.primitives) morphed += primitive.targets.empty() ? 0 : 1;
-    if (morphed > 0)
-        warn(fmt::format("{} primitive(s) with morph targets: posed statically (base shape, no weights applied)", morphed));
+        warn(fmt::format("{} `weights` animation channel(s) ignored: morph targets keep their static weights (the "
+                         "node's or the mesh's `weights`) in every frame",
+                         weightChannels));
 }
 
 void SceneAnimation::select(int index) {

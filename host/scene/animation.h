@@ -61,9 +61,9 @@ public:
     // Reads and checks every animation of the model: throws vkp::InputError naming the element
     // ("animations[0].samplers[1]: ...") for mismatched key counts, non-increasing or non-finite
     // times, NaN keys, channels targeting missing nodes or nodes given as a matrix, unknown paths
-    // or interpolations. Warns through `warn` about `weights` channels (morph targets are not
-    // animated), channels without a target node (ignored, as glTF says), skins and morph targets
-    // (posed statically).
+    // or interpolations. Warns through `warn` about `weights` channels (ignored: morph targets
+    // keep their static weights) and channels without a target node (ignored, as glTF says).
+    // Skins need nothing here: joints are nodes, and the loader skins with their animated transforms.
     SceneAnimation(const tinygltf::Model& model, const WarningSink& warn);
 
     const std::vector<Animation>& animations() const { return m_animations; }

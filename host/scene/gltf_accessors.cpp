@@ -99,7 +99,8 @@ void decode(const tinygltf::Model& model, int index, int components, Resize&& re
     const size_t compSize = componentSize(a.componentType);
     if (compSize == 0) fail(name, fmt::format("invalid componentType {}", a.componentType));
     static constexpr const char* kTypeNames[] = {"", "SCALAR", "VEC2", "VEC3", "VEC4"};
-    if (tinygltf::GetNumComponentsInType(a.type) != components) fail(name, fmt::format("the type must be {}", kTypeNames[components]));
+    if (tinygltf::GetNumComponentsInType(a.type) != components)
+        fail(name, fmt::format("the type must be {}", components == 16 ? "MAT4" : kTypeNames[components]));
     const size_t elementSize = compSize * components;
     Span dense;
     if (a.bufferView >= 0) dense = checkedSpan(model, a.bufferView, a.byteOffset, 0, a.count, elementSize, name);
@@ -159,6 +160,17 @@ std::vector<float> readScalarAccessor(const tinygltf::Model& model, int accessor
     std::vector<float> out;
     decode(model, accessor, 1, [&](size_t count) { out.resize(count); },
            [&](size_t i, int, double v) { out[i] = static_cast<float>(v); });
+    return out;
+}
+
+std::vector<glm::dmat4> readMat4Accessor(const tinygltf::Model& model, int accessor) {
+    if (accessor >= 0 && static_cast<size_t>(accessor) < model.accessors.size() &&
+        model.accessors[accessor].componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+        fail(fmt::format("accessors[{}]", accessor), "matrices must be float");
+    std::vector<glm::dmat4> out;
+    // Column-major, as glm stores it: component c is column c / 4, row c % 4.
+    decode(model, accessor, 16, [&](size_t count) { out.resize(count); },
+           [&](size_t i, int c, double v) { out[i][c / 4][c % 4] = v; });
     return out;
 }
 

@@ -16,6 +16,8 @@ namespace vkp {
 std::vector<glm::vec3> readVec3Accessor(const tinygltf::Model& model, int accessor);
 std::vector<glm::vec2> readVec2Accessor(const tinygltf::Model& model, int accessor);
 std::vector<glm::vec4> readVec4Accessor(const tinygltf::Model& model, int accessor);
+// MAT4 float, column-major (skins' inverseBindMatrices).
+std::vector<glm::dmat4> readMat4Accessor(const tinygltf::Model& model, int accessor);
 std::vector<float> readScalarAccessor(const tinygltf::Model& model, int accessor);  // SCALAR (animation times)
 // COLOR_0: VEC3 (alpha 1) or VEC4, float or normalized unsigned byte/short.
 std::vector<glm::vec4> readColorAccessor(const tinygltf::Model& model, int accessor);

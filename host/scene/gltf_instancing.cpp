@@ -6,6 +6,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_morph.h"
 #include "util/errors.h"
 
 namespace vkp {
@@ -118,6 +119,10 @@ std::vector<bool> planInstancedMeshes(const tinygltf::Model& model, const std::v
 
     std::vector<uint64_t> draws(meshCount, 0);
     std::vector<bool> animated(meshCount, false);
+    // Geometry that depends on the drawing node: a skin (world-space vertices) or morph weights
+    // that differ between the nodes drawing the mesh.
+    std::vector<bool> perNode(meshCount, false);
+    std::vector<const std::vector<double>*> weights(meshCount, nullptr);
     struct Pending {
         int node;
         bool animated;  // an ancestor (or the node) moves
@@ -135,6 +140,9 @@ std::vector<bool> planInstancedMeshes(const tinygltf::Model& model, const std::v
         if (node.mesh >= 0 && static_cast<size_t>(node.mesh) < meshCount) {
             draws[node.mesh] += declaredInstanceCount(model, node);
             animated[node.mesh] = animated[node.mesh] || moves;
+            const std::vector<double>& w = morphWeights(node, model.meshes[node.mesh]);
+            if (node.skin >= 0 || (weights[node.mesh] && *weights[node.mesh] != w)) perNode[node.mesh] = true;
+            weights[node.mesh] = &w;
         }
         for (int child : node.children) stack.push_back({child, moves});
     }
@@ -155,7 +163,7 @@ std::vector<bool> planInstancedMeshes(const tinygltf::Model& model, const std::v
                 emissive = emissive || e.x > 0.0f || e.y > 0.0f || e.z > 0.0f;
             }
         }
-        instanced[m] = !emissive && triangles > 0 &&
+        instanced[m] = !emissive && !perNode[m] && triangles > 0 &&
                        ((draws[m] >= 2 && triangles >= minTriangles) || (animated[m] && draws[m] >= 1));
     }
     return instanced;

@@ -31,7 +31,8 @@ uint64_t declaredInstanceCount(const tinygltf::Model& model, const tinygltf::Nod
 // least twice in the scene's tree (nodes and EXT_mesh_gpu_instancing instances) and has at least
 // `minTriangles` triangles, or when an animation channel moves (translation, rotation, scale) a
 // node that draws it or one of its ancestors; never when a primitive's material emits light
-// (lights are static triangles, docs/bvh.md).
+// (lights are static triangles, docs/bvh.md), when a skinned node draws it (its vertices are
+// placed in world space by the joints) or when the nodes drawing it give different morph weights.
 std::vector<bool> planInstancedMeshes(const tinygltf::Model& model, const std::vector<int>& roots,
                                       const std::vector<Material>& materials, uint64_t minTriangles);
 

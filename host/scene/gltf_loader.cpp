@@ -27,6 +27,8 @@
 #include "scene/gltf_preflight.h"
 #include "scene/gltf_draco.h"
 #include "scene/gltf_meshopt.h"
+#include "scene/gltf_morph.h"
+#include "scene/gltf_skin.h"
 #include "scene/gltf_tangents.h"
 #include "util/errors.h"
 #include "util/printable.h"
@@ -93,6 +95,7 @@ struct Vertices {
     std::vector<glm::vec2> uvs[2];      // TEXCOORD_0 and the scene's second set (remapTexCoordSets)
     std::vector<glm::vec4> colors;      // COLOR_0 as RGBA
     std::vector<glm::vec4> tangents;    // TANGENT, or generated (gltf_tangents.cpp) for normal maps
+    std::vector<uint8_t> mirrored;      // skinned: per vertex, whether its skinning matrix mirrors
 };
 
 class Loader {
@@ -125,6 +128,7 @@ public:
         m_instancedMesh = planInstancedMeshes(m_model, m_model.scenes[m_sceneIndex].nodes, m_scene.materials,
                                               m_limits.instanceMinTriangles);
         checkSize(m_model.scenes[m_sceneIndex].nodes, sceneName);
+        findParents();
     }
 
     // The scene's triangles, instances, lights and cameras in world space, with the local
@@ -137,6 +141,7 @@ public:
         m_skippedPrimitives = 0;
         m_triangleKeys.clear();
         m_meshSlot.assign(m_model.meshes.size(), -1);
+        m_nodeWorld.assign(m_model.nodes.size(), std::nullopt);
         walk(m_model.scenes[m_sceneIndex].nodes);
         m_overrides = nullptr;
         if (m_scene.triangles.empty() && m_scene.instances.empty())
@@ -309,14 +314,47 @@ private:
             if (seen[pending.node]) fail(element, "is reached twice from the scene (a node has one parent; no cycles)");
             seen[pending.node] = true;
             const tinygltf::Node& node = m_model.nodes[pending.node];
-            const bool overridden = m_overrides && size_t(pending.node) < m_overrides->size() &&
-                                    (*m_overrides)[pending.node].has_value();
-            const glm::dmat4 world =
-                pending.parent * (overridden ? *(*m_overrides)[pending.node] : localTransform(node, element));
+            const glm::dmat4 world = pending.parent * local(pending.node);
             if (!isFinite(world)) fail(element, "the world transform is not finite");
             visit(node, world, element);
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world});
         }
+    }
+
+    // A node's local transform in the pose being flattened: the animated one of m_overrides, else
+    // the file's.
+    glm::dmat4 local(int index) const {
+        const bool overridden = m_overrides && size_t(index) < m_overrides->size() && (*m_overrides)[index].has_value();
+        return overridden ? *(*m_overrides)[index] : localTransform(m_model.nodes[index], fmt::format("nodes[{}]", index));
+    }
+
+    // Every node's parent (-1 for none, -2 for several), for world transforms of nodes outside
+    // the walk's order (skin joints).
+    void findParents() {
+        m_parent.assign(m_model.nodes.size(), -1);
+        for (size_t p = 0; p < m_model.nodes.size(); ++p)
+            for (const int child : m_model.nodes[p].children)
+                if (child >= 0 && size_t(child) < m_parent.size()) m_parent[child] = m_parent[child] == -1 ? int(p) : -2;
+    }
+
+    // A node's world transform in the pose being flattened (the walk's product parent * local,
+    // from its root down), memoised per flatten. Used for skin joints, which may lie anywhere in
+    // the node tree, also outside the scene walked.
+    glm::dmat4 nodeWorld(int index) {
+        std::vector<int> chain;  // index, its parent, ..., its root
+        for (int n = index; n >= 0 && !m_nodeWorld[n]; n = m_parent[n]) {
+            const std::string element = fmt::format("nodes[{}]", n);
+            if (chain.size() > m_model.nodes.size()) fail(element, "is its own ancestor (a cycle of children)");
+            if (m_parent[n] == -2) fail(element, "is the child of several nodes (a node has one parent)");
+            chain.push_back(n);
+        }
+        for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+            const int parent = m_parent[*it];
+            const glm::dmat4 world = (parent >= 0 ? *m_nodeWorld[parent] : glm::dmat4(1.0)) * local(*it);
+            if (!isFinite(world)) fail(fmt::format("nodes[{}]", *it), "the world transform is not finite");
+            m_nodeWorld[*it] = world;
+        }
+        return *m_nodeWorld[index];
     }
 
     void visit(const tinygltf::Node& node, const glm::dmat4& world, const std::string& element) {
@@ -352,12 +390,19 @@ private:
         }
         if (transforms.empty()) transforms.push_back(glm::dmat4(1.0));
         const int nodeIndex = static_cast<int>(&node - m_model.nodes.data());
+        // A skinned mesh is placed by its joints alone: glTF ignores the skinned node's transform.
+        std::vector<glm::dmat4> joints;
+        if (node.skin >= 0) joints = jointMatrices(m_model, node.skin, [this](int n) { return nodeWorld(n); });
+        m_drawingNode = &node;
+        m_skinJoints = node.skin >= 0 ? &joints : nullptr;
         for (const glm::dmat4& local : transforms) {
-            const glm::dmat4 placed = world * local;
+            const glm::dmat4 placed = (node.skin >= 0 ? glm::dmat4(1.0) : world) * local;
             if (!isFinite(placed)) fail(element, "an instance's world transform is not finite");
             if (m_instancedMesh[node.mesh]) addInstance(node.mesh, placed, nodeIndex, element);
             else addMesh(node.mesh, placed, element);
         }
+        m_drawingNode = nullptr;
+        m_skinJoints = nullptr;
     }
 
     // An instance of an instanced mesh, whose object-space triangles are read at its first use. A
@@ -409,6 +454,7 @@ private:
         if (static_cast<size_t>(meshIndex) >= m_model.meshes.size())
             fail(fmt::format("meshes[{}]", meshIndex), "does not exist");
         const tinygltf::Mesh& mesh = m_model.meshes[meshIndex];
+        m_meshIndex = meshIndex;
         for (size_t p = 0; p < mesh.primitives.size(); ++p) {
             const std::string element = fmt::format("meshes[{}].primitives[{}]", meshIndex, p);
             try {
@@ -485,21 +531,51 @@ private:
         const uint32_t material = primitiveMaterial(primitive, element);
         checkTexCoordSets(m_scene.materials[material], v, element);
         const Material& m = m_scene.materials[material];
-        if (m.normalTexture >= 0) {
-            if (attribute("TANGENT") >= 0) {
-                v.tangents = readVec4Accessor(m_model, attribute("TANGENT"));
-                if (v.tangents.size() != v.positions.size()) fail(element, "TANGENT and POSITION counts differ");
-                for (size_t i = 0; i < v.tangents.size(); ++i)
-                    if (!std::isfinite(v.tangents[i].x + v.tangents[i].y + v.tangents[i].z + v.tangents[i].w))
-                        fail(element, fmt::format("TANGENT {} is NaN or infinite (accessors[{}])", i, attribute("TANGENT")));
-            } else {
-                v.tangents = generateTangents(v.positions, v.normals, v.uvs[m_scene.textureViews[m.normalTexture].texCoord],
-                                              indices);
-            }
+        if (m.normalTexture >= 0 && attribute("TANGENT") >= 0) {
+            v.tangents = readVec4Accessor(m_model, attribute("TANGENT"));
+            if (v.tangents.size() != v.positions.size()) fail(element, "TANGENT and POSITION counts differ");
+            for (size_t i = 0; i < v.tangents.size(); ++i)
+                if (!std::isfinite(v.tangents[i].x + v.tangents[i].y + v.tangents[i].z + v.tangents[i].w))
+                    fail(element, fmt::format("TANGENT {} is NaN or infinite (accessors[{}])", i, attribute("TANGENT")));
         }
+        morph(primitive, v, element);
+        if (m.normalTexture >= 0 && attribute("TANGENT") < 0)  // from the morphed shape; the skin moves them
+            v.tangents = generateTangents(v.positions, v.normals, v.uvs[m_scene.textureViews[m.normalTexture].texCoord],
+                                          indices);
+        skin(primitive, v, element);
         if ((m_target ? m_target->triangles : m_scene.triangles).size() + indices.size() / 3 > m_limits.maxTriangles)
             fail(element, fmt::format("the scene exceeds the limit of {} triangles", m_limits.maxTriangles));
         emitTriangles(v, indices, world, material);
+    }
+
+    // Morph targets with the drawing node's (else the mesh's) weights (gltf_morph.h), once the
+    // counts are checked.
+    void morph(const tinygltf::Primitive& primitive, Vertices& v, const std::string& element) {
+        if (!primitive.targets.empty()) {
+            const tinygltf::Mesh& mesh = m_model.meshes[m_meshIndex];
+            const std::vector<double>& weights = morphWeights(*m_drawingNode, mesh);
+            const std::string weightsElement =
+                &weights == &mesh.weights ? fmt::format("meshes[{}].weights", m_meshIndex) : m_nodeElement + ".weights";
+            for (const std::string& semantic : applyMorphTargets(m_model, primitive, weights, weightsElement, v.positions,
+                                                                 v.normals, v.tangents, element))
+                warnOnce(fmt::format("morph target attribute {} is not applied (only POSITION, NORMAL and TANGENT are)",
+                                     semantic));
+        }
+    }
+
+    // The drawing node's skin (gltf_skin.h): vertices to world space, after morph targets.
+    void skin(const tinygltf::Primitive& primitive, Vertices& v, const std::string& element) {
+        if (m_skinJoints) {
+            const SkinnedVertices skinned = applySkin(m_model, primitive, *m_skinJoints, v.positions, v.normals, v.tangents, element);
+            v.mirrored = skinned.mirrored;
+            if (skinned.unweighted > 0)
+                warnOnce(fmt::format("{}: {} vertices have no joint weight (all WEIGHTS 0); they are not skinned", element,
+                                     skinned.unweighted));
+        }
+    }
+
+    void warnOnce(const std::string& message) {
+        if (m_warned.insert(message).second) warn(message);
     }
 
     // Every texture of the material reads a TEXCOORD set the primitive has (set 0 may be absent:
@@ -549,6 +625,12 @@ private:
         const std::vector<glm::vec3>& normals = vertices.normals;
         const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(world)));
         const bool mirrored = glm::determinant(glm::dmat3(world)) < 0.0;
+        // Skinned vertices are in world space already (world is the identity); a triangle whose
+        // skinning matrices mirror (at two of its corners or more) is turned like a mirrored node's.
+        const auto mirroredBySkin = [&](const uint32_t* corner) {
+            return !vertices.mirrored.empty() &&
+                   vertices.mirrored[corner[0]] + vertices.mirrored[corner[1]] + vertices.mirrored[corner[2]] >= 2;
+        };
         // Unit length or nothing: double precision so that neither huge nor tiny (but finite)
         // vectors overflow on the way, and an explicit zero test (normalising 0 gives NaN).
         const auto unit = [](const glm::dvec3& v, glm::vec3& out) {
@@ -558,7 +640,7 @@ private:
         };
         for (size_t i = 0; i < indices.size(); i += 3) {
             uint32_t v[3] = {indices[i], indices[i + 1], indices[i + 2]};
-            if (mirrored) std::swap(v[1], v[2]);
+            if (mirrored != mirroredBySkin(v)) std::swap(v[1], v[2]);
             Triangle t;
             for (int k = 0; k < 3; ++k) {
                 // In double, then checked: a float matrix would turn 1e20 x 1e20 into infinity.
@@ -699,6 +781,12 @@ private:
     std::unordered_set<std::string>* m_targetKeys = nullptr;
     bool m_warnedSingularInstance = false;
     std::string m_nodeElement, m_primitiveElement;  // what emitTriangles names
+    const tinygltf::Node* m_drawingNode = nullptr;  // the node whose mesh is read (its morph weights, skin)
+    int m_meshIndex = -1;
+    const std::vector<glm::dmat4>* m_skinJoints = nullptr;  // the drawing node's joint matrices when it has a skin
+    std::vector<int> m_parent;                              // findParents()
+    std::vector<std::optional<glm::dmat4>> m_nodeWorld;     // nodeWorld()'s memo, per flatten
+    std::set<std::string> m_warned;                         // warnOnce()
     int m_sceneIndex = 0;
     const std::vector<std::optional<glm::dmat4>>* m_overrides = nullptr;  // flatten()'s animated local transforms
 };

@@ -108,6 +108,50 @@ def bad_cases():
         return changed(change)
 
     add("index_out_of_range.gltf", indices([0, 1, 5]), "meshes[0].primitives[0]: index 5")
+
+    # Issue 13, morph targets and skins: each accessor in a buffer of its own.
+    def accessor(d, raw, component, kind, count):
+        raw += b"\0" * (-len(raw) % 4)
+        d["buffers"].append({"byteLength": len(raw), "uri": data_uri(raw)})
+        d["bufferViews"].append({"buffer": len(d["buffers"]) - 1, "byteLength": len(raw)})
+        d["accessors"].append({"bufferView": len(d["bufferViews"]) - 1, "componentType": component, "count": count,
+                               "type": kind})
+        return len(d["accessors"]) - 1
+
+    def morph(displacements, weights=None):
+        def change(d):
+            target = accessor(d, struct.pack("<%df" % len(displacements), *displacements), FLOAT, "VEC3",
+                              len(displacements) // 3)
+            d["meshes"][0]["primitives"][0]["targets"] = [{"POSITION": target}]
+            if weights is not None:
+                d["meshes"][0]["weights"] = weights
+        return changed(change)
+    add("morph_target_count.gltf", morph([0, 0, 1, 0, 0, 1]),
+        "meshes[0].primitives[0].targets[0].POSITION: accessors[1] has 2 elements but POSITION has 3")
+    add("morph_target_nan.gltf", morph([0, 0, 1, 0, float("nan"), 1, 0, 0, 1]),
+        "meshes[0].primitives[0].targets[0].POSITION: element 1 is NaN or infinite")
+    add("morph_weights_length.gltf", morph([0, 0, 1, 0, 0, 1, 0, 0, 1], [0.5, 0.5]),
+        "meshes[0].primitives[0]: has 1 morph target(s) but meshes[0].weights has 2 weight(s)")
+
+    def skinned(joints, inverse_bind=None, influences=True):
+        def change(d):
+            d["nodes"][0]["skin"] = 0
+            d["nodes"].append({})
+            d["scenes"][0]["nodes"].append(1)
+            d["skins"] = [{"joints": [1]}]
+            if inverse_bind is not None:
+                d["skins"][0]["inverseBindMatrices"] = accessor(d, struct.pack("<16f", *inverse_bind), FLOAT, "MAT4", 1)
+            if influences:
+                attributes = d["meshes"][0]["primitives"][0]["attributes"]
+                attributes["JOINTS_0"] = accessor(d, bytes(joints), 5121, "VEC4", 3)
+                attributes["WEIGHTS_0"] = accessor(d, struct.pack("<12f", *([1, 0, 0, 0] * 3)), FLOAT, "VEC4", 3)
+        return changed(change)
+    add("skin_joint_out_of_range.gltf", skinned([0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0]),
+        "meshes[0].primitives[0]: JOINTS_0 element 1 names joint 1, but the skin has 1 joints")
+    add("skin_without_joints_attribute.gltf", skinned([], influences=False),
+        "meshes[0].primitives[0]: is drawn by a skinned node but has no JOINTS_0 and WEIGHTS_0")
+    add("skin_inverse_bind_not_finite.gltf", skinned([0] * 12, [float("inf")] + [0] * 15),
+        "skins[0].inverseBindMatrices: matrix 0 is not finite")
     add("index_float.gltf", indices([0.0, 1.0, 2.0], FLOAT), "indices must be unsigned")
     add("missing_buffer.gltf", with_uri("nothere.bin"),
         'buffers[0].uri: file "nothere.bin" not found inside the scene\'s folder')
