@@ -25,14 +25,25 @@ struct Ray {
     vec3 dir;           // unit
     vec3 mediumSigma;   // Beer-Lambert absorption per unit length of the KHR_materials_volume
                         // solid the ray is inside (zero outside every solid)
+    bool camera;        // a camera ray (primary visibility): skips culled back faces (traceClosest)
 };
 
-// A ray that starts outside every solid (camera, lights, reflections off a visible point).
+// A ray that starts outside every solid (lights, reflections off a visible point).
 Ray rayFrom(vec3 origin, vec3 dir) {
     Ray ray;
     ray.origin = origin;
     ray.dir = dir;
     ray.mediumSigma = vec3(0.0f);
+    ray.camera = false;
+    return ray;
+}
+
+// A ray from the camera: what it meets first is what the image shows, so it skips the back faces
+// of single-sided opaque triangles as glTF's back-face culling does (docs/scene-format.md "Back
+// faces"); every other ray sees both faces.
+Ray cameraRay(vec3 origin, vec3 dir) {
+    Ray ray = rayFrom(origin, dir);
+    ray.camera = true;
     return ray;
 }
 
@@ -69,7 +80,7 @@ bool traceVertex(Ray ray, out PathVertex v) {
     float b1;
     float b2;
     uint tri;
-    if (!traceClosest(ray.origin, ray.dir, kInfinity, v.distance, tri, b1, b2)) {
+    if (!traceClosest(ray.origin, ray.dir, kInfinity, ray.camera, v.distance, tri, b1, b2)) {
         v.distance = kInfinity;
         return false;
     }
@@ -117,6 +128,7 @@ float pdfVertexBsdf(PathVertex v, vec3 wi) {
 // KHR_materials_volume absorption changes the medium (thin-walled surfaces have no inside).
 void spawnRay(PathVertex v, BsdfSample bs, inout Ray ray) {
     ray.dir = normalize(toWorld(bs.wi, v.t, v.b, v.n));
+    ray.camera = false;
     ray.origin = offsetRayOrigin(v.hit.position, v.hit.geometricNormal, ray.dir);
     if ((bs.lobe & kLobeTransmission) != 0u && (v.material.flags & kMaterialThinWalled) == 0u)
         ray.mediumSigma = v.hit.frontFace ? v.material.attenuationCoeff : vec3(0.0f);

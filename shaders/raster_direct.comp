@@ -29,7 +29,7 @@ void rasterDirectLight() {
     vec3 dir = cameraRayDirection(params.camera, params.width, params.height, filmPixel);
     // The same vertex as the path tracer's first one (traceVertex: shading frame and all).
     PathVertex v;
-    if (!traceVertex(rayFrom(cameraRayOrigin(params.camera, params.width, params.height, filmPixel), dir), v)) return;
+    if (!traceVertex(cameraRay(cameraRayOrigin(params.camera, params.width, params.height, filmPixel), dir), v)) return;
     vec3 sideNormal = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
 
     uint mask = masks[params.maskOffset + pixel];

@@ -36,7 +36,7 @@ void findVisiblePoint() {
     vec2 jitter = nextSample2(rng);
     if ((params.flags & kPathFlagPixelCentres) != 0u) jitter = vec2(0.5f);
     vec2 filmPixel = vec2(float(pixel % params.width) + jitter.x, float(pixel / params.width) + jitter.y);
-    Ray ray = rayFrom(cameraRayOrigin(params.camera, params.width, params.height, filmPixel),
+    Ray ray = cameraRay(cameraRayOrigin(params.camera, params.width, params.height, filmPixel),
                       cameraRayDirection(params.camera, params.width, params.height, filmPixel));
     vec3 throughput = vec3(1.0f);
     vec3 radiance = vec3(0.0f);

@@ -16,6 +16,7 @@
 #include <unistd.h>
 
 #include "base64.h"
+#include "bvh/scene_bvh.h"
 #include "gpu_test_support.h"
 #include "image/image.h"
 #include "image/metrics.h"
@@ -593,6 +594,51 @@ TEST_F(GltfFeatures, TransmissionTextureScalesTheTransmissionFactor) {
         transmissive(q, 1.0, pngUri(2, 2, markedImage(2, 2, {0, 255, 255, 255}, 0, 0, {0, 255, 255, 255})));
         expectEverywhere(pathTraced(load(q)), 0.8f, 1e-3f, "transmission texture R 0");
     }
+}
+
+// glTF back-face culling of single-sided materials (docs/scene-format.md "Back faces"): the
+// floor glows (emission 0.5, black, no light) and the black occluder 1 above it covers it from
+// the camera. Seen from its back (its front turned down by a rotation, or by a mirroring scale:
+// a negative determinant makes clockwise the front) a single-sided occluder is not there for
+// camera rays, so the floor shows; double-sided, or seen from its front, it hides the floor.
+// Transmissive single-sided triangles are never culled (a refracted ray meets their back faces
+// from inside); the host traversal of camera rays (light_reach.cpp) agrees.
+TEST_F(GltfFeatures, SingleSidedBackFacesAreInvisibleToTheCamera) {
+    const auto scene = [&](json node, bool doubleSided, bool transmissive) {
+        QuadDoc q;
+        q.doc()["scenes"][0]["nodes"] = {0, 1};  // no light: the floor's emission only
+        q.material()["pbrMetallicRoughness"]["baseColorFactor"] = {0, 0, 0, 1};
+        q.material()["emissiveFactor"] = {0.5, 0.5, 0.5};
+        json m = {{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}}}, {"doubleSided", doubleSided}};
+        if (transmissive) m["extensions"]["KHR_materials_transmission"]["transmissionFactor"] = 1.0;
+        addOccluder(q, m);
+        for (auto& [key, value] : node.items()) q.doc()["nodes"].back()[key] = value;
+        return load(q);
+    };
+    const json down = {{"rotation", {1, 0, 0, 0}}};  // 180 degrees about x: the front faces -y
+    const json mirrored = {{"scale", {1.2, -1, 1.2}}};
+    const json up = json::object();
+    for (const auto& [name, node, doubleSided, visible] :
+         {std::tuple{"back face (rotated), single-sided", down, false, false},
+          std::tuple{"back face (mirrored), single-sided", mirrored, false, false},
+          std::tuple{"back face, double-sided", down, true, true}, std::tuple{"front face, single-sided", up, false, true}}) {
+        const Scene s = scene(node, doubleSided, false);
+        const float expected = visible ? 0.0f : 0.5f;
+        expectEverywhere(pathTraced(s), expected, visible ? kBlackOccluder : 1e-3f, name);
+        expectEverywhere(photonMapped(s), expected, visible ? kBlackOccluder : 1e-3f, name);
+        // The host's camera rays (light_reach.cpp): the occluder is hit at t = 1 from 2 above.
+        const SceneArrays arrays = buildSceneArrays(s);
+        const RayHit hit = closestHit(arrays.bvhArrays(), {0.3f, 2.0f, -0.2f}, {0.0f, -1.0f, 0.0f}, 1e30f, true);
+        ASSERT_TRUE(hit.hit) << name;
+        EXPECT_NEAR(hit.t, visible ? 1.0f : 2.0f, 1e-4f) << name << ": host camera ray";
+        // Other rays see both faces.
+        EXPECT_NEAR(closestHit(arrays.bvhArrays(), {0.3f, 2.0f, -0.2f}, {0.0f, -1.0f, 0.0f}, 1e30f).t, 1.0f, 1e-4f)
+            << name << ": host ray, not from the camera";
+    }
+    // A transmissive single-sided occluder seen from its back is hit by camera rays.
+    const SceneArrays glass = buildSceneArrays(scene(down, false, true));
+    EXPECT_NEAR(closestHit(glass.bvhArrays(), {0.3f, 2.0f, -0.2f}, {0.0f, -1.0f, 0.0f}, 1e30f, true).t, 1.0f, 1e-4f)
+        << "transmissive back face";
 }
 
 // Known tangents: a quad in the z = 0 plane with u along +x and v down the image (v = 1 - y):

@@ -71,7 +71,7 @@ TEST(Terminations, TheHostTraversalOfATreeDeeperThanItsStackNotesAnOverflow) {
         gpu::gTerminations = 0;
         float t, b1, b2;
         uint32_t tri;
-        ASSERT_TRUE(gpu::traceClosest(arrays, glm::vec3(-1, 0, 0), glm::vec3(1, 0, 0), 1e30f, t, tri, b1, b2));
+        ASSERT_TRUE(gpu::traceClosest(arrays, glm::vec3(-1, 0, 0), glm::vec3(1, 0, 0), 1e30f, false, t, tri, b1, b2));
         EXPECT_FLOAT_EQ(t, 8.0f);  // the skipped leaves hold nothing on the ray
         EXPECT_EQ(tri, 1u);
         const bool overflow = (gpu::gTerminations & (1u << gpu::kTerminationStackOverflow)) != 0;

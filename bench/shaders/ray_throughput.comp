@@ -27,7 +27,7 @@ void main() {
     float b1;
     float b2;
     uint hits = 0u;
-    if (traceClosest(push.camera.position, dir, kInfinity, t, tri, b1, b2)) {
+    if (traceClosest(push.camera.position, dir, kInfinity, true, t, tri, b1, b2)) {
         hits = 1u;
         if (push.mode == 1u) {
             SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
@@ -37,7 +37,7 @@ void main() {
             orthonormalBasis(n, tangent, bitangent);
             vec3 bounce = toWorld(sampleCosineHemisphere(nextSample2(rng)), tangent, bitangent, n);
             vec3 origin = offsetRayOrigin(hit.position, n, bounce);
-            if (traceClosest(origin, bounce, kInfinity, t, tri, b1, b2)) hits = 2u;
+            if (traceClosest(origin, bounce, kInfinity, false, t, tri, b1, b2)) hits = 2u;
         }
     }
     hitCount[pixel] = hits;

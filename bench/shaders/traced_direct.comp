@@ -27,7 +27,7 @@ void main() {
     uint tri;
     float b1;
     float b2;
-    if (!traceClosest(params.camera.position, dir, kInfinity, tHit, tri, b1, b2)) return;
+    if (!traceClosest(params.camera.position, dir, kInfinity, true, tHit, tri, b1, b2)) return;
     SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
     BsdfParams bsdf = bsdfParamsAt(materials[hit.material], hit.uv);
     vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;

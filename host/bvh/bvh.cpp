@@ -343,13 +343,13 @@ std::vector<gpu::GpuTriangle> gpuTriangles(std::span<const Triangle> triangles, 
 
 // The traversal is the shaders' own (shaders/shared/bvh_traverse.glsl compiled as C++).
 RayHit closestHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org, glm::vec3 dir,
-                  float tMax) {
+                  float tMax, bool cullBackFaces) {
     RayHit hit;
     hit.t = tMax;
     if (bvh.nodes.empty()) return hit;  // a default-constructed Bvh; built trees have a root
     const gpu::BvhArrays arrays{bvh.nodes, triangles};
     uint32_t triangle = gpu::kBvhNoTriangle;
-    hit.hit = gpu::traceClosest(arrays, org, dir, tMax, hit.t, triangle, hit.b1, hit.b2);
+    hit.hit = gpu::traceClosest(arrays, org, dir, tMax, cullBackFaces, hit.t, triangle, hit.b1, hit.b2);
     if (hit.hit) hit.triangle = triangle;
     return hit;
 }

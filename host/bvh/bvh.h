@@ -61,9 +61,10 @@ struct RayHit {
     float b2 = 0.0f;
 };
 
-// Closest hit with 0 < t < tMax: traceClosest of shaders/shared/bvh_traverse.glsl on the CPU.
+// Closest hit with 0 < t < tMax: traceClosest of shaders/shared/bvh_traverse.glsl on the CPU
+// (cullBackFaces: a camera ray, see there).
 RayHit closestHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org,
-                  glm::vec3 dir, float tMax);
+                  glm::vec3 dir, float tMax, bool cullBackFaces = false);
 // Any hit with 0 < t < tMax: traceAny of shaders/shared/bvh_traverse.glsl on the CPU.
 bool anyHit(const Bvh& bvh, std::span<const gpu::GpuTriangle> triangles, glm::vec3 org,
             glm::vec3 dir, float tMax);

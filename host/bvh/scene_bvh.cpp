@@ -207,12 +207,12 @@ gpu::GpuTriangle worldTriangle(const gpu::BvhArrays& arrays, uint32_t hitId) {
     return t;
 }
 
-RayHit closestHit(const gpu::BvhArrays& arrays, glm::vec3 org, glm::vec3 dir, float tMax) {
+RayHit closestHit(const gpu::BvhArrays& arrays, glm::vec3 org, glm::vec3 dir, float tMax, bool cullBackFaces) {
     RayHit hit;
     hit.t = tMax;
     if (arrays.nodes.empty()) return hit;
     uint32_t id = gpu::kBvhNoTriangle;
-    hit.hit = gpu::traceClosest(arrays, org, dir, tMax, hit.t, id, hit.b1, hit.b2);
+    hit.hit = gpu::traceClosest(arrays, org, dir, tMax, cullBackFaces, hit.t, id, hit.b1, hit.b2);
     if (hit.hit) hit.triangle = id;
     return hit;
 }

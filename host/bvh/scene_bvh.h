@@ -77,7 +77,9 @@ inline void updateInstances(SceneBvh& bvh, std::span<const glm::mat4> transforms
 }
 
 // The shaders' traversal over the two levels on the CPU; RayHit::triangle is the hit id.
-RayHit closestHit(const gpu::BvhArrays& arrays, glm::vec3 org, glm::vec3 dir, float tMax);
+// cullBackFaces: a camera ray, which skips the back faces of single-sided opaque triangles
+// (traceClosest, docs/scene-format.md "Back faces").
+RayHit closestHit(const gpu::BvhArrays& arrays, glm::vec3 org, glm::vec3 dir, float tMax, bool cullBackFaces = false);
 bool anyHit(const gpu::BvhArrays& arrays, glm::vec3 org, glm::vec3 dir, float tMax);
 
 }  // namespace vkp

@@ -101,8 +101,13 @@ SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling, const T
     for (uint32_t index : bvh.staticOrder) source.push_back(&scene.triangles[index]);
     for (size_t m = 0; m < bvh.meshOrder.size(); ++m)
         for (uint32_t index : bvh.meshOrder[m]) source.push_back(&scene.meshes[m].triangles[index]);
-    for (uint32_t i = 0; i < a.triangles.size(); ++i)  // the traversal's alpha test (gpu_types.glsl)
-        if (scene.materials[source[i]->material].alphaMode != AlphaMode::Opaque) a.triangles[i].v0.w = 1.0f;
+    for (uint32_t i = 0; i < a.triangles.size(); ++i) {  // the traversal's alpha test and culling (gpu_types.glsl)
+        const Material& m = scene.materials[source[i]->material];
+        if (m.alphaMode != AlphaMode::Opaque) a.triangles[i].v0.w = 1.0f;
+        // glTF culls the back faces of single-sided materials; camera rays do (docs/scene-format.md
+        // "Back faces"), except on transmissive ones, whose back faces refracted rays see from inside.
+        if (!m.doubleSided && m.transmission <= 0.0f) a.triangles[i].v2.w = 1.0f;
+    }
     a.shading.reserve(a.triangles.size());
     const TexturedEmission emission(scene);
     std::vector<double> power;

@@ -21,7 +21,7 @@ GuideGridAtPixel guideGridAtPixel(const Scene& /*scene*/, const SceneArrays& arr
     const glm::vec2 film(x + 0.5f, y + 0.5f);
     const glm::vec3 dir = gpu::cameraRayDirection(cam, width, height, film);
     const gpu::BvhArrays view = arrays.bvhArrays();
-    const RayHit hit = closestHit(view, gpu::cameraRayOrigin(cam, width, height, film), dir, gpu::kInfinity);
+    const RayHit hit = closestHit(view, gpu::cameraRayOrigin(cam, width, height, film), dir, gpu::kInfinity, true);
     if (!hit.hit) throw InputError(fmt::format("--pixel {} {}: the camera ray meets no surface", x, y));
     const gpu::GpuTriangle t = worldTriangle(view, hit.triangle);
     const gpu::GpuMaterial& material = arrays.materials[arrays.shading[triangleOfHit(view, hit.triangle)].material];

@@ -50,7 +50,7 @@ std::vector<bool> lightsReachingView(const SceneArrays& arrays, const LightReach
             const glm::vec2 pixel((x + 0.5f) * width / rays, (y + 0.5f) * height / rays);
             const glm::vec3 org = gpu::cameraRayOrigin(camera, width, height, pixel);
             const glm::vec3 dir = gpu::cameraRayDirection(camera, width, height, pixel);
-            const RayHit hit = closestHit(bvh, org, dir, 1e30f);
+            const RayHit hit = closestHit(bvh, org, dir, 1e30f, true);
             if (!hit.hit) continue;
             const glm::ivec3 c = gpu::gridCell(org + hit.t * dir, invCellSize);
             for (int dz = -1; dz <= 1; ++dz)

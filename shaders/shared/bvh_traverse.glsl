@@ -92,7 +92,10 @@ INLINE vec3 transformVector3x4(vec4 r0, vec4 r1, vec4 r2, vec3 v) {
 // hit that failed). Closest-hit mode (anyHit false) returns the nearest hit: t, its hit id
 // (docs/bvh.md: the triangle's index for the static tree, the instance's firstId + the index
 // within its mesh otherwise), the index of its triangle in triangles[] (triIndex) and the
-// barycentrics (b1, b2) of v1 and v2; among hits at exactly equal t the first one visited wins.
+// barycentrics (b1, b2) of v1 and v2, and whether the ray met its back face (backFace: the ray
+// runs along the counter-clockwise normal in the triangle's own space, world for the static tree,
+// object for a mesh: glTF's front face is the mesh's counter-clockwise side whatever the node's
+// determinant); among hits at exactly equal t the first one visited wins.
 // Any-hit mode returns at the first hit found on a triangle without alpha test (shadow and
 // visibility rays); hits on alpha-tested ones only set alphaSeen. On a miss: false, t = tMax,
 // tri = kBvhNoTriangle.
@@ -105,8 +108,9 @@ INLINE vec3 transformVector3x4(vec4 r0, vec4 r1, vec4 r2, vec3 v) {
 // depth at which the instance was entered restores the world-space ray.
 INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMin, uint minTri, float tMax, bool anyHit,
                         OUT(float) t, OUT(uint) tri, OUT(uint) triIndex, OUT(float) b1, OUT(float) b2,
-                        OUT(bool) alphaSeen) {
+                        OUT(bool) backFace, OUT(bool) alphaSeen) {
     alphaSeen = false;
+    backFace = false;
     triIndex = kBvhNoTriangle;
     t = tMax;
     tri = kBvhNoTriangle;
@@ -172,6 +176,7 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMin, uint mi
                     b1 = b1Candidate;
                     b2 = b2Candidate;
                     if (anyHit) return true;
+                    backFace = dot(d, cross(vec3(triangle.v1) - vec3(triangle.v0), vec3(triangle.v2) - vec3(triangle.v0))) > 0.0f;
                 }
             }
         } else if (visit) {
@@ -229,27 +234,39 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMin, uint mi
     return tri != kBvhNoTriangle;
 }
 
-// One trace, alpha test outside the traversal: closest-hit mode restarts past an alpha-tested hit
-// that fails BVH_ALPHA_TEST; any-hit mode first walks ignoring alpha-tested triangles, and only
-// when it found one of them and no opaque occluder goes on as closest-hit with the alpha test
-// (scenes without alpha-tested triangles walk once, as before).
-INLINE bool traceBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool anyHit, OUT(float) t, OUT(uint) tri,
-                     OUT(float) b1, OUT(float) b2) {
+// Whether a closest hit is skipped as a culled back face: camera rays (cullBackFaces) skip the
+// back faces of triangles with v2.w != 0 (glTF doubleSided false and not transmissive,
+// host/gpu_scene/scene_buffers.cpp; docs/scene-format.md "Back faces").
+INLINE bool culledBackFace(bool cullBackFaces, bool backFace, GpuTriangle triangle) {
+    return cullBackFaces && backFace && triangle.v2.w != 0.0f;
+}
+
+// One trace, alpha test and back-face culling outside the traversal: closest-hit mode restarts
+// past a hit that fails BVH_ALPHA_TEST or is a culled back face (cullBackFaces: camera rays only);
+// any-hit mode (never culls) first walks ignoring alpha-tested triangles, and only when it found
+// one of them and no opaque occluder goes on as closest-hit with the alpha test (scenes without
+// alpha-tested triangles walk once, as before).
+INLINE bool traceBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool anyHit, bool cullBackFaces, OUT(float) t,
+                     OUT(uint) tri, OUT(float) b1, OUT(float) b2) {
     bool anyMode = anyHit;
     float tMin = 0.0f;
     uint minTri = kBvhNoTriangle;
     for (uint pass = 0u; pass < kBvhMaxAlphaPasses; ++pass) {
         bool alphaSeen;
+        bool backFace;
         uint triIndex;
-        bool hit = traverseBvh(BVH_ARRAYS_ARG org, dir, tMin, minTri, tMax, anyMode, t, tri, triIndex, b1, b2, alphaSeen);
+        bool hit = traverseBvh(BVH_ARRAYS_ARG org, dir, tMin, minTri, tMax, anyMode, t, tri, triIndex, b1, b2,
+                               backFace, alphaSeen);
         if (anyMode) {
             if (hit || !alphaSeen) return hit;
             anyMode = false;
             continue;
         }
-        if (!hit || BVH_TRIANGLE(triIndex).v0.w == 0.0f ||
-            BVH_ALPHA_TEST(BVH_TRIANGLE(triIndex), triIndex, b1, b2, org, dir)) {
-            return hit;
+        if (!hit) return false;
+        GpuTriangle triangle = BVH_TRIANGLE(triIndex);
+        if (!culledBackFace(cullBackFaces, backFace, triangle) &&
+            (triangle.v0.w == 0.0f || BVH_ALPHA_TEST(triangle, triIndex, b1, b2, org, dir))) {
+            return true;
         }
         tMin = t;
         minTri = tri;
@@ -260,9 +277,10 @@ INLINE bool traceBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool anyHi
     return false;
 }
 
-INLINE bool traceClosest(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, OUT(float) t, OUT(uint) tri, OUT(float) b1,
-                         OUT(float) b2) {
-    return traceBvh(BVH_ARRAYS_ARG org, dir, tMax, false, t, tri, b1, b2);
+// Closest hit; cullBackFaces for camera rays (primary visibility) only.
+INLINE bool traceClosest(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool cullBackFaces, OUT(float) t,
+                         OUT(uint) tri, OUT(float) b1, OUT(float) b2) {
+    return traceBvh(BVH_ARRAYS_ARG org, dir, tMax, false, cullBackFaces, t, tri, b1, b2);
 }
 
 INLINE bool traceAny(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax) {
@@ -270,7 +288,7 @@ INLINE bool traceAny(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax) {
     uint tri;
     float b1;
     float b2;
-    return traceBvh(BVH_ARRAYS_ARG org, dir, tMax, true, t, tri, b1, b2);
+    return traceBvh(BVH_ARRAYS_ARG org, dir, tMax, true, false, t, tri, b1, b2);
 }
 
 #undef BVH_ARRAYS_PARAM

@@ -8,7 +8,9 @@ SHARED_BEGIN
 
 // Triangle positions in world space; traversal reads only this buffer. v0.w is 1 when the
 // triangle's material has an alpha test (alphaMode MASK or BLEND), else 0; v1.w is the index of
-// its entry in the light list (as a float), -1 when it is not a light; v2.w is unused.
+// its entry in the light list (as a float), -1 when it is not a light; v2.w is 1 when camera rays
+// skip its back face (glTF doubleSided false and not transmissive, docs/scene-format.md "Back
+// faces"), else 0.
 struct GpuTriangle {
     vec4 v0;
     vec4 v1;

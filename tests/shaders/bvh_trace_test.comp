@@ -55,7 +55,7 @@ void main() {
     vec3 dir = ray.direction.xyz;
     float tMax = ray.origin.w;
     TestHit h;
-    traceClosest(org, dir, tMax, h.t, h.tri, h.b1, h.b2);
+    traceClosest(org, dir, tMax, false, h.t, h.tri, h.b1, h.b2);
     h.anyHit = traceAny(org, dir, tMax) ? 1u : 0u;
     hits[i] = h;
     countTerminations(kTerminationSamples);  // a ray cut short counts as one sample

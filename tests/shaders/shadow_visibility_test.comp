@@ -33,7 +33,7 @@ void main() {
     uint visible = 0u;
     uint relevant = 0u;
     uint visibleTriangle = 0xffffffffu;
-    if (traceClosest(params.camera.position, dir, kInfinity, tHit, tri, b1, b2)) {
+    if (traceClosest(params.camera.position, dir, kInfinity, false, tHit, tri, b1, b2)) {
         SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
         visibleTriangle = tri;
         vec3 sideNormal = hit.frontFace ? hit.geometricNormal : -hit.geometricNormal;
