@@ -641,6 +641,29 @@ TEST_F(GltfFeatures, SingleSidedBackFacesAreInvisibleToTheCamera) {
         << "transmissive back face";
 }
 
+// The same culling in the raster pass: the back-facing single-sided black occluder under the light
+// is invisible to the camera but still casts its shadow (shadow rays see both faces), so the floor
+// is black as in the path tracer; the depth pre-pass must skip the occluder's back face, or the
+// stencil shadows are those of the occluder's depth (lit) and the floor shows at 0.8.
+TEST_F(GltfFeatures, SingleSidedBackFacesInTheRasterPass) {
+    QuadDoc q;
+    q.doc()["cameras"] = {{{"type", "perspective"},
+                           {"perspective", {{"yfov", 2.0 * std::atan(0.5)}, {"znear", 0.01}, {"aspectRatio", 1.0}}}}};
+    addOccluder(q, {{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}}}});
+    q.doc()["nodes"].back()["rotation"] = {1, 0, 0, 0};  // front face down: the camera sees its back
+    const Scene scene = load(q);
+    Renderer renderer(test::gpu(), scene);
+    FrameSettings s;
+    s.width = kSize;
+    s.height = kSize;
+    s.samplesPerPixel = 2;
+    s.seed = 1;
+    s.pixelCentres = true;
+    expectEverywhere(renderer.render<PathIntegrator>(s).image, 0.0f, kBlackOccluder, "path tracer (shadow rays)");
+    s.direct = DirectLight::Raster;
+    expectEverywhere(renderer.render<PathIntegrator>(s).image, 0.0f, kBlackOccluder, "raster direct light");
+}
+
 // Known tangents: a quad in the z = 0 plane with u along +x and v down the image (v = 1 - y):
 // tangent +x, and the map's +Y (image up) is +y = cross(+z, +x): w = +1. Mirrored u: tangent -x, w = -1.
 TEST(GltfTangents, GeneratedTangentsMatchKnownOnes) {

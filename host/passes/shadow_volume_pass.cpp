@@ -31,6 +31,27 @@ std::vector<glm::vec4> prepassPositions(const std::vector<gpu::GpuShadowTriangle
     return out;
 }
 
+// The pre-pass's depth triangles: first those both of whose faces camera rays see, then the
+// single-sided opaque ones (GpuTriangle v2.w != 0), drawn with back faces culled so the depth is
+// that of the surface camera rays meet (docs/scene-format.md "Back faces"). Same positions, same
+// vertex order as prepassPositions(), so the shadow volumes' front caps meet the same depths.
+std::vector<glm::vec4> depthPositions(const std::vector<gpu::GpuShadowTriangle>& tris,
+                                      const std::vector<gpu::GpuTriangle>& triangles, uint32_t& culled) {
+    std::vector<glm::vec4> out;
+    out.reserve(tris.size() * 3 + 1);
+    culled = 0;
+    for (const bool cull : {false, true})
+        for (size_t t = 0; t < tris.size(); ++t) {
+            if ((triangles[t].v2.w != 0.0f) != cull) continue;
+            out.push_back(tris[t].v0);
+            out.push_back(tris[t].v1);
+            out.push_back(tris[t].v2);
+            if (cull) ++culled;
+        }
+    out.push_back(glm::vec4(0.0f));
+    return out;
+}
+
 // Triangle-list-with-adjacency indices into prepassPositions(): per triangle v0, far vertex of the
 // neighbour across v0v1, v1, across v1v2, v2, across v2v0.
 std::vector<uint32_t> adjacencyIndices(const std::vector<gpu::GpuShadowTriangle>& tris) {
@@ -108,6 +129,9 @@ ShadowVolumePass::ShadowVolumePass(vk::Context& context, const std::vector<gpu::
              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT),
       m_positions(context, "raster positions", (triangles.size() * 3 + 1) * sizeof(glm::vec4),
                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT),
+      m_depthPositions(context, "raster depth positions", (triangles.size() * 3 + 1) * sizeof(glm::vec4),
+                       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT),
+      m_culledCount(0),
       m_adjacency(context, "adjacency indices", std::max<VkDeviceSize>(16, triangles.size() * 6 * sizeof(uint32_t)),
                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT),
       m_triangles(vk::makeStorageBuffer(context, "shadow triangles", m_shadowTriangles.triangles)),
@@ -121,6 +145,7 @@ ShadowVolumePass::ShadowVolumePass(vk::Context& context, const std::vector<gpu::
               vk::kStorageUsage),
       m_build(context) {
     m_positions.upload(prepassPositions(m_shadowTriangles.triangles));
+    m_depthPositions.upload(depthPositions(m_shadowTriangles.triangles, triangles, m_culledCount));
     if (m_triangleCount > 0) m_adjacency.upload(adjacencyIndices(m_shadowTriangles.triangles));
     for (const auto& light : rasterLights) m_lightPoints.push_back(lightPoint(light));
     m_build.bind(gpu::kShadowVolumeTriangleBinding, m_triangles);
@@ -141,6 +166,10 @@ ShadowVolumePass::ShadowVolumePass(vk::Context& context, const std::vector<gpu::
     depth.depthWrite = true;
     depth.cullMode = VK_CULL_MODE_NONE;  // both sides of every surface are visible and shade
     m_depthPipeline = std::make_unique<vk::GraphicsPipeline>(context, depth);
+    // Single-sided opaque triangles: camera rays skip their back faces. Front faces are
+    // counter-clockwise, as for the volumes' two-sided stencil below.
+    depth.cullMode = VK_CULL_MODE_BACK_BIT;
+    m_depthCullPipeline = std::make_unique<vk::GraphicsPipeline>(context, depth);
 
     // z-fail ("Carmack's reverse"): count the volume faces *behind* the visible surface, back
     // faces up, front faces down, both in one draw with two-sided stencil. The count is the number
@@ -240,10 +269,17 @@ void ShadowVolumePass::record(VkCommandBuffer cmd, const gpu::GpuCamera& camera,
         vk::setViewportAndScissor(cmd, m_width, m_height);
         const VkDeviceSize zero = 0;
         if (pass == 0 && m_triangleCount > 0) {
-            m_depthPipeline->bind(cmd, raster);
-            const VkBuffer positions = m_positions.handle();
+            const VkBuffer positions = m_depthPositions.handle();
             vkCmdBindVertexBuffers(cmd, 0, 1, &positions, &zero);
-            vkCmdDraw(cmd, m_triangleCount * 3, 1, 0, 0);
+            const uint32_t twoSided = m_triangleCount - m_culledCount;
+            if (twoSided > 0) {
+                m_depthPipeline->bind(cmd, raster);
+                vkCmdDraw(cmd, twoSided * 3, 1, 0, 0);
+            }
+            if (m_culledCount > 0) {
+                m_depthCullPipeline->bind(cmd, raster);
+                vkCmdDraw(cmd, m_culledCount * 3, 1, twoSided * 3, 0);
+            }
         }
         for (uint32_t k = 0; k < count; ++k) {
             if (m_triangleCount > 0 && !computeVolumes) {

@@ -67,6 +67,9 @@ private:
     vk::Image m_mask;
     vk::Buffer m_positions;   // vertex buffer of the pre-pass: 3 x vec4 (w = 1) per triangle, then
                               // one "no neighbour" marker (w = 0) for the adjacency indices
+    vk::Buffer m_depthPositions;  // the pre-pass's positions again, two-sided triangles first, then
+                                  // m_culledCount whose back faces camera rays skip (GpuTriangle v2.w)
+    uint32_t m_culledCount;
     vk::Buffer m_adjacency;   // geometry-shader variant: 6 indices per triangle (with adjacency)
     vk::Buffer m_triangles;   // GpuShadowTriangle per triangle
     vk::Buffer m_lights;      // GpuLight per raster light
@@ -74,6 +77,7 @@ private:
     vk::Buffer m_masks;
     vk::Kernel<gpu::ShadowVolumeBuildKernel> m_build;
     std::unique_ptr<vk::GraphicsPipeline> m_depthPipeline;
+    std::unique_ptr<vk::GraphicsPipeline> m_depthCullPipeline;  // the same with back faces culled
     std::unique_ptr<vk::GraphicsPipeline> m_volumePipeline;
     std::unique_ptr<vk::GraphicsPipeline> m_volumeGeometryPipeline;
     std::unique_ptr<vk::GraphicsPipeline> m_maskPipelines[gpu::kLightsPerMaskPass];
