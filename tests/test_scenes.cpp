@@ -82,6 +82,9 @@ Scene shadowTestScene() {
     m.roughness = 1.0f;
     m.ior = 1.0f;
     m.specular = 0.0f;  // KHR_materials_specular 0: exactly Lambert
+    // Both faces seen by the camera (open boxes are looked into): single-sided materials' back
+    // faces are culled for camera rays (docs/scene-format.md "Back faces").
+    m.doubleSided = true;
     scene.materials.push_back(m);
     return scene;
 }
