@@ -625,7 +625,8 @@ TEST_F(GltfFeatures, SingleSidedBackFacesAreInvisibleToTheCamera) {
         const Scene s = scene(node, doubleSided, false);
         const float expected = visible ? 0.0f : 0.5f;
         expectEverywhere(pathTraced(s), expected, visible ? kBlackOccluder : 1e-3f, name);
-        expectEverywhere(photonMapped(s), expected, visible ? kBlackOccluder : 1e-3f, name);
+        if (node == down)  // the photon integrator's visible points (the slowest part: two cases)
+            expectEverywhere(photonMapped(s), expected, visible ? kBlackOccluder : 1e-3f, name);
         // The host's camera rays (light_reach.cpp): the occluder is hit at t = 1 from 2 above.
         const SceneArrays arrays = buildSceneArrays(s);
         const RayHit hit = closestHit(arrays.bvhArrays(), {0.3f, 2.0f, -0.2f}, {0.0f, -1.0f, 0.0f}, 1e30f, true);
