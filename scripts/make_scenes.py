@@ -540,9 +540,9 @@ def hall_moving(path):
     start, end = (-4.0, radius, 1.0), (-1.0, radius, 1.0)
     b.doc["nodes"][sphere]["translation"] = list(start)
     b.animate_translation("sphere-rolls", sphere, [0.0, 2.0], [start, end])
-    # From the +x, +z corner region, looking down the hall at the sphere's path; most of the view is static.
-    eye = (3.5, 1.7, 4.2)
-    b.camera(eye, yfov=math.radians(50), aspect=4 / 3, rotation=look_at_rotation(eye, (-2.5, 0.5, 0.0)))
+    # Between the pillar rows, looking down the hall (-x) along the sphere's path; most of the view is static.
+    eye = (3.5, 1.7, 0.8)
+    b.camera(eye, yfov=math.radians(50), aspect=4 / 3, rotation=look_at_rotation(eye, (-3.0, 0.4, 0.5)))
     b.write(path)
 
 
