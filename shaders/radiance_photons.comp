@@ -2,8 +2,8 @@
 // (in grid order) makes about every stride-th photon (radiancePhotonChosen), the first of every
 // bucket and every photon of a sparse bucket a radiance photon holding the irradiance of its k
 // nearest photons of every kind, E = sum dPhi / (pi r^2), as the record's power, in the photon's
-// own slot; the other slots stay empty. Final gather rays
-// read the nearest radiance photon (final_gather.comp).
+// own slot; the other slots stay empty. Final gather rays read the nearest radiance photon
+// (final_gather.comp).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
