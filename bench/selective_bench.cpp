@@ -7,6 +7,9 @@
 //   selective_bench --flicker REF_A.exr REF_B.exr A.exr B.exr
 //       relMSE of B against A over the pixels where the references of the two frames (converged,
 //       same seed) differ by at most 2 % (the static regions), and the share of such pixels.
+//   selective_bench --changed REF_A REF_B FRAME...
+//       relMSE of each FRAME against REF_B over the other pixels (those the motion from frame A to
+//       frame B changes: the moving object, its shadow and caustic), and their share.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +22,42 @@
 
 namespace {
 
+// The pixel is static: the two references differ by at most 2 % in every channel.
+bool staticPixel(const vkp::ImageRgb& ra, const vkp::ImageRgb& rb, size_t p) {
+    bool same = true;
+    for (int c = 0; c < 3; ++c) {
+        const double x = ra.pixels[3 * p + c], y = rb.pixels[3 * p + c];
+        same = same && std::abs(x - y) <= 0.02 * std::max(0.5 * (x + y), 1e-3);
+    }
+    return same;
+}
+
+int changed(int count, char** paths) {
+    const vkp::ImageRgb ra = vkp::readExr(paths[0]), rb = vkp::readExr(paths[1]);
+    const size_t pixels = ra.pixels.size() / 3;
+    for (int i = 2; i < count; ++i) {
+        const vkp::ImageRgb image = vkp::readExr(paths[i]);
+        if (rb.pixels.size() != ra.pixels.size() || image.pixels.size() != ra.pixels.size()) {
+            std::fprintf(stderr, "error: the images differ in size\n");
+            return 2;
+        }
+        double sum = 0.0;
+        size_t moved = 0;
+        for (size_t p = 0; p < pixels; ++p) {
+            if (staticPixel(ra, rb, p)) continue;
+            ++moved;
+            for (int c = 0; c < 3; ++c) {  // relMSE as image/metrics.h: (a - b)^2 / (b^2 + 0.01)
+                const double d = image.pixels[3 * p + c] - rb.pixels[3 * p + c];
+                const double r = rb.pixels[3 * p + c];
+                sum += d * d / (r * r + 0.01);
+            }
+        }
+        fmt::print("{}\tchanged-pixel relMSE {:.5f}\tchanged pixels {:.1f} %\n", paths[i], moved ? sum / (3.0 * moved) : 0.0,
+                   100.0 * double(moved) / double(pixels));
+    }
+    return 0;
+}
+
 int flicker(const char* refA, const char* refB, const char* a, const char* b) {
     const vkp::ImageRgb ra = vkp::readExr(refA), rb = vkp::readExr(refB), ia = vkp::readExr(a), ib = vkp::readExr(b);
     if (ra.pixels.size() != rb.pixels.size() || ia.pixels.size() != ra.pixels.size() || ib.pixels.size() != ra.pixels.size()) {
@@ -29,12 +68,7 @@ int flicker(const char* refA, const char* refB, const char* a, const char* b) {
     size_t still = 0;
     const size_t pixels = ra.pixels.size() / 3;
     for (size_t p = 0; p < pixels; ++p) {
-        bool same = true;
-        for (int c = 0; c < 3; ++c) {
-            const double x = ra.pixels[3 * p + c], y = rb.pixels[3 * p + c];
-            same = same && std::abs(x - y) <= 0.02 * std::max(0.5 * (x + y), 1e-3);
-        }
-        if (!same) continue;
+        if (!staticPixel(ra, rb, p)) continue;
         ++still;
         for (int c = 0; c < 3; ++c) {  // relMSE as image/metrics.h: (a - b)^2 / (b^2 + 0.01)
             const double d = ia.pixels[3 * p + c] - ib.pixels[3 * p + c];
@@ -50,13 +84,16 @@ int flicker(const char* refA, const char* refB, const char* a, const char* b) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 3 || (std::strcmp(argv[1], "--flicker") == 0 && argc != 6)) {
+    if (argc < 3 || (std::strcmp(argv[1], "--flicker") == 0 && argc != 6) ||
+        (std::strcmp(argv[1], "--changed") == 0 && argc < 5)) {
         std::fprintf(stderr, "usage: selective_bench REFERENCE.exr FRAME.exr...\n"
-                             "       selective_bench --flicker REF_A.exr REF_B.exr A.exr B.exr\n");
+                             "       selective_bench --flicker REF_A.exr REF_B.exr A.exr B.exr\n"
+                             "       selective_bench --changed REF_A.exr REF_B.exr FRAME.exr...\n");
         return 2;
     }
     try {
         if (std::strcmp(argv[1], "--flicker") == 0) return flicker(argv[2], argv[3], argv[4], argv[5]);
+        if (std::strcmp(argv[1], "--changed") == 0) return changed(argc - 2, argv + 2);
         const vkp::ImageRgb reference = vkp::readExr(argv[1]);
         for (int i = 2; i < argc; ++i)
             fmt::print("{}\trelMSE {:.5f}\n", argv[i], vkp::relativeMse(vkp::readExr(argv[i]), reference));

@@ -475,6 +475,77 @@ def cubicles_1024(path):
     b.write(path)
 
 
+# A small object moving in a large room (issue 15's second benchmark scene, Dmitriev et al. 2002 §6): a closed
+# HALL_SIZE hall lit by four ceiling lights, six pillars and two benches, and a glass sphere of 0.5 m rolling 3 m
+# over the floor under one light in the first two seconds, then standing still. Most photon paths never meet it.
+HALL_SIZE = (20.0, 5.0, 10.0)  # x, y (height), z
+HALL_LIGHT_SIZE = 1.0
+HALL_LIGHT_RADIANCE = (40.0, 36.0, 30.0)
+HALL_LIGHTS_X = (-7.5, -2.5, 2.5, 7.5)  # centres of the lights (z = 0)
+PILLAR_SIZE = 0.4
+PILLARS = [(x, z) for z in (-2.5, 2.5) for x in (-5.0, 0.0, 5.0)]
+BENCHES = [((-6.0, -4.3), (2.0, 0.45, 0.5)), ((4.0, -4.3), (2.0, 0.45, 0.5))]  # (centre x, z), size (x, y, z)
+
+
+def solid_box(parts, x0, x1, y0, y1, z0, z1, top=True):
+    """The four sides (and the top) of the box [x0, x1] x [y0, y1] x [z0, z1], facing out."""
+    parts.quad([(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)], (-1.0, 0.0, 0.0))
+    parts.quad([(x1, y0, z0), (x1, y0, z1), (x1, y1, z1), (x1, y1, z0)], (1.0, 0.0, 0.0))
+    parts.quad([(x0, y0, z0), (x1, y0, z0), (x1, y1, z0), (x0, y1, z0)], (0.0, 0.0, -1.0))
+    parts.quad([(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)], (0.0, 0.0, 1.0))
+    if top:
+        parts.quad([(x0, y1, z0), (x1, y1, z0), (x1, y1, z1), (x0, y1, z1)], (0.0, 1.0, 0.0))
+
+
+def hall_moving(path):
+    """A 20 x 10 x 5 m hall (floor, ceiling, walls of two colours, pillars, benches; 88 triangles without the sphere)
+    and a glass sphere (radius 0.25, 960 triangles) moving from x = -4 to -1 at z = 1 on the floor (LINEAR keys at
+    0 and 2 s; the node's static translation is the start), passing under the light at x = -2.5."""
+    b = GltfBuilder()
+    ex, h, ez = HALL_SIZE[0] / 2, HALL_SIZE[1], HALL_SIZE[2] / 2
+    floor = Parts()
+    floor.quad([(-ex, 0, -ez), (ex, 0, -ez), (ex, 0, ez), (-ex, 0, ez)], (0.0, 1.0, 0.0))
+    floor.emit(b, "floor", b.material("floor", FLOOR_COLOR))
+    ceiling = Parts()
+    ceiling.quad([(-ex, h, -ez), (ex, h, -ez), (ex, h, ez), (-ex, h, ez)], (0.0, -1.0, 0.0))
+    ceiling.emit(b, "ceiling", b.material("ceiling", WHITE))
+    ends = Parts()  # the walls in the planes x = const
+    for facing, c in (((1.0, 0.0, 0.0), -ex), ((-1.0, 0.0, 0.0), ex)):
+        ends.quad([(c, 0, -ez), (c, 0, ez), (c, h, ez), (c, h, -ez)], facing)
+    ends.emit(b, "end-walls", b.material("wall-x", WALL_X_COLOR))
+    sides = Parts()  # the long walls in the planes z = const
+    for facing, c in (((0.0, 0.0, 1.0), -ez), ((0.0, 0.0, -1.0), ez)):
+        sides.quad([(-ex, 0, c), (ex, 0, c), (ex, h, c), (-ex, h, c)], facing)
+    sides.emit(b, "side-walls", b.material("wall-z", WALL_Z_COLOR))
+    furniture = Parts()
+    r = PILLAR_SIZE / 2
+    for x, z in PILLARS:
+        solid_box(furniture, x - r, x + r, 0.0, h, z - r, z + r, top=False)
+    for (x, z), (sx, sy, sz) in BENCHES:
+        solid_box(furniture, x - sx / 2, x + sx / 2, 0.0, sy, z - sz / 2, z + sz / 2)
+    furniture.emit(b, "pillars-and-benches", b.material("stone", WHITE))
+    lights = Parts()
+    r, y = HALL_LIGHT_SIZE / 2, h - 0.01
+    for x in HALL_LIGHTS_X:
+        lights.quad([(x - r, y, -r), (x + r, y, -r), (x + r, y, r), (x - r, y, r)], (0.0, -1.0, 0.0))
+    lights.emit(b, "lights", b.material("light", (0.0, 0.0, 0.0), emissive=HALL_LIGHT_RADIANCE))
+    radius = 0.25
+    glass = b.material("glass", (1.0, 1.0, 1.0), metallic=0.0, roughness=0.0, extensions={
+        "KHR_materials_transmission": {"transmissionFactor": 1.0},
+        "KHR_materials_ior": {"ior": 1.5},
+        "KHR_materials_volume": {"thicknessFactor": 2 * radius},
+    })
+    sphere = sphere_mesh(b, "glass-sphere", (0.0, 0.0, 0.0), radius, glass, segments=32, rings=16)
+    # Keys exact in float, so frame 0 equals the still pose bit for bit and every frame from 2 s on the end pose.
+    start, end = (-4.0, radius, 1.0), (-1.0, radius, 1.0)
+    b.doc["nodes"][sphere]["translation"] = list(start)
+    b.animate_translation("sphere-rolls", sphere, [0.0, 2.0], [start, end])
+    # Between the pillar rows, looking down the hall (-x) along the sphere's path; most of the view is static.
+    eye = (3.5, 1.7, 0.8)
+    b.camera(eye, yfov=math.radians(50), aspect=4 / 3, rotation=look_at_rotation(eye, (-3.0, 0.4, 0.5)))
+    b.write(path)
+
+
 def spheres_outdoor(path):
     """Three spheres on a ground square and no lights: a scene for environments (--env, docs/environment.md)."""
     b = GltfBuilder()
@@ -504,6 +575,7 @@ def main():
     cornell_ceiling(os.path.join(args.out, "cornell-ceiling.gltf"))
     cornell_glass(os.path.join(args.out, "cornell-glass.gltf"))
     cornell_moving(os.path.join(args.out, "cornell-moving.gltf"))
+    hall_moving(os.path.join(args.out, "hall-moving.gltf"))
     rooms_10x10(os.path.join(args.out, "rooms-10x10.gltf"))
     door_slit(os.path.join(args.out, "door-slit.gltf"))
     spheres_outdoor(os.path.join(args.out, "spheres-outdoor.gltf"))

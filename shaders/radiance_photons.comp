@@ -1,8 +1,9 @@
 // Precomputed radiance estimates (Christensen 1999): one invocation per photon of the global map
-// (in grid order) makes every stride-th photon, and every photon of a sparse bucket, a radiance
-// photon holding the irradiance of its k nearest photons of every kind, E = sum dPhi / (pi r^2),
-// as the record's power, in the photon's own slot; the other slots stay empty. Final gather rays
-// read the nearest radiance photon (final_gather.comp).
+// (in grid order) makes about every stride-th photon (radiancePhotonChosen), the first of every
+// bucket and every photon of a sparse bucket a radiance photon holding the irradiance of its k
+// nearest photons of every kind, E = sum dPhi / (pi r^2), as the record's power, in the photon's
+// own slot; the other slots stay empty. Final gather rays read the nearest radiance photon
+// (final_gather.comp).
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -25,12 +26,14 @@ void radiancePhoton() {
     uint source = gl_GlobalInvocationID.x;
     if (source >= params.photonCount) return;
     GpuPhoton p = gridPhotons[source];
-    // Every stride-th photon, and every photon of a bucket holding fewer than stride: the grid
-    // order keeps a bucket's photons together, so every bucket with a photon gets a radiance
+    // About every stride-th photon, chosen by its own record (radiancePhotonChosen: unchanged
+    // photons keep their choice from frame to frame), the first photon of every bucket and every
+    // photon of a bucket holding fewer than stride: every bucket with a photon gets a radiance
     // photon, and a final-gather ray finds one wherever the map has photons within a cell.
     uint bucket = gridHash(gridCell(p.position, params.grid.invCellSize), params.grid.tableMask);
     uint inBucket = gridCellStart[bucket + 1u] - gridCellStart[bucket];
-    if (source % params.stride != 0u && inBucket >= params.stride) {
+    bool chosen = inBucket < params.stride || source == gridCellStart[bucket] || radiancePhotonChosen(p, params.stride);
+    if (!chosen) {
         radiancePhotons[source] = makePhoton(vec3(0.0f), vec3(0.0f), vec3(0.0f, 0.0f, 1.0f), vec3(0.0f, 0.0f, 1.0f), 0u, 0u);
         return;
     }

@@ -282,5 +282,32 @@ TEST(AnimationFrames, SelectiveUpdateTracesFewerPathsAndAgreesWithFull) {
     }
 }
 
+
+// hall-moving.gltf: a 0.5 m sphere in a 20 x 10 x 5 m hall. Frame 48 (24 fps) is the sphere's last
+// 6 cm of motion, frame 49 has nothing moving (the keys end at 2 s): pilots change only where
+// their paths meet the sphere, so few groups are marked in frame 48 and none in frame 49.
+TEST(AnimationFrames, HallMovingMarksFewGroupsAndNoneOnceStill) {
+    const fs::path dir = freshTempDir("animation", "hall");
+    const std::string scene = std::string(VKPHOTON_SCENES) + "/hall-moving.gltf";
+    const auto run = runVkphoton(fmt::format("render {} --width 16 --height 12 --spp 1 --integrator photon --photons 40000 "
+                                             "--caustic-photons 20000 --gather-rays 0 --quiet --validate --frames 47:49 "
+                                             "-o {}/h-##.exr --stats-json {}/h.json",
+                                             scene, dir.string(), dir.string()));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    std::ifstream in(dir / "h.json");
+    const json frames = json::parse(in)["frames"];
+    ASSERT_EQ(frames.size(), 3u);
+    const uint64_t groups = frames[0]["groupsRetraced"].get<uint64_t>();  // frame 47 traces every group of both maps
+    EXPECT_GT(groups, 0u);
+    EXPECT_FALSE(frames[1]["sceneRebuilt"].get<bool>());  // the sphere is an instance, moved in place
+    const uint64_t marked = frames[1]["groupsMarked"].get<uint64_t>();
+    EXPECT_GT(frames[1]["changedPilots"].get<uint64_t>(), 0u);
+    EXPECT_GT(marked, 0u);
+    EXPECT_LT(marked, groups / 20) << "a 0.5 m sphere in a 20 m hall changes few pilots";
+    EXPECT_EQ(frames[2]["changedPilots"].get<uint64_t>(), 0u) << "nothing moves from 2 s on";
+    EXPECT_EQ(frames[2]["groupsMarked"].get<uint64_t>(), 0u);
+    EXPECT_EQ(frames[2]["groupsPending"].get<uint64_t>(), 0u);
+}
+
 }  // namespace
 }  // namespace vkp

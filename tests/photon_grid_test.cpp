@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstring>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <random>
 
@@ -11,6 +12,7 @@
 
 #include "gpu_test_support.h"
 #include "passes/photon_grid.h"
+#include "passes/radiance_photons.h"
 #include "passes/prefix_scan.h"
 #include "shared/bsdf.glsl"
 #include "shared/photon.glsl"
@@ -222,6 +224,63 @@ TEST_F(PhotonGridTest, EveryMapPhotonLandsInItsBucketAndRebuildsAreIdentical) {
     EXPECT_EQ(starts2, starts);
     ASSERT_EQ(sorted2.size(), sorted.size());
     EXPECT_EQ(std::memcmp(sorted2.data(), sorted.data(), total * sizeof(gpu::GpuPhoton)), 0);
+}
+
+
+// Radiance photons of a map, and of the same map with one more photon: the radiance photons away
+// from the new photon (farther than the gather radius, not in its bucket) are the same records.
+// Their choice used to be every stride-th photon in grid order, which one photon more shifted over
+// the whole map: an animation's frames then flickered everywhere (docs/benchmarks.md, issue 15).
+TEST_F(PhotonGridTest, RadiancePhotonsChangeOnlyNearAnAddedPhoton) {
+    vk::Context& context = test::gpu();
+    constexpr float kCell = 0.1f, kMaxRadius = 0.05f;  // ~14 photons a cell, most buckets hold more than kStride
+    constexpr uint32_t kStride = 4, kK = 16, kTable = 4096;
+    std::vector<gpu::GpuPhoton> photons = randomPhotons(16000, 9);
+    const glm::vec3 added(0.93f, 0.07f, 0.91f);
+    auto radiance = [&](const std::vector<gpu::GpuPhoton>& input) {
+        vk::Buffer buffer = vk::makeStorageBuffer(context, "test photons", input);
+        PhotonGridSettings settings;
+        settings.cellSize = kCell;
+        settings.tableSize = kTable;
+        PhotonGrid grid(context, buffer, static_cast<uint32_t>(input.size()), settings);
+        context.submitAndWait([&](VkCommandBuffer cmd) {
+            grid.record(cmd);
+            vk::computeToHostBarrier(cmd);
+        });
+        RadiancePhotons rp(context, grid, grid.downloadPhotonCount(), 1.0f, kStride, kK, kMaxRadius);
+        context.submitAndWait([&](VkCommandBuffer cmd) {
+            rp.record(cmd);
+            vk::computeToHostBarrier(cmd);
+        });
+        std::vector<gpu::GpuPhoton> out = rp.grid().photons().download<gpu::GpuPhoton>();
+        out.resize(rp.grid().downloadPhotonCount());
+        std::map<uint32_t, gpu::GpuPhoton> byId;  // randomPhotons keeps a photon's id in lightIndex
+        for (const auto& p : out) byId[p.lightIndex] = p;
+        return std::make_pair(byId, grid.downloadPhotonCount());
+    };
+    const auto [before, photonsBefore] = radiance(photons);
+    photons.push_back(gpu::makePhoton(added, glm::vec3(1.0f), glm::vec3(0, 1, 0), glm::vec3(0, 1, 0), gpu::kPhotonValid,
+                                      static_cast<uint32_t>(photons.size())));
+    const auto [after, photonsAfter] = radiance(photons);
+    ASSERT_EQ(photonsAfter, photonsBefore + 1);
+    EXPECT_GT(before.size(), photonsBefore / (2 * kStride));  // about 1 in kStride, more in sparse buckets
+    EXPECT_LT(before.size(), photonsBefore / 2);
+    const uint32_t addedBucket = gpu::gridHash(gpu::gridCell(added, 1.0f / kCell), kTable - 1);
+    auto away = [&](const gpu::GpuPhoton& p) {
+        return glm::distance(p.position, added) > 2.0f * kMaxRadius &&
+               gpu::gridHash(gpu::gridCell(p.position, 1.0f / kCell), kTable - 1) != addedBucket;
+    };
+    size_t compared = 0, differing = 0;
+    for (const auto& [id, p] : before) {
+        if (!away(p)) continue;
+        ++compared;
+        const auto it = after.find(id);
+        if (it == after.end() || std::memcmp(&it->second, &p, sizeof(p)) != 0) ++differing;
+    }
+    for (const auto& [id, p] : after)
+        if (away(p) && !before.count(id)) ++differing;
+    EXPECT_GT(compared, before.size() / 2);
+    EXPECT_EQ(differing, 0u) << "of " << compared << " radiance photons away from the added photon";
 }
 
 }  // namespace

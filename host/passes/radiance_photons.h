@@ -1,5 +1,6 @@
 // Radiance photons (Christensen 1999, "Faster photon map global illumination"): the pass
-// radiance_photons.comp reads the global map's grid and writes every stride-th photon, and every
+// radiance_photons.comp reads the global map's grid and writes about every stride-th photon
+// (chosen by a hash of its own record: radiancePhotonChosen), the first of every bucket and every
 // photon of a sparse bucket, with the irradiance of its k nearest photons; a grid over them
 // serves final gather rays with one nearest-neighbour lookup instead of a k-nearest estimate per
 // ray.

@@ -26,6 +26,9 @@ struct FrameUpdateInfo {
 struct FramePhotonCounts {
     uint64_t photonPathsTraced = 0;  // every photon path traced for the frame, pilot paths included
     uint64_t groupsRetraced = 0;     // photon groups retraced (0 for a full retrace)
+    uint64_t changedPilots = 0;      // selective: pilot paths whose photons changed since the last frame
+    uint64_t groupsMarked = 0;       // selective: groups with a changed pilot this frame
+    uint64_t groupsPending = 0;      // selective: marked groups left for later frames (budget)
 };
 
 class FrameUpdate {

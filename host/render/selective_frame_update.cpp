@@ -59,6 +59,9 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
     stats.traceSeconds += traceSeconds;
     m_counts.photonPathsTraced += frame.photonPathsTraced;
     m_counts.groupsRetraced += frame.groupsRetraced;
+    m_counts.changedPilots += frame.changedPilots;
+    m_counts.groupsMarked += it->second->markedGroups().size();
+    m_counts.groupsPending += frame.groupsPending;
     return stats;
 }
 

@@ -3,6 +3,8 @@
 #ifndef VKP_PHOTON_RENDER_GLSL
 #define VKP_PHOTON_RENDER_GLSL
 #include "compat.glsl"
+#include "hash.glsl"
+#include "photon.glsl"
 #include "photon_grid.glsl"
 SHARED_BEGIN
 
@@ -16,10 +18,10 @@ struct CausticEstimateParams {
 };
 STATIC_ASSERT_SIZE(CausticEstimateParams, 32)
 
-// radiance_photons.comp (Christensen 1999, "Faster photon map global illumination"): every
-// stride-th photon of the global map gets the irradiance its k nearest photons estimate,
-// E = sum dPhi / (pi r^2), stored as its power (watts per square metre); final gather rays then
-// read the nearest such photon instead of gathering k photons at every hit.
+// radiance_photons.comp (Christensen 1999, "Faster photon map global illumination"): about every
+// stride-th photon of the global map (radiancePhotonChosen) gets the irradiance its k nearest
+// photons estimate, E = sum dPhi / (pi r^2), stored as its power (watts per square metre); final
+// gather rays then read the nearest such photon instead of gathering k photons at every hit.
 struct RadiancePhotonParams {
     PhotonGridView grid;  // the global map
     uint photonCount;     // photons in the global map
@@ -28,6 +30,19 @@ struct RadiancePhotonParams {
     float maxRadius;
 };
 STATIC_ASSERT_SIZE(RadiancePhotonParams, 32)
+
+// Whether a photon of the global map is one of the ~1/stride that become radiance photons (besides
+// the first photon of every bucket and every photon of a bucket holding fewer than stride): a hash
+// of the photon's own record, not its place in the grid. So a photon keeps its choice (and, with
+// the same k nearest, its irradiance) whatever photons arrive or leave elsewhere in the map: an
+// animation's frames that change a few photon paths change the radiance photons only near them.
+// ("Every stride-th in grid order" shifted the choice over the whole map whenever one photon was
+// added or removed, and the whole image flickered between frames; docs/benchmarks.md, issue 15.)
+INLINE bool radiancePhotonChosen(GpuPhoton p, uint stride) {
+    uint h = hashCombine(hashCombine(pcgHash(p.direction), p.normal), p.powerRG);
+    h = hashCombine(hashCombine(h, p.powerBFlags), p.lightIndex);
+    return h % stride == 0u;
+}
 
 // final_gather.comp: one dispatch per gather ray (rayIndex of gatherRays) adds
 // (1 / gatherRays) f cos / pdf * L_global(y) at the visible point; gatherRays = 0 reads the global

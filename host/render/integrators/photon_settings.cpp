@@ -64,7 +64,7 @@ void PhotonIntegratorSettings::addOptions(CLI::App& group) {
         ->capture_default_str();
     group.add_option("--gather-k", gatherK, "Nearest photons per global-map estimate")->capture_default_str();
     group.add_option("--radiance-photons", radiancePhotonStride,
-                     "Every n-th global photon carries a precomputed irradiance estimate that final gathers read "
+                     "About every n-th global photon carries a precomputed irradiance estimate that final gathers read "
                      "(0: a k-nearest estimate at every gather hit)")
         ->capture_default_str();
     group.add_option("--radius", radius,
