@@ -121,20 +121,6 @@ FrameSettings frame(uint32_t spp, uint32_t seed) {
     return s;
 }
 
-// Means over blocks of block x block pixels.
-ImageRgb blockMeans(const ImageRgb& image, uint32_t block) {
-    ImageRgb out;
-    out.width = image.width / block;
-    out.height = image.height / block;
-    out.pixels.assign(size_t(out.width) * out.height * 3, 0.0f);
-    for (uint32_t y = 0; y < out.height * block; ++y)
-        for (uint32_t x = 0; x < out.width * block; ++x)
-            for (int c = 0; c < 3; ++c)
-                out.pixels[3 * ((y / block) * out.width + x / block) + c] +=
-                    image.pixels[3 * (size_t(y) * image.width + x) + c] / float(block * block);
-    return out;
-}
-
 // The pixel where the rough glass sphere focuses the light's centre on the floor (the caustic).
 glm::vec2 causticPixel(const Scene& scene) {
     const glm::vec3 focus = kLightCentre + (kGlassCentre - kLightCentre) * (kLightCentre.y / (kLightCentre.y - kGlassCentre.y));

@@ -34,21 +34,6 @@ FrameSettings smallRender(uint32_t size, uint32_t spp, uint32_t seed) {
     return s;
 }
 
-// Means over blocks of block x block pixels: compares the estimators' expected images with
-// less of the per-pixel noise.
-ImageRgb blockMeans(const ImageRgb& image, uint32_t block) {
-    ImageRgb out;
-    out.width = image.width / block;
-    out.height = image.height / block;
-    out.pixels.assign(size_t(out.width) * out.height * 3, 0.0f);
-    for (uint32_t y = 0; y < out.height * block; ++y)
-        for (uint32_t x = 0; x < out.width * block; ++x)
-            for (int c = 0; c < 3; ++c)
-                out.pixels[3 * ((y / block) * out.width + x / block) + c] +=
-                    image.pixels[3 * (size_t(y) * image.width + x) + c] / float(block * block);
-    return out;
-}
-
 TEST_F(PhotonIntegratorTest, ChunkedMapsEqualOneChunkAndCountEveryStoredPhoton) {
     const Scene scene = test::shippedScene("cornell-glass");
     const SceneArrays arrays = buildSceneArrays(scene);

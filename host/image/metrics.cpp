@@ -34,4 +34,17 @@ double meanLuminance(const ImageRgb& image) {
     return luminance(r, g, b);  // luminance is linear, so the mean of Y is Y of the mean
 }
 
+ImageRgb blockMeans(const ImageRgb& image, uint32_t block) {
+    ImageRgb out;
+    out.width = image.width / block;
+    out.height = image.height / block;
+    out.pixels.assign(size_t(out.width) * out.height * 3, 0.0f);
+    for (uint32_t y = 0; y < out.height * block; ++y)
+        for (uint32_t x = 0; x < out.width * block; ++x)
+            for (int c = 0; c < 3; ++c)
+                out.pixels[3 * ((y / block) * out.width + x / block) + c] +=
+                    image.pixels[3 * (size_t(y) * image.width + x) + c] / float(block * block);
+    return out;
+}
+
 }  // namespace vkp

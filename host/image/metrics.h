@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include "image/image.h"
 
@@ -20,5 +21,9 @@ constexpr double luminance(double r, double g, double b) { return 0.2126 * r + 0
 
 // Mean luminance over all pixels (0 for an empty image).
 double meanLuminance(const ImageRgb& image);
+
+// The means over blocks of block x block pixels (rows and columns past the last whole block are
+// left out): compares estimators' expected images with less of the per-pixel noise.
+ImageRgb blockMeans(const ImageRgb& image, uint32_t block);
 
 }  // namespace vkp
