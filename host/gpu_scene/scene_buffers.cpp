@@ -296,7 +296,16 @@ SceneBuffers::SceneBuffers(vk::Context& context, const SceneArrays& a)
       m_textureArray(std::make_unique<vk::TextureArray>(context, "texture atlas", a.textureAtlas.width,
                                                         a.textureAtlas.height, a.textureAtlas.layers,
                                                         a.textureAtlas.texels)),
-      m_lightCount(static_cast<uint32_t>(a.lights.size())) {}
+      m_lightCount(static_cast<uint32_t>(a.lights.size())), m_specialization(sceneSpecialization(a)) {}
+
+vk::SceneSpecialization sceneSpecialization(const SceneArrays& a) {
+    vk::SceneSpecialization s;
+    s.instances = a.topLevel.header.instanceCount > 0;
+    s.alphaTest = std::any_of(a.triangles.begin(), a.triangles.end(),
+                              [](const gpu::GpuTriangle& t) { return t.v0.w != 0.0f; });
+    s.textures = !a.textures.empty();
+    return s;
+}
 
 TextureLimits deviceTextureLimits(const vk::Context& context, uint32_t maxTextureSize) {
     const vk::TextureArrayLimits device = vk::textureArrayLimits(context);
@@ -323,10 +332,12 @@ vk::KernelBindings SceneBuffers::bindings() const {
     b[gpu::kSceneTexelsBinding] = &m_texels;
     b[gpu::kSceneTablesBinding] = &m_tables;
     b[gpu::kSceneInstancesBinding] = &m_instances;
-    return {b, m_textureArray.get()};
+    return {b, m_textureArray.get(), m_specialization};
 }
 
 void SceneBuffers::updateInstances(const SceneArrays& a) {
+    if ((a.topLevel.header.instanceCount > 0) != m_specialization.instances)  // kernels are specialized for it
+        throw std::logic_error("SceneBuffers::updateInstances: a scene cannot gain or lose its instances");
     const std::vector<uint8_t> bytes = a.instanceBytes();
     m_instances.upload(bytes.data(), bytes.size());
     const uint32_t first = a.topLevel.header.tlasRoot;
