@@ -33,7 +33,7 @@ bool usesSceneSpecialization(std::span<const uint32_t> spirv) {
         if ((spirv[i] & 0xffffu) == kOpDecorate && words >= 4 && i + 3 < spirv.size() &&
             spirv[i + 2] == kDecorationSpecId &&
             (spirv[i + 3] == gpu::kSceneHasInstancesId || spirv[i + 3] == gpu::kSceneHasAlphaTestId ||
-             spirv[i + 3] == gpu::kSceneHasTexturesId))
+             spirv[i + 3] == gpu::kSceneHasTexturesId || spirv[i + 3] == gpu::kSceneLightSamplerId))
             return true;
         i += std::max(words, 1u);
     }
@@ -88,13 +88,13 @@ ComputePipeline::ComputePipeline(const Context& context, const KernelInterface& 
 VkPipeline ComputePipeline::pipeline() const {
     std::call_once(m_compiled, [&] {
         // Entries for constants a shader does not declare are ignored (shaders without a traversal).
-        const VkBool32 values[3] = {m_scene.instances ? VK_TRUE : VK_FALSE, m_scene.alphaTest ? VK_TRUE : VK_FALSE,
-                                    m_scene.textures ? VK_TRUE : VK_FALSE};
-        const VkSpecializationMapEntry entries[3] = {
-            {gpu::kSceneHasInstancesId, 0, sizeof(VkBool32)},
-            {gpu::kSceneHasAlphaTestId, sizeof(VkBool32), sizeof(VkBool32)},
-            {gpu::kSceneHasTexturesId, 2 * sizeof(VkBool32), sizeof(VkBool32)}};
-        const VkSpecializationInfo specialization{3, entries, sizeof(values), values};
+        const uint32_t values[4] = {m_scene.instances ? VK_TRUE : VK_FALSE, m_scene.alphaTest ? VK_TRUE : VK_FALSE,
+                                    m_scene.textures ? VK_TRUE : VK_FALSE, m_scene.lightSampler};
+        const VkSpecializationMapEntry entries[4] = {{gpu::kSceneHasInstancesId, 0, sizeof(VkBool32)},
+                                                     {gpu::kSceneHasAlphaTestId, 4, sizeof(VkBool32)},
+                                                     {gpu::kSceneHasTexturesId, 8, sizeof(VkBool32)},
+                                                     {gpu::kSceneLightSamplerId, 12, sizeof(uint32_t)}};
+        const VkSpecializationInfo specialization{4, entries, sizeof(values), values};
         VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
         pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
         pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -120,9 +120,9 @@ ComputePipeline::~ComputePipeline() {
 const ComputePipeline& ComputePipelineCache::get(const Context& context, const KernelInterface& interface,
                                                  SceneSpecialization scene) {
     if (!usesSceneSpecialization(shaderCode(interface.shader))) scene = {};  // one pipeline for any scene
-    const std::string key = fmt::format("{}|{}|{}|{}|{}{}{}", interface.shader, interface.bindingCount,
+    const std::string key = fmt::format("{}|{}|{}|{}|{}{}{}|{}", interface.shader, interface.bindingCount,
                                         interface.pushBytes, interface.groupSize, int(scene.instances),
-                                        int(scene.alphaTest), int(scene.textures));
+                                        int(scene.alphaTest), int(scene.textures), scene.lightSampler);
     std::lock_guard lock(m_mutex);
     auto& slot = m_pipelines[key];
     if (!slot) {

@@ -21,8 +21,8 @@ namespace vkp::vk {
 class Context;
 
 // Whether SPIR-V declares the scene's specialization constants (gpu::kSceneHasInstancesId,
-// kSceneHasAlphaTestId, kSceneHasTexturesId): kernels that trace rays (shared/bvh_traverse.glsl)
-// or read the scene's textures (scene_access.glsl).
+// kSceneHasAlphaTestId, kSceneHasTexturesId, kSceneLightSamplerId): kernels that trace rays
+// (shared/bvh_traverse.glsl), read the scene's textures or select lights (scene_access.glsl).
 bool usesSceneSpecialization(std::span<const uint32_t> spirv);
 
 class ComputePipeline {
