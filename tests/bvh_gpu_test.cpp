@@ -89,6 +89,21 @@ RayHit bruteForce(const std::vector<gpu::GpuTriangle>& tris, glm::vec3 org, glm:
     return best;
 }
 
+// Rays from inside and outside a scene's bounds, a fifth of them short.
+std::vector<TestRay> raysThrough(const Scene& scene, uint32_t count, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> n(-1.0f, 1.0f);
+    const glm::vec3 c = scene.bounds.center(), e = scene.bounds.extent();
+    std::vector<TestRay> rays;
+    for (uint32_t i = 0; i < count; ++i) {
+        const glm::vec3 o = c + (i % 2 ? 0.45f : 1.5f) * e * glm::vec3(n(rng), n(rng), n(rng));
+        glm::vec3 d(n(rng), n(rng), n(rng));
+        if (glm::length(d) < 1e-3f) d = glm::vec3(0.3f, 0.5f, -0.8f);
+        rays.push_back({glm::vec4(o, i % 5 == 0 ? 0.5f : 1e30f), glm::vec4(glm::normalize(d), 0.0f)});
+    }
+    return rays;
+}
+
 class BvhGpu : public test::GpuTest {};
 
 TEST_F(BvhGpu, ClosestHitEqualsBruteForceOnCornellGlass) {
@@ -168,16 +183,7 @@ TEST_F(BvhGpu, ShadowRaysBetweenFacingQuadsAreUnoccluded) {
 TEST_F(BvhGpu, TwoLevelHitsEqualTheHostTraversal) {
     const Scene scene = test::instancedCornell(50, 21);
     const SceneBvh bvh = buildSceneBvh(scene);
-    std::mt19937 rng(8);
-    std::uniform_real_distribution<float> n(-1.0f, 1.0f);
-    const glm::vec3 c = scene.bounds.center(), e = scene.bounds.extent();
-    std::vector<TestRay> rays;
-    for (uint32_t i = 0; i < 8000; ++i) {
-        const glm::vec3 o = c + (i % 2 ? 0.45f : 1.5f) * e * glm::vec3(n(rng), n(rng), n(rng));
-        glm::vec3 d(n(rng), n(rng), n(rng));
-        if (glm::length(d) < 1e-3f) d = glm::vec3(0.3f, 0.5f, -0.8f);
-        rays.push_back({glm::vec4(o, i % 5 == 0 ? 0.5f : 1e30f), glm::vec4(glm::normalize(d), 0.0f)});
-    }
+    const std::vector<TestRay> rays = raysThrough(scene, 8000, 8);
     const auto hits = traceOnGpu(bvh.arrays(), rays);
     uint32_t instanceHits = 0;
     for (uint32_t i = 0; i < rays.size(); ++i) {
@@ -193,21 +199,6 @@ TEST_F(BvhGpu, TwoLevelHitsEqualTheHostTraversal) {
         EXPECT_EQ(hits[i].b2, host.b2) << "ray " << i;
     }
     EXPECT_GT(instanceHits, 200u);
-}
-
-// Rays from inside and outside a scene's bounds, a fifth of them short.
-std::vector<TestRay> raysThrough(const Scene& scene, uint32_t count, uint32_t seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<float> n(-1.0f, 1.0f);
-    const glm::vec3 c = scene.bounds.center(), e = scene.bounds.extent();
-    std::vector<TestRay> rays;
-    for (uint32_t i = 0; i < count; ++i) {
-        const glm::vec3 o = c + (i % 2 ? 0.45f : 1.5f) * e * glm::vec3(n(rng), n(rng), n(rng));
-        glm::vec3 d(n(rng), n(rng), n(rng));
-        if (glm::length(d) < 1e-3f) d = glm::vec3(0.3f, 0.5f, -0.8f);
-        rays.push_back({glm::vec4(o, i % 5 == 0 ? 0.5f : 1e30f), glm::vec4(glm::normalize(d), 0.0f)});
-    }
-    return rays;
 }
 
 bool sameHits(const std::vector<TestHit>& a, const std::vector<TestHit>& b) {
