@@ -4,12 +4,14 @@
 #include <cstring>
 #include <optional>
 #include <random>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
 #include "bvh/bvh.h"
 #include "bvh/scene_bvh.h"
 #include "gpu_scene/scene_buffers.h"
+#include "shared/light_selection.glsl"
 #include "gpu_test_support.h"
 #include "scene/gltf_loader.h"
 #include "shared/intersect.glsl"
@@ -238,6 +240,22 @@ TEST_F(BvhGpu, SpecializedTraversalsHitWhatTheGenericOneHits) {
 
     arrays.triangles[0].v0.w = 1.0f;  // one alpha-tested triangle
     EXPECT_TRUE(sceneSpecialization(arrays).alphaTest);
+}
+
+// The light sampler a scene's kernels are compiled for is the one its selection data names, and
+// the scene refuses data of another sampler (its kernels could not read it as meant).
+TEST_F(BvhGpu, KernelsAreSpecializedForTheScenesLightSampler) {
+    const Scene glass = loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-glass.gltf");
+    const SceneArrays power = buildSceneArrays(glass);
+    LightSampling bvhSampling;
+    bvhSampling.sampler = LightSampler::Bvh;
+    const SceneArrays bvh = buildSceneArrays(glass, bvhSampling);
+    EXPECT_EQ(sceneSpecialization(power).lightSampler, gpu::kLightSamplerPower);
+    EXPECT_EQ(sceneSpecialization(bvh).lightSampler, gpu::kLightSamplerBvh);
+    SceneBuffers buffers(test::gpu(), power);
+    EXPECT_EQ(buffers.bindings().scene->lightSampler, gpu::kLightSamplerPower);
+    EXPECT_THROW(buffers.replaceLightSelection(test::gpu(), bvh.lightCdf), std::logic_error);
+    EXPECT_TRUE(buffers.replaceLightSelection(test::gpu(), power.lightCdf));
 }
 
 }  // namespace
