@@ -73,6 +73,15 @@ void shadingFrame(vec3 n, vec3 woWorld, out vec3 t, out vec3 b, out vec3 wo) {
     if (wo.z <= 0.0f) wo.z = 1.0e-4f;
 }
 
+// The coat's own normal (SurfaceHit.coatNormal) into the BSDF, in the shading frame (t, b, n)
+// built on the arrival side: the BSDF evaluates and samples its coat lobe around it.
+void applyCoatNormal(inout BsdfParams p, SurfaceHit hit, vec3 t, vec3 b, vec3 n) {
+    if (!hit.hasCoatNormal) return;
+    vec3 coat = dot(n, hit.shadingNormal) < 0.0f ? -hit.coatNormal : hit.coatNormal;
+    p.clearcoatNormal = normalize(toLocal(coat, t, b, n));
+    p.flags |= kBsdfCoatNormal;
+}
+
 // Follows the ray to the closest surface and sets up the vertex there. Returns false when the
 // ray leaves the scene: v.distance is then kInfinity and the escape direction is ray.dir, where
 // light from an environment will be looked up.
@@ -97,6 +106,7 @@ bool traceVertex(Ray ray, out PathVertex v) {
     v.emitted = emittedRadianceOf(v.material, texels);
     v.n = v.hit.frontFace ? v.hit.shadingNormal : -v.hit.shadingNormal;
     shadingFrame(v.n, -ray.dir, v.t, v.b, v.wo);
+    applyCoatNormal(v.bsdf, v.hit, v.t, v.b, v.n);
     return true;
 }
 
