@@ -128,6 +128,36 @@ vec3 evalVertexBsdf(PathVertex v, vec3 wi) {
     return evalBsdf(v.bsdf, v.wo, wi);
 }
 
+// The rough dielectric layer (KHR_materials_transmission with roughness >= kDeltaRoughness,
+// shared/bsdf.glsl) towards local wi on either side, times its share `transmission`, for radiance.
+// sampleBsdf samples the layer as a Dirac (kLobeDelta: full weight, no MIS), so BSDF sampling
+// finds area lights and the environment through it, but never a delta light: only next-event
+// estimation of delta lights adds this term (evalVertexDirect), so nothing is counted twice.
+vec3 evalVertexLayer(PathVertex v, vec3 wi) {
+    if (!(v.bsdf.transmission > 0.0f) || dielectricIsDelta(v.bsdf)) return vec3(0.0f);
+    return v.bsdf.transmission * evalDielectricLayer(v.bsdf, v.wo, wi, v.hit.frontFace, true);
+}
+
+// f of the vertex towards a light sample (local wi), for next-event estimation: the evaluated
+// lobes for light on the arrival side, and for a delta light (`deltaLight`: a point, spot or
+// directional light, not the raster pass's point samples of emitters, which BSDF sampling also
+// finds) the rough dielectric layer on either side (reflection, or transmission through the
+// surface). Zero where the shading and geometric
+// normals disagree about the side. A light inside an absorbing solid (the shadow ray runs behind
+// the geometric normal of a KHR_materials_volume surface) is attenuated by Beer-Lambert.
+vec3 evalVertexDirect(PathVertex v, LightSample ls, vec3 wi, bool deltaLight) {
+    vec3 sideNormal = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
+    bool above = dot(ls.wi, sideNormal) > 0.0f;
+    if ((wi.z > 0.0f) != above) return vec3(0.0f);
+    vec3 f = above ? evalVertexBsdf(v, wi) : vec3(0.0f);
+    if (deltaLight) f += evalVertexLayer(v, wi);
+    vec3 sigma = v.material.attenuationCoeff;
+    if (dot(ls.wi, v.hit.geometricNormal) < 0.0f && maxComponent(sigma) > 0.0f &&
+        (v.material.flags & kMaterialThinWalled) == 0u)
+        f *= exp(-sigma * ls.distance);
+    return f;
+}
+
 // Solid-angle pdf with which sampleVertexBsdf produces local wi through its non-delta lobes.
 float pdfVertexBsdf(PathVertex v, vec3 wi) {
     return pdfBsdf(v.bsdf, v.wo, wi);
