@@ -192,8 +192,8 @@ bool extendPath(inout PathState st) {
     if (bs.lobe == kLobeNone) return false;
     vec3 arriving = st.throughput;
     st.throughput *= bs.weight;
-    st.lastDelta = (bs.lobe & kLobeDelta) != 0u;
-    st.lastPdf = bs.pdf;
+    st.lastDelta = isDeltaForMis(bs);
+    st.lastPdf = st.lastDelta ? bs.pdf : misPdfOfSample(v, bs);
     st.lastPosition = v.hit.position;
     st.lastNormal = v.n;
     spawnRay(v, bs, st.ray);

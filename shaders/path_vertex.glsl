@@ -128,39 +128,66 @@ vec3 evalVertexBsdf(PathVertex v, vec3 wi) {
     return evalBsdf(v.bsdf, v.wo, wi);
 }
 
+// Solid-angle pdf with which sampleVertexBsdf produces local wi through its non-delta lobes.
+float pdfVertexBsdf(PathVertex v, vec3 wi) {
+    return pdfBsdf(v.bsdf, v.wo, wi);
+}
+
 // The rough dielectric layer (KHR_materials_transmission with roughness >= kDeltaRoughness,
-// shared/bsdf.glsl) towards local wi on either side, times its share `transmission`, for radiance.
-// sampleBsdf samples the layer as a Dirac (kLobeDelta: full weight, no MIS), so BSDF sampling
-// finds area lights and the environment through it, but never a delta light: only next-event
-// estimation of delta lights adds this term (evalVertexDirect), so nothing is counted twice.
+// shared/bsdf.glsl) towards local wi on either side, times its share `transmission`, for radiance,
+// and the density with which sampleVertexBsdf produces wi through it. The layer is not in
+// evalBsdf/pdfBsdf (photon estimates leave it out); the camera-path integrators add it for
+// next-event estimation (evalVertexDirect) and weigh its samples (kLobeLayer) against that with
+// the power heuristic over pdfVertexMis, as for every other lobe.
+bool hasRoughLayer(PathVertex v) {
+    return v.bsdf.transmission > 0.0f && !dielectricIsDelta(v.bsdf);
+}
+
 vec3 evalVertexLayer(PathVertex v, vec3 wi) {
-    if (!(v.bsdf.transmission > 0.0f) || dielectricIsDelta(v.bsdf)) return vec3(0.0f);
+    if (!hasRoughLayer(v)) return vec3(0.0f);
     return v.bsdf.transmission * evalDielectricLayer(v.bsdf, v.wo, wi, v.hit.frontFace, true);
 }
 
+float pdfVertexLayer(PathVertex v, vec3 wi) {
+    if (!hasRoughLayer(v)) return 0.0f;
+    return v.bsdf.transmission * pdfDielectricLayer(v.bsdf, v.wo, wi, v.hit.frontFace);
+}
+
+// The density the MIS weights use for BSDF sampling at v towards local wi: the opaque lobes' and
+// the rough layer's (both sides of the power heuristic use this one function).
+float pdfVertexMis(PathVertex v, vec3 wi) {
+    return pdfVertexBsdf(v, wi) + pdfVertexLayer(v, wi);
+}
+
+// That density for a sample sampleVertexBsdf (or the guide) took: its own pdf plus the layer's;
+// a layer sample's is the whole mixture's. Equal to bs.pdf where there is no rough layer.
+float misPdfOfSample(PathVertex v, BsdfSample bs) {
+    if ((bs.lobe & kLobeLayer) != 0u) return pdfVertexMis(v, bs.wi);
+    return bs.pdf + pdfVertexLayer(v, bs.wi);
+}
+
+// The sample is a Dirac for MIS: emission found through it counts in full (smooth mirrors and
+// glass; not the rough layer, which has a density).
+bool isDeltaForMis(BsdfSample bs) {
+    return (bs.lobe & kLobeDelta) != 0u && (bs.lobe & kLobeLayer) == 0u;
+}
+
 // f of the vertex towards a light sample (local wi), for next-event estimation: the evaluated
-// lobes for light on the arrival side, and for a delta light (`deltaLight`: a point, spot or
-// directional light, not the raster pass's point samples of emitters, which BSDF sampling also
-// finds) the rough dielectric layer on either side (reflection, or transmission through the
-// surface). Zero where the shading and geometric
-// normals disagree about the side. A light inside an absorbing solid (the shadow ray runs behind
-// the geometric normal of a KHR_materials_volume surface) is attenuated by Beer-Lambert.
-vec3 evalVertexDirect(PathVertex v, LightSample ls, vec3 wi, bool deltaLight) {
+// lobes for light on the arrival side, and the rough dielectric layer on either side (reflection,
+// or transmission from a light behind the surface). Zero where the shading and geometric normals
+// disagree about the side. A light inside an absorbing solid (the shadow ray runs behind the
+// geometric normal of a KHR_materials_volume surface) is attenuated by Beer-Lambert.
+vec3 evalVertexDirect(PathVertex v, LightSample ls, vec3 wi) {
     vec3 sideNormal = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
     bool above = dot(ls.wi, sideNormal) > 0.0f;
     if ((wi.z > 0.0f) != above) return vec3(0.0f);
     vec3 f = above ? evalVertexBsdf(v, wi) : vec3(0.0f);
-    if (deltaLight) f += evalVertexLayer(v, wi);
+    f += evalVertexLayer(v, wi);
     vec3 sigma = v.material.attenuationCoeff;
     if (dot(ls.wi, v.hit.geometricNormal) < 0.0f && maxComponent(sigma) > 0.0f &&
         (v.material.flags & kMaterialThinWalled) == 0u)
         f *= exp(-sigma * ls.distance);
     return f;
-}
-
-// Solid-angle pdf with which sampleVertexBsdf produces local wi through its non-delta lobes.
-float pdfVertexBsdf(PathVertex v, vec3 wi) {
-    return pdfBsdf(v.bsdf, v.wo, wi);
 }
 
 // Continues the ray from the vertex along the sampled direction: the origin leaves the surface on

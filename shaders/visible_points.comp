@@ -96,8 +96,8 @@ void findVisiblePoint() {
         BsdfSample bs = sampleVertexBsdf(v, true, u);
         if (bs.lobe == kLobeNone) break;
         throughput *= bs.weight;
-        lastDelta = (bs.lobe & kLobeDelta) != 0u;
-        lastPdf = bs.pdf;
+        lastDelta = isDeltaForMis(bs);
+        lastPdf = lastDelta ? bs.pdf : misPdfOfSample(v, bs);
         lastPosition = v.hit.position;
         lastNormal = v.n;
         spawnRay(v, bs, ray);

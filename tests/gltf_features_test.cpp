@@ -722,6 +722,71 @@ TEST_F(GltfFeatures, RasterLightsRoughGlassAsTracedLightDoes) {
     }
 }
 
+// Next-event estimation through rough glass is weighed against BSDF sampling (MIS over the
+// opaque lobes and the rough layer): the same rough glass quad lit by a small area light (a 0.3 x
+// 0.3 emitter at y = 0.6 facing down, off to the side; back-face culled, so the camera does not see
+// it), seen from above (its glossy reflection) and from below (the light through it). The path
+// tracer's image with next-event estimation must have the mean of BSDF sampling alone (within
+// four standard errors over 4 seeds each) and less noise (seed-to-seed relMSE).
+TEST_F(GltfFeatures, RoughGlassUnderAnAreaLightMatchesBsdfSampling) {
+    for (const bool below : {false, true}) {
+        QuadDoc q;
+        q.material() = {{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0.3}}},
+                        {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}};
+        q.doc()["nodes"][2].erase("extensions");  // no directional light
+        q.doc()["extensions"].erase("KHR_lights_punctual");
+        // The emitter: corners counter-clockwise seen from below (facing -y).
+        const float p[12] = {0.3f, 0.6f, -0.15f, 0.6f, 0.6f, -0.15f, 0.6f, 0.6f, 0.15f, 0.3f, 0.6f, 0.15f};
+        const float n[12] = {0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1, 0};
+        const uint16_t idx[6] = {0, 1, 2, 0, 2, 3};
+        json light;
+        light["attributes"]["POSITION"] = q.accessor(QuadDoc::bytes(p, sizeof p), 5126, "VEC3", false);
+        q.doc()["accessors"].back()["min"] = {0.3, 0.6, -0.15};
+        q.doc()["accessors"].back()["max"] = {0.6, 0.6, 0.15};
+        light["attributes"]["NORMAL"] = q.accessor(QuadDoc::bytes(n, sizeof n), 5126, "VEC3", false);
+        light["indices"] = q.accessor(QuadDoc::bytes(idx, sizeof idx), 5123, "SCALAR", false);
+        light["material"] = 1;
+        q.doc()["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}}},
+                                        {"emissiveFactor", {1, 1, 1}},
+                                        {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 5.0}}}}}});
+        q.doc()["meshes"].push_back({{"primitives", {light}}});
+        q.doc()["nodes"].push_back({{"mesh", 1}});
+        q.doc()["scenes"][0]["nodes"].push_back(3);
+        const double r = std::sqrt(0.5);
+        if (below) q.doc()["nodes"][1] = {{"camera", 0}, {"translation", {0, -2, 0}}, {"rotation", {r, 0, 0, r}}};
+        const Scene scene = load(q);
+        Renderer renderer(test::gpu(), scene);
+        const auto render = [&](bool nee, uint32_t seed) {
+            FrameSettings s;
+            s.width = kSize;
+            s.height = kSize;
+            s.samplesPerPixel = 64;
+            s.seed = seed;
+            s.nextEventEstimation = nee;
+            return renderer.render<PathIntegrator>(s).image;
+        };
+        double mean[2], error[2], noise[2];
+        for (const bool nee : {false, true}) {
+            std::vector<ImageRgb> images;
+            for (uint32_t seed = 1; seed <= 4; ++seed) images.push_back(render(nee, seed));
+            double sum = 0.0, sum2 = 0.0;
+            for (const ImageRgb& image : images) {
+                const double m = meanLuminance(image);
+                sum += m;
+                sum2 += m * m;
+            }
+            mean[nee] = sum / 4.0;
+            error[nee] = std::sqrt(std::max(0.0, sum2 / 4.0 - mean[nee] * mean[nee]) / 3.0);
+            noise[nee] = relativeMse(images[0], images[1]);
+        }
+        std::printf("%s: mean BSDF sampling %.5f +- %.5f, with NEE %.5f +- %.5f; relMSE seed to seed %.4g / %.4g\n",
+                    below ? "below" : "above", mean[0], error[0], mean[1], error[1], noise[0], noise[1]);
+        EXPECT_GT(mean[0], 0.002) << "the light must reach the image";
+        EXPECT_LT(std::abs(mean[1] - mean[0]), 4.0 * std::hypot(error[0], error[1]) + 1e-4 * mean[0]);
+        EXPECT_LT(noise[1], noise[0]) << "next-event estimation must lower the noise";
+    }
+}
+
 // KHR_materials_transmission's transmissionTexture: its R channel (linear) multiplies
 // transmissionFactor. The quad is thin-walled (no KHR_materials_volume) of ior 1, so its dielectric
 // layer reflects nothing (Fresnel 0) and sends everything on below, where there is nothing: a pixel

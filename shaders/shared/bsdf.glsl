@@ -33,6 +33,10 @@ const uint kLobeDiffuse = 1u;
 const uint kLobeGlossy = 2u;
 const uint kLobeDelta = 4u;          // a Dirac lobe: pdf is not a density, excluded from MIS
 const uint kLobeTransmission = 8u;
+// A sample of the rough dielectric layer: kLobeDelta for the kernels that take it at full weight
+// (photons, importons, final gathers), and with this bit the camera-path integrators know it has
+// a density (pdfDielectricLayer) to weigh it against next-event estimation with.
+const uint kLobeLayer = 16u;
 
 const uint kBsdfNoEnergyCompensation = 1u;  // BsdfParams.flags: the spec's plain single-scattering GGX
 // BsdfParams.flags: the coat has its own normal, clearcoatNormal (KHR_materials_clearcoat's
@@ -377,10 +381,11 @@ INLINE float pdfDielectricLayer(BsdfParams p, vec3 wo, vec3 wi, bool entering) {
 }
 
 // Samples the rough dielectric layer (roughness >= kDeltaRoughness). Its samples are distributed by
-// pdfDielectricLayer but the lobe is flagged kLobeDelta: evalBsdf and light sampling
-// do not see the dielectric layer, so integrators must take its samples at full weight (as a
-// mirror's), and photon paths pass through it like through smooth glass. Rough reflection off the
-// layer is kLobeDelta too, transmission adds kLobeTransmission.
+// pdfDielectricLayer but the lobe is flagged kLobeDelta: evalBsdf does not include the dielectric
+// layer, so integrators must take its samples at full weight (as a mirror's), and photon paths
+// pass through it like through smooth glass. Rough reflection off the layer is kLobeDelta too,
+// transmission adds kLobeTransmission; both carry kLobeLayer, with which the camera-path
+// integrators weigh them against next-event estimation (path_vertex.glsl evalVertexDirect).
 INLINE BsdfSample sampleRoughDielectricLayer(BsdfParams p, vec3 wo, bool entering, bool radiance, vec3 u) {
     BsdfSample s;
     s.lobe = kLobeNone;
@@ -396,10 +401,10 @@ INLINE BsdfSample sampleRoughDielectricLayer(BsdfParams p, vec3 wo, bool enterin
     // pdf stays 0 as for every kLobeDelta sample (pdfDielectricLayer has the layer's density).
     if (s.wi.z > 0.0f) {
         s.weight = vec3(w);
-        s.lobe = kLobeDelta;
+        s.lobe = kLobeDelta | kLobeLayer;
     } else {
         s.weight = p.baseColor * w;
-        s.lobe = kLobeDelta | kLobeTransmission;
+        s.lobe = kLobeDelta | kLobeTransmission | kLobeLayer;
     }
     return s;
 }
