@@ -22,6 +22,7 @@
 #include "image/metrics.h"
 #include "render/integrators/path_integrator.h"
 #include "render/integrators/photon_integrator.h"
+#include "render/integrators/progressive_photon_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "scene/gltf_tangents.h"
@@ -785,6 +786,52 @@ TEST_F(GltfFeatures, RoughGlassUnderAnAreaLightMatchesBsdfSampling) {
         EXPECT_LT(std::abs(mean[1] - mean[0]), 4.0 * std::hypot(error[0], error[1]) + 1e-4 * mean[0]);
         EXPECT_LT(noise[1], noise[0]) << "next-event estimation must lower the noise";
     }
+}
+
+// A partly transmissive surface in front of an emitter: a smooth thin-walled quad (transmission
+// 0.5, ior 1: no Fresnel, so the dielectric share passes everything) at y = 0.5 over an emissive
+// floor of radiance 1 facing up (the QuadDoc quad, black), no other light. Seen from above, each
+// pixel is 0.5 (the transmitted share of the floor; the opaque white share faces away from the
+// floor and is unlit): for the path tracer and every photon integrator.
+TEST_F(GltfFeatures, PartlyTransmissiveSurfaceShowsWhatIsBehindIt) {
+    QuadDoc q;
+    q.doc()["nodes"][2].erase("extensions");  // no directional light
+    q.doc()["extensions"].erase("KHR_lights_punctual");
+    q.material() = {{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}}}, {"emissiveFactor", {1, 1, 1}}};
+    const float p[12] = {-2, 0.5f, 2, 2, 0.5f, 2, 2, 0.5f, -2, -2, 0.5f, -2};
+    const float n[12] = {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0};
+    const uint16_t idx[6] = {0, 1, 2, 0, 2, 3};
+    json glass;
+    glass["attributes"]["POSITION"] = q.accessor(QuadDoc::bytes(p, sizeof p), 5126, "VEC3", false);
+    q.doc()["accessors"].back()["min"] = {-2, 0.5, -2};
+    q.doc()["accessors"].back()["max"] = {2, 0.5, 2};
+    glass["attributes"]["NORMAL"] = q.accessor(QuadDoc::bytes(n, sizeof n), 5126, "VEC3", false);
+    glass["indices"] = q.accessor(QuadDoc::bytes(idx, sizeof idx), 5123, "SCALAR", false);
+    glass["material"] = 1;
+    q.doc()["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0}}},
+                                    {"extensions",
+                                     {{"KHR_materials_transmission", {{"transmissionFactor", 0.5}}},
+                                      {"KHR_materials_ior", {{"ior", 1.0}}}}}});
+    q.doc()["meshes"].push_back({{"primitives", {glass}}});
+    q.doc()["nodes"].push_back({{"mesh", 1}});
+    q.doc()["scenes"][0]["nodes"].push_back(3);
+    const Scene scene = load(q);
+    const double path = meanLuminance(pathTraced(scene, 16));
+    const double photon = meanLuminance(photonMapped(scene));
+    Renderer renderer(test::gpu(), scene);
+    FrameSettings s;
+    s.width = kSize;
+    s.height = kSize;
+    s.samplesPerPixel = 8;
+    s.seed = 3;
+    PhotonIntegratorSettings photons;
+    photons.globalPaths = 20000;
+    photons.causticPaths = 0;
+    const double progressive = meanLuminance(renderer.render<ProgressivePhotonIntegrator>(s, photons).image);
+    std::printf("path tracer %.4f, photon integrator %.4f, progressive %.4f (expected 0.5)\n", path, photon, progressive);
+    EXPECT_NEAR(path, 0.5, 0.01);
+    EXPECT_NEAR(photon, 0.5, 0.01);  // 0 when the visible point ended every camera path there
+    EXPECT_NEAR(progressive, 0.5, 0.01);
 }
 
 // KHR_materials_transmission's transmissionTexture: its R channel (linear) multiplies
