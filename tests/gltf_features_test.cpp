@@ -911,6 +911,48 @@ TEST_F(GltfFeatures, SingleSidedBackFacesAreInvisibleToTheCamera) {
         EXPECT_NEAR(closestHit(arrays.bvhArrays(), {0.3f, 2.0f, -0.2f}, {0.0f, -1.0f, 0.0f}, 1e30f).t, 1.0f, 1e-4f)
             << name << ": host ray, not from the camera";
     }
+    // The mirrored occluder as an instance (the two-level BVH's culling, which flips the winding
+    // of instances with kInstanceMirrored): a 64-triangle version of it, drawn twice (the second
+    // copy far out of view), so the loader instances it.
+    {
+        QuadDoc q;
+        q.doc()["scenes"][0]["nodes"] = {0, 1};  // no light: the floor's emission only
+        q.material()["pbrMetallicRoughness"]["baseColorFactor"] = {0, 0, 0, 1};
+        q.material()["emissiveFactor"] = {0.5, 0.5, 0.5};
+        std::vector<float> positions, normals;
+        std::vector<uint16_t> indices;
+        for (int j = 0; j <= 4; ++j)
+            for (int i = 0; i <= 8; ++i) {
+                positions.insert(positions.end(), {-1.0f + i / 4.0f, 0.0f, 1.0f - j / 2.0f});
+                normals.insert(normals.end(), {0.0f, 1.0f, 0.0f});
+            }
+        for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 8; ++i) {
+                const uint16_t a = uint16_t(j * 9 + i), b = uint16_t(a + 1), c = uint16_t(a + 10), d = uint16_t(a + 9);
+                indices.insert(indices.end(), {a, b, c, a, c, d});  // counter-clockwise seen from +y
+            }
+        json primitive;
+        primitive["attributes"]["POSITION"] =
+            q.accessor(QuadDoc::bytes(positions.data(), positions.size() * 4), 5126, "VEC3", false, 45);
+        q.doc()["accessors"].back()["min"] = {-1, 0, -1};
+        q.doc()["accessors"].back()["max"] = {1, 0, 1};
+        primitive["attributes"]["NORMAL"] = q.accessor(QuadDoc::bytes(normals.data(), normals.size() * 4), 5126, "VEC3", false, 45);
+        primitive["indices"] = q.accessor(QuadDoc::bytes(indices.data(), indices.size() * 2), 5123, "SCALAR", false);
+        q.doc()["accessors"].back()["count"] = indices.size();
+        primitive["material"] = 1;
+        q.doc()["meshes"].push_back({{"primitives", {primitive}}});
+        q.doc()["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}, {"metallicFactor", 0}}},
+                                        {"extensions", {{"KHR_materials_ior", {{"ior", 1.0}}}}}});
+        q.doc()["nodes"].push_back({{"mesh", 1}, {"translation", {0, 1, 0}}, {"scale", {1.2, -1, 1.2}}});
+        q.doc()["nodes"].push_back({{"mesh", 1}, {"translation", {50, 1, 0}}});
+        q.doc()["scenes"][0]["nodes"].push_back(3);
+        q.doc()["scenes"][0]["nodes"].push_back(4);
+        const Scene s = load(q);
+        ASSERT_EQ(s.instances.size(), 2u) << "the occluder must be drawn by instances";
+        expectEverywhere(pathTraced(s), 0.5f, 1e-3f, "back face (mirrored instance), single-sided");
+        q.doc()["materials"][1]["doubleSided"] = true;
+        expectEverywhere(pathTraced(load(q)), 0.0f, kBlackOccluder, "back face (mirrored instance), double-sided");
+    }
     // A transmissive single-sided occluder seen from its back is hit by camera rays.
     const SceneArrays glass = buildSceneArrays(scene(down, false, true));
     EXPECT_NEAR(closestHit(glass.bvhArrays(), {0.3f, 2.0f, -0.2f}, {0.0f, -1.0f, 0.0f}, 1e30f, true).t, 1.0f, 1e-4f)
