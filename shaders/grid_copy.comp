@@ -7,6 +7,6 @@
 layout(local_size_x = kGridGroupSize) in;
 
 void main() {
-    uint i = gl_GlobalInvocationID.x;
-    if (i < cellStart[params.tableMask + 1u]) gridPhotons[i] = photons[sortedSlots[i]];
+    uint i = itemIndex();
+    if (i < cellStart[params.tableMask + 1u]) GRID_PHOTON(i) = PHOTON(SORTED_SLOT(i));
 }

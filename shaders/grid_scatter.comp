@@ -9,8 +9,8 @@
 layout(local_size_x = kGridGroupSize) in;
 
 void main() {
-    uint slot = gl_GlobalInvocationID.x;
+    uint slot = itemIndex();
     if (slot >= params.slotCount) return;
     uint bucket = bucketOfSlot(slot);
-    if (bucket != ~0u) sortedSlots[atomicAdd(cursor[bucket], 1u)] = slot;
+    if (bucket != ~0u) SORTED_SLOT(atomicAdd(cursor[bucket], 1u)) = slot;
 }

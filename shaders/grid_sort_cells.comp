@@ -14,7 +14,7 @@ layout(local_size_x = kGridGroupSize) in;
 const uint kGaps[8] = uint[8](701u, 301u, 132u, 57u, 23u, 10u, 4u, 1u);
 
 void sortBucket() {
-    uint bucket = gl_GlobalInvocationID.x;
+    uint bucket = itemIndex();
     if (bucket > params.tableMask) return;
     uint begin = cellStart[bucket];
     uint end = cellStart[bucket + 1u];
@@ -28,13 +28,13 @@ void sortBucket() {
         rowsDue += max(n, gap) - gap;
         for (uint i = gap; i < n; ++i) {
             rows += 1u;
-            uint value = sortedSlots[begin + i];
+            uint value = SORTED_SLOT(begin + i);
             uint j = i;
-            while (j >= gap && sortedSlots[begin + j - gap] > value) {
-                sortedSlots[begin + j] = sortedSlots[begin + j - gap];
+            while (j >= gap && SORTED_SLOT(begin + j - gap) > value) {
+                SORTED_SLOT(begin + j) = SORTED_SLOT(begin + j - gap);
                 j -= gap;
             }
-            sortedSlots[begin + j] = value;
+            SORTED_SLOT(begin + j) = value;
         }
     }
     noteLoopCut(passes, 8u);
