@@ -22,10 +22,10 @@
 
 layout(std430, set = 0, binding = PHOTON_GRID_BINDING) readonly buffer GridCellStart { uint gridCellStart[]; };
 // The grid's photons: a segmented array (segmented.glsl), so a map may outgrow one buffer.
-layout(std430, set = 0, binding = PHOTON_GRID_BINDING + 1) readonly buffer GridPhotons { SEGMENT_TABLE(PhotonSegment) } gridPhotonTable;
+layout(std430, set = 0, binding = PHOTON_GRID_BINDING + 1) readonly buffer GridPhotons { SEGMENT_TABLE } gridPhotonTable;
 
 // The grid's i-th photon (bucket order).
-GpuPhoton gridPhoton(uint i) { return SEGMENTED(gridPhotonTable, i); }
+GpuPhoton gridPhoton(uint i) { return PHOTON_AT(gridPhotonTable, i); }
 
 // Queries visit at most this many cells per axis (a radius far above the cell size is clamped).
 const int kMaxGatherCellsPerAxis = 8;

@@ -19,7 +19,7 @@
 
 layout(local_size_x = kPhotonEstimateGroupSize) in;
 
-layout(std430, set = 0, binding = kRadiancePhotonsOutputBinding) readonly buffer RadiancePhotons { SEGMENT_TABLE(PhotonSegment) } radiancePhotonTable;
+layout(std430, set = 0, binding = kRadiancePhotonsOutputBinding) readonly buffer RadiancePhotons { SEGMENT_TABLE } radiancePhotonTable;
 
 layout(push_constant) uniform Push { RadiancePhotonParams params; };
 
@@ -35,7 +35,7 @@ void radiancePhoton() {
     uint inBucket = gridCellStart[bucket + 1u] - gridCellStart[bucket];
     bool chosen = inBucket < params.stride || source == gridCellStart[bucket] || radiancePhotonChosen(p, params.stride);
     if (!chosen) {
-        SEGMENTED(radiancePhotonTable, source) = makePhoton(vec3(0.0f), vec3(0.0f), vec3(0.0f, 0.0f, 1.0f), vec3(0.0f, 0.0f, 1.0f), 0u, 0u);
+        PHOTON_AT(radiancePhotonTable, source) = makePhoton(vec3(0.0f), vec3(0.0f), vec3(0.0f, 0.0f, 1.0f), vec3(0.0f, 0.0f, 1.0f), 0u, 0u);
         return;
     }
     vec3 n = decodeOctahedral(p.normal);
@@ -44,7 +44,7 @@ void radiancePhoton() {
     vec3 sum = vec3(0.0f);
     for (uint j = 0u; j < found; ++j) sum += photonRelativePower(gridPhoton(heapIndex[j]));
     vec3 irradiance = sum * (params.grid.photonPower / (kPi * radius2));
-    SEGMENTED(radiancePhotonTable, source) = makePhoton(p.position, irradiance, n, n, kPhotonValid, p.lightIndex);
+    PHOTON_AT(radiancePhotonTable, source) = makePhoton(p.position, irradiance, n, n, kPhotonValid, p.lightIndex);
 }
 
 void main() {
