@@ -8,5 +8,7 @@ layout(local_size_x = kGridGroupSize) in;
 
 void main() {
     uint i = itemIndex();
-    if (i < cellStart[params.tableMask + 1u]) GRID_PHOTON(i) = PHOTON(SORTED_SLOT(i));
+    if (i >= cellStart[params.tableMask + 1u]) return;
+    uint slot = SORTED_SLOT(i);
+    GRID_PHOTON(i) = PHOTON(slot);
 }

@@ -12,5 +12,7 @@ void main() {
     uint slot = itemIndex();
     if (slot >= params.slotCount) return;
     uint bucket = bucketOfSlot(slot);
-    if (bucket != ~0u) SORTED_SLOT(atomicAdd(cursor[bucket], 1u)) = slot;
+    if (bucket == ~0u) return;
+    uint sorted = atomicAdd(cursor[bucket], 1u);  // once: SORTED_SLOT names its index twice
+    SORTED_SLOT(sorted) = slot;
 }

@@ -2,7 +2,8 @@
 // table, a header and the device address of each segment of 2^segmentShift elements; element i
 // is items[i & segmentMask] of segment i >> segmentShift. Declare a table with
 //   layout(std430, set = 0, binding = B) readonly buffer Name { SEGMENT_TABLE } name;
-// and reach its elements, to read or write, with PHOTON_AT(name, i) or UINT_AT(name, i).
+// and reach its elements, to read or write, with PHOTON_AT(name, i) or UINT_AT(name, i): macros
+// that name i twice, so i must be free of side effects (no atomicAdd in it).
 // Addresses are uvec2 (GL_EXT_buffer_reference_uvec2): an array of reference types in a block
 // makes glslang declare RuntimeDescriptorArray, which the validation layer rejects.
 #ifndef VKP_SEGMENTED_GLSL
