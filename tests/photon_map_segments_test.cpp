@@ -97,7 +97,7 @@ TEST_F(PhotonMapSegmentsTest, MapPastFourMillionPhotonsKeepsThemAll) {
     const SceneArrays arrays = buildSceneArrays(scene);
     const SceneBuffers buffers(test::gpu(), arrays);
     PhotonMapSettings settings;
-    settings.paths = 3000000;  // about 1.46 photons per path on cornell-glass
+    settings.paths = 2700000;  // about 1.64 photons per path on cornell-glass: 4.4 M photons
     settings.seed = 1;
     settings.cellSize = 0.02f;
     PhotonMap map(test::gpu(), scene, arrays, buffers, settings);
