@@ -104,33 +104,38 @@ double gatherRate(vk::Context& context, const PhotonMap& map, uint32_t queries, 
 
 // Maps of about `millions` M photons each (paths from a pilot map's photons per path): one build
 // each (tracing + compaction, grid), the device memory of the map and its grid, and gathers at
-// 2^18 photons spread over the whole map (cell size 0.03 m, as above).
+// 2^18 photons spread over the whole map. The cell size follows the map's density as the photon
+// integrator's does (the radius of a disk holding 32 photons if they spread evenly over the
+// scene's surfaces): fixed-radius sums within one cell, 32 nearest within two, the nearest within
+// one, so each query visits about as many photons whatever the map's size.
 void benchMapSizes(vk::Context& context, const Scene& scene, const std::vector<uint32_t>& millions) {
     const SceneArrays arrays = buildSceneArrays(scene);
     const SceneBuffers buffers(context, arrays);
     PhotonMapSettings settings;
-    settings.cellSize = 0.03f;
     settings.paths = 100000;
+    const double area = sceneSurfaceArea(arrays);
+    settings.cellSizeFor = [area](uint64_t photons) { return evenSpreadRadius(32, photons, area); };
     double photonsPerPath = 0.0;
     {
         PhotonMap pilot(context, scene, arrays, buffers, settings);
         photonsPerPath = double(pilot.build(0).stored) / settings.paths;
     }
     fmt::print("\n### Photon maps of millions of photons ({:.3f} photons per path)\n\n", photonsPerPath);
-    fmt::print("| photons stored | paths | buffers (map) | trace + compaction | grid build | map + grid memory | "
-               "fixed r 0.03 | 32 nearest | nearest |\n|---|---|---|---|---|---|---|---|---|\n");
+    fmt::print("| photons stored | paths | buffers (map) | trace + compaction | grid build | map + grid memory | cell r | "
+               "fixed radius r | 32 nearest within 2r | nearest within r |\n|---|---|---|---|---|---|---|---|---|---|\n");
     for (uint32_t m : millions) {
         settings.paths = static_cast<uint32_t>(std::ceil(m * 1e6 / photonsPerPath));
         PhotonMap map(context, scene, arrays, buffers, settings);
         const PhotonMapStats stats = map.build(0);
         const uint32_t queries = static_cast<uint32_t>(std::min<uint64_t>(stats.stored, 1u << 18));
         const uint32_t stride = static_cast<uint32_t>(std::max<uint64_t>(1, stats.stored / queries));
-        const double fixed = gatherRate(context, map, queries, stride, 0, 0, 0.03f);
-        const double nearestK = gatherRate(context, map, queries, stride, 1, 32, 0.06f);
-        const double nearest = gatherRate(context, map, queries, stride, 2, 1, 0.03f);
-        fmt::print("| {} | {} | {} | {:.1f} s | {:.1f} s | {:.0f} MiB | {:.3f} M/s | {:.3f} M/s | {:.3f} M/s |\n",
+        const float r = stats.cellSize;
+        const double fixed = gatherRate(context, map, queries, stride, 0, 0, r);
+        const double nearestK = gatherRate(context, map, queries, stride, 1, 32, 2.0f * r);
+        const double nearest = gatherRate(context, map, queries, stride, 2, 1, r);
+        fmt::print("| {} | {} | {} | {:.1f} s | {:.1f} s | {:.0f} MiB | {:.4f} m | {:.3f} M/s | {:.3f} M/s | {:.3f} M/s |\n",
                    stats.stored, settings.paths, (stats.stored + map.segmentPhotons() - 1) / map.segmentPhotons(),
-                   stats.traceSeconds, stats.gridSeconds, stats.bytes / 1048576.0, fixed / 1e6, nearestK / 1e6,
+                   stats.traceSeconds, stats.gridSeconds, stats.bytes / 1048576.0, r, fixed / 1e6, nearestK / 1e6,
                    nearest / 1e6);
         std::fflush(stdout);
     }

@@ -35,8 +35,11 @@ PhotonGrid::PhotonGrid(vk::Context& context, const vk::SegmentedBuffer& photons,
       }()),
       m_cellStart(context, "photon grid cell starts", (m_params.tableMask + 2) * sizeof(uint32_t), vk::kStorageUsage),
       m_cursor(context, "photon grid cursors", (m_params.tableMask + 1) * sizeof(uint32_t), vk::kStorageUsage),
-      m_sortedSlots(context, "photon grid sorted slots", sizeof(uint32_t), slotCount, segmentShift),
-      m_gridPhotons(context, "photon grid photons", sizeof(gpu::GpuPhoton), slotCount, segmentShift),
+      // As many elements per segment as the input's: the arrays grow in the same steps.
+      m_sortedSlots(context, "photon grid sorted slots", sizeof(uint32_t), slotCount,
+                    segmentShift ? segmentShift : photons.segmentShift()),
+      m_gridPhotons(context, "photon grid photons", sizeof(gpu::GpuPhoton), slotCount,
+                    segmentShift ? segmentShift : photons.segmentShift()),
       m_scan(context, m_cellStart, m_params.tableMask + 2),
       m_count(context), m_scatter(context), m_sortCells(context), m_copy(context) {
     setCellSize(settings.cellSize);

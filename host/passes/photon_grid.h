@@ -27,7 +27,8 @@ struct PhotonGridSettings {
 class PhotonGrid {
 public:
     // A grid over up to `slotCount` photon slots of `photons` (empty slots are skipped), at first
-    // over those `photons` has allocated (resize changes that). The table's size follows slotCount.
+    // over those `photons` has allocated (resize changes that). The table's size follows slotCount;
+    // the grid's arrays have segments of 2^segmentShift elements (0: as many as the input's).
     PhotonGrid(vk::Context& context, const vk::SegmentedBuffer& photons, uint32_t slotCount,
                const PhotonGridSettings& settings, uint32_t segmentShift = 0);
 
