@@ -250,7 +250,7 @@ int runPhotons(const PhotonsCommandOptions& options) {
     const double seconds = stats.traceSeconds;
     writePhotonPly(output, map.downloadPhotons(), map.photonPower());
     if (stats.dropped > 0)
-        fmt::print(stderr, "warning: {} photon(s) did not fit the map ({} photons at most on this device)\n",
+        fmt::print(stderr, "warning: {} photon(s) did not fit the map ({} photons at most: paths x --max-deposits, 2^31)\n",
                    stats.dropped, map.capacity());
     Stats terminations;  // the context's counters start at zero: importons and photons of this run
     reportTerminations(readTerminations(context), terminations);
