@@ -59,7 +59,7 @@ vec3 gatherRay(GpuVisiblePoint vp, VisibleSurface s, inout Sampler rng) {
             float radius2;
             if (gatherNearest(params.grid, v.hit.position, v.n, 1u, params.lookupRadius, 0u, 0u, radius2) == 0u)
                 return vec3(0.0f);
-            vec3 irradiance = photonRelativePower(gridPhotons[heapIndex[0]]) * params.grid.photonPower;
+            vec3 irradiance = photonRelativePower(gridPhoton(heapIndex[0])) * params.grid.photonPower;
             return weight * diffuseReflectance(v.bsdf, v.wo) * irradiance;
         }
         if (throughLayer) v.bsdf.transmission = 1.0f;

@@ -113,7 +113,7 @@ BsdfSample sampleGuided(PathVertex v, vec3 u, float uSelect, out vec4 irradiance
     uint found = gatherNearest(guide.grid, v.hit.position, v.n, guide.k, guide.maxRadius, 0u, kPhotonPrimary, radius2);
     vec3 flux = vec3(0.0f);
     for (uint j = 0u; j < found; ++j) {
-        GpuPhoton p = gridPhotons[heapIndex[j]];
+        GpuPhoton p = gridPhoton(heapIndex[j]);
         vec3 wi = toLocal(decodeOctahedral(p.direction), v.t, v.b, v.n);
         guideAdd(cells, gm, gn, wi, luminance(evalVertexBsdf(v, wi) * photonRelativePower(p)));
         flux += photonRelativePower(p);
