@@ -1,11 +1,14 @@
 // Photon map benchmark: grid build time per million photons, gather queries per second (fixed
-// radius, k nearest, one nearest), and image error against time for the path tracer and the
-// photon integrator (two-pass and progressive) on one scene. Usage:
+// radius, k nearest, one nearest), maps of millions of photons (--map-photons: build time,
+// gather rate, memory), and image error against time for the path tracer and the photon
+// integrator (two-pass and progressive) on one scene. Usage:
 //   build/bench/photon_map_bench [SCENE] [--size N --reference-spp N --reference FILE.exr
-//                                 --max-seconds S --repeat R --device D]
+//                                 --max-seconds S --repeat R --device D --map-photons 4,16,64
+//                                 --skip-grid --skip-convergence]
 // Prints Markdown tables for docs/benchmarks.md. The reference (path tracer, --reference-spp) is
 // written to --reference when that file does not exist and read from it when it does.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <vector>
 
@@ -84,6 +87,60 @@ void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_
     }
 }
 
+// Gather queries per second at `queries` photons spread over the map's grid (every stride-th).
+double gatherRate(vk::Context& context, const PhotonMap& map, uint32_t queries, uint32_t stride, uint32_t mode,
+                  uint32_t k, float radius) {
+    vk::Buffer results(context, "results", std::max<VkDeviceSize>(16, queries * sizeof(float)), vk::kStorageUsage);
+    vk::Kernel<gpu::GatherBenchKernel> kernel(context);
+    kernel.bind(gpu::kGatherBenchGridBinding, map.grid().cellStart());
+    kernel.bind(gpu::kGatherBenchGridBinding + 1, map.grid().photons());
+    kernel.bind(gpu::kGatherBenchResultBinding, results);
+    gpu::GatherBenchParams push{map.grid().view(map.photonPower()), queries, stride, mode, k, radius};
+    context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, queries / 16, push); });  // warm-up
+    const auto start = Clock::now();
+    context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, queries, push); });
+    return queries / secondsSince(start);
+}
+
+// Maps of about `millions` M photons each (paths from a pilot map's photons per path): one build
+// each (tracing + compaction, grid), the device memory of the map and its grid, and gathers at
+// 2^18 photons spread over the whole map. The cell size follows the map's density as the photon
+// integrator's does (the radius of a disk holding 32 photons if they spread evenly over the
+// scene's surfaces): fixed-radius sums within one cell, 32 nearest within two, the nearest within
+// one, so each query visits about as many photons whatever the map's size.
+void benchMapSizes(vk::Context& context, const Scene& scene, const std::vector<uint32_t>& millions) {
+    const SceneArrays arrays = buildSceneArrays(scene);
+    const SceneBuffers buffers(context, arrays);
+    PhotonMapSettings settings;
+    settings.paths = 100000;
+    const double area = sceneSurfaceArea(arrays);
+    settings.cellSizeFor = [area](uint64_t photons) { return evenSpreadRadius(32, photons, area); };
+    double photonsPerPath = 0.0;
+    {
+        PhotonMap pilot(context, scene, arrays, buffers, settings);
+        photonsPerPath = double(pilot.build(0).stored) / settings.paths;
+    }
+    fmt::print("\n### Photon maps of millions of photons ({:.3f} photons per path)\n\n", photonsPerPath);
+    fmt::print("| photons stored | paths | buffers (map) | trace + compaction | grid build | map + grid memory | cell r | "
+               "fixed radius r | 32 nearest within 2r | nearest within r |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    for (uint32_t m : millions) {
+        settings.paths = static_cast<uint32_t>(std::ceil(m * 1e6 / photonsPerPath));
+        PhotonMap map(context, scene, arrays, buffers, settings);
+        const PhotonMapStats stats = map.build(0);
+        const uint32_t queries = static_cast<uint32_t>(std::min<uint64_t>(stats.stored, 1u << 18));
+        const uint32_t stride = static_cast<uint32_t>(std::max<uint64_t>(1, stats.stored / queries));
+        const float r = stats.cellSize;
+        const double fixed = gatherRate(context, map, queries, stride, 0, 0, r);
+        const double nearestK = gatherRate(context, map, queries, stride, 1, 32, 2.0f * r);
+        const double nearest = gatherRate(context, map, queries, stride, 2, 1, r);
+        fmt::print("| {} | {} | {} | {:.1f} s | {:.1f} s | {:.0f} MiB | {:.4f} m | {:.3f} M/s | {:.3f} M/s | {:.3f} M/s |\n",
+                   stats.stored, settings.paths, (stats.stored + map.segmentPhotons() - 1) / map.segmentPhotons(),
+                   stats.traceSeconds, stats.gridSeconds, stats.bytes / 1048576.0, r, fixed / 1e6, nearestK / 1e6,
+                   nearest / 1e6);
+        std::fflush(stdout);
+    }
+}
+
 void benchConvergence(vk::Context& context, const Scene& scene, uint32_t size, uint32_t referenceSpp,
                       const std::filesystem::path& referencePath, double maxSeconds) {
     Renderer renderer(context, scene);
@@ -122,7 +179,8 @@ int main(int argc, char** argv) {
     uint32_t paths = 1000000, repeat = 3, size = 128, referenceSpp = 2048;
     double maxSeconds = 60.0;
     std::string device, referencePath;
-    bool skipConvergence = false;
+    bool skipConvergence = false, skipGrid = false;
+    std::vector<uint32_t> mapMillions;
     app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
     app.add_option("--paths", paths, "photon paths for the build and gather measurements")->capture_default_str();
     app.add_option("--repeat", repeat, "runs after a warm-up (the median is reported)")->capture_default_str();
@@ -131,6 +189,9 @@ int main(int argc, char** argv) {
     app.add_option("--reference", referencePath, "reference EXR: read if it exists, else rendered and written");
     app.add_option("--max-seconds", maxSeconds, "longest render per integrator in the error curve")->capture_default_str();
     app.add_flag("--skip-convergence", skipConvergence, "only the build and gather measurements");
+    app.add_flag("--skip-grid", skipGrid, "leave out the build and gather measurements of --paths");
+    app.add_option("--map-photons", mapMillions, "maps of these many million photons: build, gathers, memory")
+        ->delimiter(',');
     app.add_option("--device", device);
     CLI11_PARSE(app, argc, argv);
     try {
@@ -138,7 +199,8 @@ int main(int argc, char** argv) {
         const Scene scene = loadGltf(scenePath);
         vk::Context context({false, device});
         fmt::print("scene: {} ({} triangles), device: {}\n", scenePath, scene.triangles.size(), context.deviceName());
-        benchGrid(context, scene, paths, repeat);
+        if (!skipGrid) benchGrid(context, scene, paths, repeat);
+        if (!mapMillions.empty()) benchMapSizes(context, scene, mapMillions);
         if (!skipConvergence) benchConvergence(context, scene, size, referenceSpp, referencePath, maxSeconds);
         return 0;
     } catch (const std::exception& e) {

@@ -24,13 +24,11 @@ vec3 directLight(PathVertex v, uint lightCount, bool mis, uint skipTypes, inout 
     LightSample ls = sampleLight(index, choice.pdf, triangleSolidAngleSampling(lightCount), v.hit.position, uLight);
     if (ls.pdf <= 0.0f) return vec3(0.0f);
     vec3 wi = toLocal(ls.wi, v.t, v.b, v.n);
-    vec3 sideNormal = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
-    if (wi.z <= 0.0f || dot(ls.wi, sideNormal) <= 0.0f) return vec3(0.0f);  // light behind the surface
-    vec3 f = evalVertexBsdf(v, wi);
+    vec3 f = evalVertexDirect(v, ls, wi);  // zero for a light behind the surface, but through rough glass
     if (f.r + f.g + f.b <= 0.0f) return vec3(0.0f);
     if (!lightVisible(v.hit.position, v.hit.geometricNormal, ls)) return vec3(0.0f);
-    float weight = ls.delta || !mis ? 1.0f : powerHeuristic(ls.pdf, pdfVertexBsdf(v, wi));
-    return f * wi.z * ls.radiance * (weight / ls.pdf);
+    float weight = ls.delta || !mis ? 1.0f : powerHeuristic(ls.pdf, pdfVertexMis(v, wi));
+    return f * abs(wi.z) * ls.radiance * (weight / ls.pdf);
 }
 
 // MIS weight (power heuristic) of emission that a BSDF-sampled ray with solid-angle pdf `bsdfPdf`

@@ -11,7 +11,10 @@ layout(std430, set = 0, binding = kCompactSlotBinding) readonly buffer Slots { G
 // scannedCount + 1 entries: 1 per kept slot (0 past the chunk), then (scanned) each kept slot's
 // rank in the chunk; ranks[scannedCount] ends as the chunk's number of kept photons.
 layout(std430, set = 0, binding = kCompactRankBinding) buffer Ranks { uint ranks[]; };
-layout(std430, set = 0, binding = kCompactMapBinding) buffer Map { GpuPhoton map[]; };
+#include "segmented.glsl"
+
+// The dense map: a segmented array (segmented.glsl), so it may outgrow one buffer.
+layout(std430, set = 0, binding = kCompactMapBinding) readonly buffer Map { SEGMENT_TABLE } mapTable;
 layout(std430, set = 0, binding = kCompactStateBinding) buffer MapState { uint mapState[]; };  // kPhotonMapState*
 
 layout(push_constant) uniform Push { PhotonCompactParams params; };

@@ -11,5 +11,5 @@ void main() {
     uint slot = gl_GlobalInvocationID.x;
     if (slot >= params.slotCount || !slotKept(slot)) return;
     uint index = mapState[kPhotonMapStateCount] + ranks[slot];
-    if (index < params.capacity) map[index] = slots[slot];
+    if (index < params.capacity) PHOTON_AT(mapTable, index) = slots[slot];
 }

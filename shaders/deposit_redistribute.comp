@@ -10,20 +10,25 @@
 
 layout(local_size_x = kDepositGroupSize) in;
 
-layout(std430, set = 0, binding = kRedistributeMapBinding) buffer Map { GpuPhoton map[]; };
-layout(std430, set = 0, binding = kRedistributeSortedSlotBinding) readonly buffer SortedSlots { uint sortedSlots[]; };
+#include "item_index.glsl"
+#include "segmented.glsl"
+
+// The map and the grid's sorted slots: segmented arrays (segmented.glsl).
+layout(std430, set = 0, binding = kRedistributeMapBinding) readonly buffer Map { SEGMENT_TABLE } mapTable;
+layout(std430, set = 0, binding = kRedistributeSortedSlotBinding) readonly buffer SortedSlots { SEGMENT_TABLE } sortedSlotTable;
 layout(std430, set = 0, binding = kRedistributeRedistributedBinding) buffer Redistributed { uint redistributed[]; };
 
 layout(push_constant) uniform Push { RedistributeParams params; };
 
 void main() {
-    uint i = gl_GlobalInvocationID.x;
+    uint i = itemIndex();
     if (i >= params.gridPhotons) return;
     uvec3 added = uvec3(redistributed[3u * i], redistributed[3u * i + 1u], redistributed[3u * i + 2u]);
     if (added == uvec3(0u)) return;
-    uint slot = sortedSlots[i];
-    vec3 power = photonRelativePower(map[slot]) + vec3(added) / kRedistributedFixedPoint;
-    map[slot] = withRelativePower(map[slot], min(power, vec3(kMaxHalfFloat)));
+    uint slot = UINT_AT(sortedSlotTable, i);
+    GpuPhoton p = PHOTON_AT(mapTable, slot);
+    vec3 power = photonRelativePower(p) + vec3(added) / kRedistributedFixedPoint;
+    PHOTON_AT(mapTable, slot) = withRelativePower(p, min(power, vec3(kMaxHalfFloat)));
     redistributed[3u * i] = 0u;
     redistributed[3u * i + 1u] = 0u;
     redistributed[3u * i + 2u] = 0u;

@@ -47,16 +47,22 @@ vec3 gatherRay(GpuVisiblePoint vp, VisibleSurface s, inout Sampler rng) {
         // point) or, behind delta bounces, the caustic map's.
         if (!traceVertex(ray, v)) return vec3(0.0f);
         weight *= v.transmittance;
-        if (storesPhotons(v.bsdf)) {
+        // A partly transmissive surface: with probability `transmission` the ray goes on through
+        // its dielectric layer, otherwise it ends on the opaque layer (as in visible_points.comp).
+        float transmissionShare = storesPhotons(v.bsdf) ? v.bsdf.transmission : 0.0f;
+        bool throughLayer = transmissionShare > 0.0f && nextSample(rng) < transmissionShare;
+        if (storesPhotons(v.bsdf) && !throughLayer) {
+            weight /= 1.0f - transmissionShare;
             if (params.radianceLookup == 0u)
                 return weight * radianceNearest(params.grid, v.hit.position, params.k, params.maxRadius, 0u, 0u, v.bsdf,
                                                 v.wo, v.t, v.b, v.n);
             float radius2;
             if (gatherNearest(params.grid, v.hit.position, v.n, 1u, params.lookupRadius, 0u, 0u, radius2) == 0u)
                 return vec3(0.0f);
-            vec3 irradiance = photonRelativePower(gridPhotons[heapIndex[0]]) * params.grid.photonPower;
+            vec3 irradiance = photonRelativePower(gridPhoton(heapIndex[0])) * params.grid.photonPower;
             return weight * diffuseReflectance(v.bsdf, v.wo) * irradiance;
         }
+        if (throughLayer) v.bsdf.transmission = 1.0f;
         if (depth == params.maxSpecularDepth) break;
         vec3 ud = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
         BsdfSample next = sampleVertexBsdf(v, true, ud);

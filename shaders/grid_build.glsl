@@ -7,19 +7,26 @@
 #include "shared/photon.glsl"
 #include "shared/photon_grid.glsl"
 
-layout(std430, set = 0, binding = kGridSlotBinding) readonly buffer Photons { GpuPhoton photons[]; };  // fixed slots
+#include "item_index.glsl"
+#include "segmented.glsl"
+
+// The input, the sorted slots and the output are segmented arrays (segmented.glsl): a map of any size.
+layout(std430, set = 0, binding = kGridSlotBinding) readonly buffer Photons { SEGMENT_TABLE } photonTable;  // fixed slots
 // tableSize + 1 entries: counts per bucket, then (scanned) the first sorted index of each bucket;
 // the last entry ends as the number of photons in the grid.
 layout(std430, set = 0, binding = kGridCellStartBinding) buffer CellStart { uint cellStart[]; };
 layout(std430, set = 0, binding = kGridCursorBinding) buffer Cursor { uint cursor[]; };            // scatter positions
-layout(std430, set = 0, binding = kGridSortedSlotBinding) buffer SortedSlots { uint sortedSlots[]; };  // slot per sorted photon
-layout(std430, set = 0, binding = kGridPhotonBinding) writeonly buffer GridPhotons { GpuPhoton gridPhotons[]; };
+layout(std430, set = 0, binding = kGridSortedSlotBinding) readonly buffer SortedSlots { SEGMENT_TABLE } sortedSlotTable;  // slot per sorted photon
+layout(std430, set = 0, binding = kGridPhotonBinding) readonly buffer GridPhotons { SEGMENT_TABLE } gridPhotonTable;
+#define PHOTON(i) PHOTON_AT(photonTable, i)
+#define SORTED_SLOT(i) UINT_AT(sortedSlotTable, i)
+#define GRID_PHOTON(i) PHOTON_AT(gridPhotonTable, i)
 
 layout(push_constant) uniform Push { PhotonGridParams params; };
 
 // The bucket of slot `slot`, or ~0u when the map does not keep that photon.
 uint bucketOfSlot(uint slot) {
-    GpuPhoton p = photons[slot];
+    GpuPhoton p = PHOTON(slot);
     if (!photonSelected(photonFlags(p), params.requiredFlags, params.rejectedFlags)) return ~0u;
     return gridHash(gridCell(p.position, params.invCellSize), params.tableMask);
 }

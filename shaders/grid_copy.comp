@@ -7,6 +7,8 @@
 layout(local_size_x = kGridGroupSize) in;
 
 void main() {
-    uint i = gl_GlobalInvocationID.x;
-    if (i < cellStart[params.tableMask + 1u]) gridPhotons[i] = photons[sortedSlots[i]];
+    uint i = itemIndex();
+    if (i >= cellStart[params.tableMask + 1u]) return;
+    uint slot = SORTED_SLOT(i);
+    GRID_PHOTON(i) = PHOTON(slot);
 }

@@ -7,7 +7,7 @@
 layout(local_size_x = kGridGroupSize) in;
 
 void main() {
-    uint slot = gl_GlobalInvocationID.x;
+    uint slot = itemIndex();
     if (slot >= params.slotCount) return;
     uint bucket = bucketOfSlot(slot);
     if (bucket != ~0u) atomicAdd(cellStart[bucket], 1u);

@@ -9,8 +9,10 @@
 layout(local_size_x = kGridGroupSize) in;
 
 void main() {
-    uint slot = gl_GlobalInvocationID.x;
+    uint slot = itemIndex();
     if (slot >= params.slotCount) return;
     uint bucket = bucketOfSlot(slot);
-    if (bucket != ~0u) sortedSlots[atomicAdd(cursor[bucket], 1u)] = slot;
+    if (bucket == ~0u) return;
+    uint sorted = atomicAdd(cursor[bucket], 1u);  // once: SORTED_SLOT names its index twice
+    SORTED_SLOT(sorted) = slot;
 }

@@ -13,12 +13,32 @@ layout(local_size_x = kGridGroupSize) in;
 
 const uint kGaps[8] = uint[8](701u, 301u, 132u, 57u, 23u, 10u, 4u, 1u);
 
+// A bucket's slots almost always lie in one segment of the sorted slots (buckets hold a few
+// photons, segments millions): its reference and mask stay in registers instead of being read
+// from the segment table at every access of the sort. A bucket across two segments goes
+// through the table.
+UintSegment bucketSegment;
+uint bucketMask;
+bool bucketInOneSegment;
+
+uint slotAt(uint k) { return bucketInOneSegment ? bucketSegment.items[k & bucketMask] : SORTED_SLOT(k); }
+
+void setSlot(uint k, uint value) {
+    if (bucketInOneSegment) bucketSegment.items[k & bucketMask] = value;
+    else SORTED_SLOT(k) = value;
+}
+
 void sortBucket() {
-    uint bucket = gl_GlobalInvocationID.x;
+    uint bucket = itemIndex();
     if (bucket > params.tableMask) return;
     uint begin = cellStart[bucket];
     uint end = cellStart[bucket + 1u];
     uint n = end - begin;
+    if (n < 2u) return;
+    uint shift = sortedSlotTable.segmentShift;
+    bucketMask = sortedSlotTable.segmentMask;
+    bucketInOneSegment = (begin >> shift) == ((end - 1u) >> shift);
+    bucketSegment = UintSegment(sortedSlotTable.segments[begin >> shift]);
     uint passes = 0u;    // passes and insertions done, against those due: fewer when a loop was cut
     uint rows = 0u;
     uint rowsDue = 0u;
@@ -28,13 +48,13 @@ void sortBucket() {
         rowsDue += max(n, gap) - gap;
         for (uint i = gap; i < n; ++i) {
             rows += 1u;
-            uint value = sortedSlots[begin + i];
+            uint value = slotAt(begin + i);
             uint j = i;
-            while (j >= gap && sortedSlots[begin + j - gap] > value) {
-                sortedSlots[begin + j] = sortedSlots[begin + j - gap];
+            while (j >= gap && slotAt(begin + j - gap) > value) {
+                setSlot(begin + j, slotAt(begin + j - gap));
                 j -= gap;
             }
-            sortedSlots[begin + j] = value;
+            setSlot(begin + j, value);
         }
     }
     noteLoopCut(passes, 8u);

@@ -19,7 +19,8 @@
 layout(local_size_x = kGuideCacheGroupSize) in;
 
 layout(std430, set = 0, binding = kGuideCacheCellStartBinding) readonly buffer CellStart { uint cellStart[]; };
-layout(std430, set = 0, binding = kGuideCachePhotonBinding) readonly buffer GridPhotons { GpuPhoton gridPhotons[]; };
+#include "segmented.glsl"
+layout(std430, set = 0, binding = kGuideCachePhotonBinding) readonly buffer GridPhotons { SEGMENT_TABLE } gridPhotonTable;
 layout(std430, set = 0, binding = kGuideCacheCellsBinding) writeonly buffer CacheCells { ivec4 cacheCells[]; };  // xyz cell, w 1: used
 layout(std430, set = 0, binding = kGuideCacheCdfsBinding) writeonly buffer CacheCdfs { float cacheCdfs[]; };    // kMaxGuideCells each
 layout(std430, set = 0, binding = kGuideCacheIrradianceBinding) writeonly buffer CacheIrradiance { vec4 cacheIrradiance[]; };  // rgb W/m^2, w photons
@@ -35,7 +36,7 @@ void buildCacheCell() {
     uint gn = (guide.gridSize >> 8u) & 0xffu;
     uint begin = cellStart[bucket];
     uint end = cellStart[bucket + 1u];
-    ivec3 cell = begin < end ? gridCell(gridPhotons[begin].position, guide.grid.invCellSize) : ivec3(0);
+    ivec3 cell = begin < end ? gridCell(PHOTON_AT(gridPhotonTable, begin).position, guide.grid.invCellSize) : ivec3(0);
     if (bin == 0u) cacheCells[bucket] = ivec4(cell, begin < end ? 1 : 0);
 
     float cells[kMaxGuideCells];
@@ -51,7 +52,7 @@ void buildCacheCell() {
     uint visited = 0u;  // fewer than the cell holds when lavapipe's loop budget cut the loop
     for (uint i = begin; i < end; ++i) {
         visited += 1u;
-        GpuPhoton p = gridPhotons[i];
+        GpuPhoton p = PHOTON_AT(gridPhotonTable, i);
         if ((photonFlags(p) & kPhotonPrimary) != 0u || gridCell(p.position, guide.grid.invCellSize) != cell ||
             normalBin(decodeOctahedral(p.normal)) != bin)
             continue;

@@ -113,7 +113,7 @@ BsdfSample sampleGuided(PathVertex v, vec3 u, float uSelect, out vec4 irradiance
     uint found = gatherNearest(guide.grid, v.hit.position, v.n, guide.k, guide.maxRadius, 0u, kPhotonPrimary, radius2);
     vec3 flux = vec3(0.0f);
     for (uint j = 0u; j < found; ++j) {
-        GpuPhoton p = gridPhotons[heapIndex[j]];
+        GpuPhoton p = gridPhoton(heapIndex[j]);
         vec3 wi = toLocal(decodeOctahedral(p.direction), v.t, v.b, v.n);
         guideAdd(cells, gm, gn, wi, luminance(evalVertexBsdf(v, wi) * photonRelativePower(p)));
         flux += photonRelativePower(p);
@@ -192,8 +192,8 @@ bool extendPath(inout PathState st) {
     if (bs.lobe == kLobeNone) return false;
     vec3 arriving = st.throughput;
     st.throughput *= bs.weight;
-    st.lastDelta = (bs.lobe & kLobeDelta) != 0u;
-    st.lastPdf = bs.pdf;
+    st.lastDelta = isDeltaForMis(bs);
+    st.lastPdf = st.lastDelta ? bs.pdf : misPdfOfSample(v, bs);
     st.lastPosition = v.hit.position;
     st.lastNormal = v.n;
     spawnRay(v, bs, st.ray);

@@ -73,6 +73,15 @@ void shadingFrame(vec3 n, vec3 woWorld, out vec3 t, out vec3 b, out vec3 wo) {
     if (wo.z <= 0.0f) wo.z = 1.0e-4f;
 }
 
+// The coat's own normal (SurfaceHit.coatNormal) into the BSDF, in the shading frame (t, b, n)
+// built on the arrival side: the BSDF evaluates and samples its coat lobe around it.
+void applyCoatNormal(inout BsdfParams p, SurfaceHit hit, vec3 t, vec3 b, vec3 n) {
+    if (!hit.hasCoatNormal) return;
+    vec3 coat = dot(n, hit.shadingNormal) < 0.0f ? -hit.coatNormal : hit.coatNormal;
+    p.clearcoatNormal = normalize(toLocal(coat, t, b, n));
+    p.flags |= kBsdfCoatNormal;
+}
+
 // Follows the ray to the closest surface and sets up the vertex there. Returns false when the
 // ray leaves the scene: v.distance is then kInfinity and the escape direction is ray.dir, where
 // light from an environment will be looked up.
@@ -97,6 +106,7 @@ bool traceVertex(Ray ray, out PathVertex v) {
     v.emitted = emittedRadianceOf(v.material, texels);
     v.n = v.hit.frontFace ? v.hit.shadingNormal : -v.hit.shadingNormal;
     shadingFrame(v.n, -ray.dir, v.t, v.b, v.wo);
+    applyCoatNormal(v.bsdf, v.hit, v.t, v.b, v.n);
     return true;
 }
 
@@ -121,6 +131,63 @@ vec3 evalVertexBsdf(PathVertex v, vec3 wi) {
 // Solid-angle pdf with which sampleVertexBsdf produces local wi through its non-delta lobes.
 float pdfVertexBsdf(PathVertex v, vec3 wi) {
     return pdfBsdf(v.bsdf, v.wo, wi);
+}
+
+// The rough dielectric layer (KHR_materials_transmission with roughness >= kDeltaRoughness,
+// shared/bsdf.glsl) towards local wi on either side, times its share `transmission`, for radiance,
+// and the density with which sampleVertexBsdf produces wi through it. The layer is not in
+// evalBsdf/pdfBsdf (photon estimates leave it out); the camera-path integrators add it for
+// next-event estimation (evalVertexDirect) and weigh its samples (kLobeLayer) against that with
+// the power heuristic over pdfVertexMis, as for every other lobe.
+bool hasRoughLayer(PathVertex v) {
+    return v.bsdf.transmission > 0.0f && !dielectricIsDelta(v.bsdf);
+}
+
+vec3 evalVertexLayer(PathVertex v, vec3 wi) {
+    if (!hasRoughLayer(v)) return vec3(0.0f);
+    return v.bsdf.transmission * evalDielectricLayer(v.bsdf, v.wo, wi, v.hit.frontFace, true);
+}
+
+float pdfVertexLayer(PathVertex v, vec3 wi) {
+    if (!hasRoughLayer(v)) return 0.0f;
+    return v.bsdf.transmission * pdfDielectricLayer(v.bsdf, v.wo, wi, v.hit.frontFace);
+}
+
+// The density the MIS weights use for BSDF sampling at v towards local wi: the opaque lobes' and
+// the rough layer's (both sides of the power heuristic use this one function).
+float pdfVertexMis(PathVertex v, vec3 wi) {
+    return pdfVertexBsdf(v, wi) + pdfVertexLayer(v, wi);
+}
+
+// That density for a sample sampleVertexBsdf (or the guide) took: its own pdf plus the layer's;
+// a layer sample's is the whole mixture's. Equal to bs.pdf where there is no rough layer.
+float misPdfOfSample(PathVertex v, BsdfSample bs) {
+    if ((bs.lobe & kLobeLayer) != 0u) return pdfVertexMis(v, bs.wi);
+    return bs.pdf + pdfVertexLayer(v, bs.wi);
+}
+
+// The sample is a Dirac for MIS: emission found through it counts in full (smooth mirrors and
+// glass; not the rough layer, which has a density).
+bool isDeltaForMis(BsdfSample bs) {
+    return (bs.lobe & kLobeDelta) != 0u && (bs.lobe & kLobeLayer) == 0u;
+}
+
+// f of the vertex towards a light sample (local wi), for next-event estimation: the evaluated
+// lobes for light on the arrival side, and the rough dielectric layer on either side (reflection,
+// or transmission from a light behind the surface). Zero where the shading and geometric normals
+// disagree about the side. A light inside an absorbing solid (the shadow ray runs behind the
+// geometric normal of a KHR_materials_volume surface) is attenuated by Beer-Lambert.
+vec3 evalVertexDirect(PathVertex v, LightSample ls, vec3 wi) {
+    vec3 sideNormal = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
+    bool above = dot(ls.wi, sideNormal) > 0.0f;
+    if ((wi.z > 0.0f) != above) return vec3(0.0f);
+    vec3 f = above ? evalVertexBsdf(v, wi) : vec3(0.0f);
+    f += evalVertexLayer(v, wi);
+    vec3 sigma = v.material.attenuationCoeff;
+    if (dot(ls.wi, v.hit.geometricNormal) < 0.0f && maxComponent(sigma) > 0.0f &&
+        (v.material.flags & kMaterialThinWalled) == 0u)
+        f *= exp(-sigma * ls.distance);
+    return f;
 }
 
 // Continues the ray from the vertex along the sampled direction: the origin leaves the surface on

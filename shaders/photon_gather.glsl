@@ -14,13 +14,18 @@
 #include "shared/photon_estimate.glsl"
 #include "shared/photon_grid.glsl"
 #include "shared/terminations.glsl"
+#include "segmented.glsl"
 
 #ifndef PHOTON_GRID_BINDING
 #error "define PHOTON_GRID_BINDING before including photon_gather.glsl"
 #endif
 
 layout(std430, set = 0, binding = PHOTON_GRID_BINDING) readonly buffer GridCellStart { uint gridCellStart[]; };
-layout(std430, set = 0, binding = PHOTON_GRID_BINDING + 1) readonly buffer GridPhotons { GpuPhoton gridPhotons[]; };
+// The grid's photons: a segmented array (segmented.glsl), so a map may outgrow one buffer.
+layout(std430, set = 0, binding = PHOTON_GRID_BINDING + 1) readonly buffer GridPhotons { SEGMENT_TABLE } gridPhotonTable;
+
+// The grid's i-th photon (bucket order).
+GpuPhoton gridPhoton(uint i) { return PHOTON_AT(gridPhotonTable, i); }
 
 // Queries visit at most this many cells per axis (a radius far above the cell size is clamped).
 const int kMaxGatherCellsPerAxis = 8;
@@ -75,7 +80,7 @@ FixedRadiusGather gatherFixedRadius(PhotonGridView g, vec3 x, float r, float con
                 uint visited = 0u;
                 for (uint i = begin; i < end; ++i) {
                     visited += 1u;
-                    GpuPhoton p = gridPhotons[i];
+                    GpuPhoton p = gridPhoton(i);
                     vec3 d = p.position - x;
                     float d2 = dot(d, d);
                     if (d2 > r2 || gridCell(p.position, g.invCellSize) != c) continue;
@@ -142,7 +147,7 @@ void gatherNearestInCell(PhotonGridView g, ivec3 c, vec3 x, vec3 n, uint require
     uint visited = 0u;  // fewer than the cell holds when the loop was cut
     for (uint i = begin; i < end; ++i) {
         visited += 1u;
-        GpuPhoton p = gridPhotons[i];
+        GpuPhoton p = gridPhoton(i);
         vec3 d = p.position - x;
         float d2 = dot(d, d);
         if (d2 < s.radius2 && gridCell(p.position, g.invCellSize) == c && photonCounts(p, n, required, rejected)) {
@@ -193,7 +198,7 @@ vec3 radianceNearest(PhotonGridView g, vec3 x, uint k, float maxRadius, uint req
     uint found = gatherNearest(g, x, n, k, maxRadius, required, rejected, radius2);
     vec3 sum = vec3(0.0f);
     for (uint j = 0u; j < found; ++j) {
-        GpuPhoton p = gridPhotons[heapIndex[j]];
+        GpuPhoton p = gridPhoton(heapIndex[j]);
         vec3 wi = toLocal(decodeOctahedral(p.direction), t, b, n);
         sum += evalBsdf(bsdf, wo, wi) * photonRelativePower(p);
     }

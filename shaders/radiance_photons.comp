@@ -15,17 +15,18 @@
 #define PHOTON_GRID_BINDING kRadiancePhotonsGridBinding
 #include "photon_gather.glsl"
 #include "termination_counters.glsl"
+#include "item_index.glsl"
 
 layout(local_size_x = kPhotonEstimateGroupSize) in;
 
-layout(std430, set = 0, binding = kRadiancePhotonsOutputBinding) writeonly buffer RadiancePhotons { GpuPhoton radiancePhotons[]; };
+layout(std430, set = 0, binding = kRadiancePhotonsOutputBinding) readonly buffer RadiancePhotons { SEGMENT_TABLE } radiancePhotonTable;
 
 layout(push_constant) uniform Push { RadiancePhotonParams params; };
 
 void radiancePhoton() {
-    uint source = gl_GlobalInvocationID.x;
+    uint source = itemIndex();
     if (source >= params.photonCount) return;
-    GpuPhoton p = gridPhotons[source];
+    GpuPhoton p = gridPhoton(source);
     // About every stride-th photon, chosen by its own record (radiancePhotonChosen: unchanged
     // photons keep their choice from frame to frame), the first photon of every bucket and every
     // photon of a bucket holding fewer than stride: every bucket with a photon gets a radiance
@@ -34,16 +35,16 @@ void radiancePhoton() {
     uint inBucket = gridCellStart[bucket + 1u] - gridCellStart[bucket];
     bool chosen = inBucket < params.stride || source == gridCellStart[bucket] || radiancePhotonChosen(p, params.stride);
     if (!chosen) {
-        radiancePhotons[source] = makePhoton(vec3(0.0f), vec3(0.0f), vec3(0.0f, 0.0f, 1.0f), vec3(0.0f, 0.0f, 1.0f), 0u, 0u);
+        PHOTON_AT(radiancePhotonTable, source) = makePhoton(vec3(0.0f), vec3(0.0f), vec3(0.0f, 0.0f, 1.0f), vec3(0.0f, 0.0f, 1.0f), 0u, 0u);
         return;
     }
     vec3 n = decodeOctahedral(p.normal);
     float radius2;
     uint found = gatherNearest(params.grid, p.position, n, params.k, params.maxRadius, 0u, 0u, radius2);
     vec3 sum = vec3(0.0f);
-    for (uint j = 0u; j < found; ++j) sum += photonRelativePower(gridPhotons[heapIndex[j]]);
+    for (uint j = 0u; j < found; ++j) sum += photonRelativePower(gridPhoton(heapIndex[j]));
     vec3 irradiance = sum * (params.grid.photonPower / (kPi * radius2));
-    radiancePhotons[source] = makePhoton(p.position, irradiance, n, n, kPhotonValid, p.lightIndex);
+    PHOTON_AT(radiancePhotonTable, source) = makePhoton(p.position, irradiance, n, n, kPhotonValid, p.lightIndex);
 }
 
 void main() {

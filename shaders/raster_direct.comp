@@ -40,13 +40,16 @@ void rasterDirectLight() {
     bool alphaSurface = params.alphaTested != 0u && triangles[v.hit.triangle].v0.w != 0.0f;
     vec3 sum = vec3(0.0f);
     for (uint k = 0u; k < params.lightCount; ++k) {
-        bool lit = ((mask >> (8u * k)) & 0xffu) != 0u;
-        if (!lit && !alphaSurface) continue;  // in this light's shadow volume
         LightSample ls = rasterLightSample(rasterLights[params.firstLight + k], v.hit.position);
+        bool through = dot(ls.wi, sideNormal) <= 0.0f;  // behind the surface: lit only through rough glass
+        bool lit = ((mask >> (8u * k)) & 0xffu) != 0u;
+        if (!through && !lit && !alphaSurface) continue;  // in this light's shadow volume
         vec3 wi = toLocal(ls.wi, v.t, v.b, v.n);
-        if (wi.z <= 0.0f || dot(ls.wi, sideNormal) <= 0.0f) continue;  // light behind the surface
-        if (params.alphaTested != 0u && !lightVisible(v.hit.position, v.hit.geometricNormal, ls)) continue;
-        sum += evalVertexBsdf(v, wi) * wi.z * ls.radiance;
+        vec3 f = evalVertexDirect(v, ls, wi);  // as the traced estimate's f
+        if (f.r + f.g + f.b <= 0.0f) continue;
+        // The masks see light on the arrival side only: light through the surface takes a shadow ray.
+        if ((through || params.alphaTested != 0u) && !lightVisible(v.hit.position, v.hit.geometricNormal, ls)) continue;
+        sum += f * abs(wi.z) * ls.radiance;
     }
     direct[pixel] += vec4(sum, 0.0f);
 }

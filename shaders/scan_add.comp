@@ -3,6 +3,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "shared/kernels/prefix_scan.glsl"
+#include "item_index.glsl"
 
 layout(local_size_x = kScanGroupSize) in;
 
@@ -12,6 +13,6 @@ layout(std430, set = 0, binding = kScanAddBlockSumBinding) readonly buffer Block
 layout(push_constant) uniform Push { uint count; } push;
 
 void main() {
-    uint i = gl_GlobalInvocationID.x;
+    uint i = itemIndex();
     if (i < push.count) data[i] += blockOffsets[i / kScanBlockSize];
 }

@@ -99,6 +99,7 @@ struct MaterialTexels {
     vec4 clearcoat;
     vec4 clearcoatRoughness;
     vec4 transmission;
+    vec4 clearcoatNormal;
 };
 
 // Texture slots of a material (bits of sampleMaterialTextures' `slots`).
@@ -113,7 +114,8 @@ const uint kMaterialTextureSheenRoughness = 7u;
 const uint kMaterialTextureClearcoat = 8u;
 const uint kMaterialTextureClearcoatRoughness = 9u;
 const uint kMaterialTextureTransmission = 10u;
-const uint kMaterialTextureSlots = 11u;
+const uint kMaterialTextureClearcoatNormal = 11u;
+const uint kMaterialTextureSlots = 12u;
 
 int materialTexture(GpuMaterial m, uint slot) {
     switch (slot) {
@@ -127,18 +129,19 @@ int materialTexture(GpuMaterial m, uint slot) {
     case kMaterialTextureSheenRoughness: return m.sheenRoughnessTexture;
     case kMaterialTextureClearcoat: return m.clearcoatTexture;
     case kMaterialTextureClearcoatRoughness: return m.clearcoatRoughnessTexture;
+    case kMaterialTextureClearcoatNormal: return m.clearcoatNormalTexture;
     default: return m.transmissionTexture;
     }
 }
 
-// The slots of the textures m has, among `wanted`; the sheen colour, clearcoat, transmission and
+// The slots of the textures m has, among `wanted`; the sheen colour, clearcoat (and its normal), transmission and
 // emissive textures only where their factor is non-zero (the texel could not change the result).
 uint materialTextureSlots(GpuMaterial m, uint wanted) {
     uint slots = 0u;
     for (uint slot = 0u; slot < kMaterialTextureSlots; ++slot)
         if (materialTexture(m, slot) >= 0) slots |= 1u << slot;
     if (!(maxComponent(m.sheenColor) > 0.0f)) slots &= ~(1u << kMaterialTextureSheenColor);
-    if (!(m.clearcoat > 0.0f)) slots &= ~(1u << kMaterialTextureClearcoat);
+    if (!(m.clearcoat > 0.0f)) slots &= ~((1u << kMaterialTextureClearcoat) | (1u << kMaterialTextureClearcoatNormal));
     if (!(m.transmission > 0.0f)) slots &= ~(1u << kMaterialTextureTransmission);
     if (!(m.emissive.r > 0.0f || m.emissive.g > 0.0f || m.emissive.b > 0.0f)) slots &= ~(1u << kMaterialTextureEmissive);
     return slots & wanted;
@@ -161,6 +164,7 @@ MaterialTexels sampleMaterialTextures(GpuMaterial m, vec4 uv, uint slots) {
     t.clearcoat = vec4(1.0f);
     t.clearcoatRoughness = vec4(1.0f);
     t.transmission = vec4(1.0f);
+    t.clearcoatNormal = vec4(1.0f);
     for (uint k = 0u; k < kMaterialTextureSlots && slots != 0u; ++k) {
         uint slot = uint(findLSB(slots));
         slots &= slots - 1u;
@@ -176,6 +180,7 @@ MaterialTexels sampleMaterialTextures(GpuMaterial m, vec4 uv, uint slots) {
         case kMaterialTextureSheenRoughness: t.sheenRoughness = v; break;
         case kMaterialTextureClearcoat: t.clearcoat = v; break;
         case kMaterialTextureClearcoatRoughness: t.clearcoatRoughness = v; break;
+        case kMaterialTextureClearcoatNormal: t.clearcoatNormal = v; break;
         default: t.transmission = v; break;
         }
     }
@@ -251,6 +256,10 @@ struct SurfaceHit {
     vec3 position;
     vec3 geometricNormal;   // unit, from the winding (front face side)
     vec3 shadingNormal;     // unit, interpolated (and normal-mapped), flipped to the geometric normal's side
+    vec3 coatNormal;        // KHR_materials_clearcoat's own normal, on the same side (hasCoatNormal)
+    bool hasCoatNormal;     // the coat's normal is not shadingNormal: it has a clearcoatNormalTexture,
+                            // or the base has a normal map the coat does not follow (the extension:
+                            // without clearcoatNormalTexture the coat is not normal-mapped)
     vec4 uv;                // TEXCOORD_0 (xy) and TEXCOORD_1 (zw)
     vec4 color;             // COLOR_0 (1 when the mesh has none)
     uint material;
@@ -259,21 +268,24 @@ struct SurfaceHit {
     uint triangle;          // hit id (docs/bvh.md): the static triangle's index, or an instance's
 };
 
-// The normal map's normal (glTF: tangent space +X along the tangent, +Y along
-// cross(normal, tangent) * w, scaled in xy by normalTexture.scale) around unit normal n, with the
-// interpolated world-space tangent t (not yet orthogonalised), w < 0 as `negative`, and the normal
-// texture's texel `texel`.
-vec3 normalMapped(GpuMaterial m, vec3 t, bool negative, vec3 texel, vec3 n) {
+// A normal map's normal (glTF: tangent space +X along the tangent, +Y along
+// cross(normal, tangent) * w, scaled in xy by the texture info's `scale`) around unit normal n, with
+// the interpolated world-space tangent t (not yet orthogonalised), w < 0 as `negative`, and the
+// normal texture's texel `texel`.
+vec3 normalMapped(float scale, vec3 t, bool negative, vec3 texel, vec3 n) {
     t -= n * dot(n, t);
     float len = length(t);
     if (!(len > 1.0e-6f)) return n;
     t /= len;
     vec3 b = cross(n, t) * (negative ? -1.0f : 1.0f);
     vec3 c = texel * 2.0f - 1.0f;
-    vec3 mapped = t * (c.x * m.normalScale) + b * (c.y * m.normalScale) + n * c.z;
+    vec3 mapped = t * (c.x * scale) + b * (c.y * scale) + n * c.z;
     float mappedLength = length(mapped);
     return mappedLength > 1.0e-6f ? mapped / mappedLength : n;
 }
+
+// The normal maps' texture slots: the base's and the coat's.
+const uint kNormalMapSlots = (1u << kMaterialTextureNormal) | (1u << kMaterialTextureClearcoatNormal);
 
 // Hit ids (docs/bvh.md): below instanceHeader.staticTriangles the index of a static (world-space)
 // triangle in the triangle buffers; from there on an instance's firstId plus the triangle's index
@@ -332,17 +344,26 @@ SurfaceHit surfaceTexelsAt(uint id, float b1, float b2, vec3 rayDir, uint wanted
     float len = length(n);
     n = len > 0.0f ? n / len : hit.geometricNormal;
     GpuMaterial m = materials[s.material];
-    if (s.tangentSign == kTangentNone) wanted &= ~(1u << kMaterialTextureNormal);
-    texels = sampleMaterialTextures(m, hit.uv, materialTextureSlots(m, wanted));
-    if ((wanted & (1u << kMaterialTextureNormal)) != 0u && m.normalTexture >= 0 && s.tangentSign != kTangentNone) {
+    if (s.tangentSign == kTangentNone) wanted &= ~kNormalMapSlots;
+    uint slots = materialTextureSlots(m, wanted);
+    texels = sampleMaterialTextures(m, hit.uv, slots);
+    vec3 coat = n;  // the coat's normal: not the base's normal map (KHR_materials_clearcoat)
+    hit.hasCoatNormal = m.clearcoat > 0.0f && (slots & kNormalMapSlots) != 0u;
+    if ((slots & kNormalMapSlots) != 0u) {
         vec3 tangent = b0 * decodeOctahedral(s.tangent0) + b1 * decodeOctahedral(s.tangent1) +
                        b2 * decodeOctahedral(s.tangent2);
         if (instanced)
             tangent = transformVector3x4(inst.objectToWorld[0], inst.objectToWorld[1], inst.objectToWorld[2], tangent);
-        n = normalMapped(m, tangent, (s.tangentSign == kTangentNegative) != mirrored, texels.normal.xyz, n);
+        bool negative = (s.tangentSign == kTangentNegative) != mirrored;
+        if ((slots & (1u << kMaterialTextureClearcoatNormal)) != 0u)
+            coat = normalMapped(m.clearcoatNormalScale, tangent, negative, texels.clearcoatNormal.xyz, n);
+        if ((slots & (1u << kMaterialTextureNormal)) != 0u)
+            n = normalMapped(m.normalScale, tangent, negative, texels.normal.xyz, n);
     }
     if (dot(n, hit.geometricNormal) < 0.0f) n = -n;
+    if (dot(coat, hit.geometricNormal) < 0.0f) coat = -coat;
     hit.shadingNormal = n;
+    hit.coatNormal = hit.hasCoatNormal ? coat : n;
     hit.material = s.material;
     hit.emitterPdfArea = s.emitterPdfArea;
     hit.frontFace = dot(rayDir, hit.geometricNormal) < 0.0f;
@@ -350,14 +371,14 @@ SurfaceHit surfaceTexelsAt(uint id, float b1, float b2, vec3 rayDir, uint wanted
     return hit;
 }
 
-// The surface with its normal map applied (surfaceTexelsAt without other textures).
+// The surface with its normal maps applied (surfaceTexelsAt without other textures).
 SurfaceHit surfaceAt(uint id, float b1, float b2, vec3 rayDir) {
     MaterialTexels texels;
-    return surfaceTexelsAt(id, b1, b2, rayDir, 1u << kMaterialTextureNormal, texels);
+    return surfaceTexelsAt(id, b1, b2, rayDir, kNormalMapSlots, texels);
 }
 
-// The material texture slots the BSDF reads (all but emissive and normal).
-const uint kBsdfTextureSlots = ~((1u << kMaterialTextureEmissive) | (1u << kMaterialTextureNormal));
+// The material texture slots the BSDF reads (all but emissive and the normal maps).
+const uint kBsdfTextureSlots = ~((1u << kMaterialTextureEmissive) | kNormalMapSlots);
 
 // The material's parameters from the texels at a surface point (sampleMaterialTextures with
 // kBsdfTextureSlots at least). COLOR_0 multiplies the base colour (the callers: bsdfParamsAtHit).

@@ -18,10 +18,11 @@ struct VisibleSurface {
 
 VisibleSurface visibleSurface(GpuVisiblePoint vp) {
     VisibleSurface s;
-    s.bsdf = bsdfParamsAtHit(materials[vp.material],
-                             surfaceAt(vp.triangle, vp.barycentrics.x, vp.barycentrics.y, vec3(0.0f)));
+    SurfaceHit hit = surfaceAt(vp.triangle, vp.barycentrics.x, vp.barycentrics.y, vec3(0.0f));
+    s.bsdf = bsdfParamsAtHit(materials[vp.material], hit);
     s.n = decodeOctahedral(vp.shadingNormal);
     shadingFrame(s.n, decodeOctahedral(vp.wo), s.t, s.b, s.wo);  // as traceVertex set it up
+    applyCoatNormal(s.bsdf, hit, s.t, s.b, s.n);
     return s;
 }
 

@@ -6,7 +6,8 @@
 // estimates (caustics, indirect light) that follow.
 //
 // A surface that is partly delta and partly not (a smooth clear coat over a diffuse base) becomes
-// the visible point: its delta part is not followed further (one visible point per sample).
+// the visible point: its delta part is not followed further (one visible point per sample). A
+// partly transmissive one is the visible point or the glass, chosen by its transmission.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -75,11 +76,22 @@ void findVisiblePoint() {
 
         // --direct raster: the first vertex's covered lights come from the raster pass.
         uint skip = rasterCoveredLightTypes(params.flags, depth);
+        // A surface that stores photons: direct light by its opaque layer, then the visible point.
+        // A partly transmissive one (0 < transmission < 1) is the visible point only with
+        // probability 1 - transmission (its throughput divided by that: the estimates evaluate the
+        // material's BSDF, the opaque share in it); otherwise the path goes on through its
+        // dielectric layer alone (transmission set to 1 there), like through glass.
+        float transmissionShare = storesPhotons(v.bsdf) ? v.bsdf.transmission : 0.0f;
         if (storesPhotons(v.bsdf)) {
-            radiance += throughput * directLight(v, params.lightCount, false, skip, rng);
+            PathVertex opaque = v;
+            opaque.bsdf.transmission = 0.0f;  // the opaque layer's f, scaled by its share below
+            radiance += throughput * (1.0f - transmissionShare) * directLight(opaque, params.lightCount, false, skip, rng);
+        }
+        bool throughLayer = transmissionShare > 0.0f && nextSample(rng) < transmissionShare;
+        if (storesPhotons(v.bsdf) && !throughLayer) {
             vp.position = v.hit.position;
             vp.material = v.hit.material;
-            vp.throughput = throughput;
+            vp.throughput = throughput / (1.0f - transmissionShare);
             vp.shadingNormal = encodeOctahedral(v.n);
             vp.barycentrics = v.barycentrics;
             vp.triangle = v.triangle;
@@ -88,16 +100,18 @@ void findVisiblePoint() {
             vp.flags = kVisiblePointValid | (v.hit.frontFace ? kVisiblePointFrontFace : 0u);
             break;
         }
+        if (throughLayer) v.bsdf.transmission = 1.0f;
         if (depth == params.maxSpecularDepth) break;
-        // A polished metal: direct light by next-event estimation (MIS), then on by its lobe.
+        // A polished metal or rough glass: direct light by next-event estimation (MIS), then on by
+        // its lobe.
         if (!specularIsDelta(v.bsdf))
             radiance += throughput * directLight(v, params.lightCount, true, skip, rng);
         vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
         BsdfSample bs = sampleVertexBsdf(v, true, u);
         if (bs.lobe == kLobeNone) break;
         throughput *= bs.weight;
-        lastDelta = (bs.lobe & kLobeDelta) != 0u;
-        lastPdf = bs.pdf;
+        lastDelta = isDeltaForMis(bs);
+        lastPdf = lastDelta ? bs.pdf : misPdfOfSample(v, bs);
         lastPosition = v.hit.position;
         lastNormal = v.n;
         spawnRay(v, bs, ray);

@@ -190,8 +190,9 @@ TEST(Bsdf, EvaluationIsReciprocal) {
             }
 }
 
-// Sampling against pdf over a grid of (roughness, metallic, specular, specular colour) at two
-// angles; every sample's pdf and weight must agree with pdfBsdf and evalBsdf.
+// Sampling against pdf over a grid of (roughness, metallic, specular, specular colour, clear coat
+// with and without its own normal, sheen) at two angles; every sample's pdf and weight must agree
+// with pdfBsdf and evalBsdf.
 struct GridCase {
     float roughness;
     float metallic;
@@ -200,13 +201,14 @@ struct GridCase {
     float cosWo;
     float clearcoat;
     float sheen;
+    bool coatNormal;  // the coat's normal tilted 26 degrees off the shading normal (kBsdfCoatNormal)
 };
 
 std::string describe(const GridCase& c) {
     std::ostringstream s;
     s << "roughness " << c.roughness << " metallic " << c.metallic << " specular " << c.specular << " colour ("
       << c.specularColor.x << "," << c.specularColor.y << "," << c.specularColor.z << ") cos " << c.cosWo
-      << " clearcoat " << c.clearcoat << " sheen " << c.sheen;
+      << " clearcoat " << c.clearcoat << " sheen " << c.sheen << (c.coatNormal ? " tilted coat normal" : "");
     return s.str();
 }
 
@@ -219,7 +221,10 @@ std::vector<GridCase> gridCases() {
                 const glm::vec3 colour = (k % 3 == 2) ? glm::vec3(2.0f, 1.0f, 0.2f) : glm::vec3(1.0f);
                 const float coat = (k % 4 == 1) ? 1.0f : (k % 4 == 3 ? 0.5f : 0.0f);
                 const float sheen = (k % 3 == 1) ? 1.0f : 0.0f;
-                cases.push_back({roughness, metallic, specular, colour, (k % 2) ? 0.25f : 0.8f, coat, sheen});
+                const bool coatNormal = k % 8 == 5 || k % 8 == 7;
+                // (Coats fall on odd k, at cos 0.25: the tilted ones are seen at 0.8.)
+                cases.push_back({roughness, metallic, specular, colour, (k % 2 && !coatNormal) ? 0.25f : 0.8f, coat,
+                                 sheen, coatNormal});
                 ++k;
             }
     return cases;
@@ -233,6 +238,10 @@ BsdfParams gridParams(const GridCase& c) {
     p.clearcoatRoughness = 0.3f;
     p.sheenColor = glm::vec3(0.7f, 0.5f, 0.9f) * c.sheen;
     p.sheenRoughness = 0.5f;
+    if (c.coatNormal) {
+        p.clearcoatNormal = glm::normalize(glm::vec3(0.35f, -0.2f, 0.9f));
+        p.flags |= kBsdfCoatNormal;
+    }
     return p;
 }
 

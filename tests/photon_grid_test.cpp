@@ -21,6 +21,7 @@
 #include "shared/sampling.glsl"
 #include "shaders/test_kernels.glsl"
 #include "vk/kernel.h"
+#include "vk/segmented_buffer.h"
 
 namespace vkp {
 namespace {
@@ -78,6 +79,13 @@ std::vector<gpu::GpuPhoton> randomPhotons(uint32_t count, uint32_t seed) {
     return photons;
 }
 
+// The photons as a segmented array (what grids read), in buffers of 2^shift photons (0: the default).
+vk::SegmentedBuffer photonArray(vk::Context& context, const std::vector<gpu::GpuPhoton>& photons, uint32_t shift = 0) {
+    vk::SegmentedBuffer array(context, "test photons", sizeof(gpu::GpuPhoton), photons.size(), shift);
+    array.upload(photons.data(), 0, photons.size());
+    return array;
+}
+
 struct GatherQuery {
     glm::vec3 position;
     float radius;
@@ -92,14 +100,21 @@ bool countsAt(const gpu::GpuPhoton& p, glm::vec3 n, uint32_t required, uint32_t 
            glm::dot(gpu::decodeOctahedral(p.normal), n) > gpu::kGatherNormalCosine;
 }
 
-TEST_F(PhotonGridTest, GathersMatchBruteForce) {
+// In one buffer and split over 16 buffers of 1024 photons (input, sorted slots and grid photons).
+class PhotonGridSegmentTest : public PhotonGridTest, public ::testing::WithParamInterface<uint32_t> {};
+
+TEST_P(PhotonGridSegmentTest, GathersMatchBruteForce) {
     vk::Context& context = test::gpu();
     const auto photons = randomPhotons(16000, 3);
-    vk::Buffer photonBuffer = vk::makeStorageBuffer(context, "test photons", photons);
+    vk::SegmentedBuffer photonBuffer = photonArray(context, photons, GetParam());
     PhotonGridSettings settings;
     settings.cellSize = 0.04f;
     settings.rejectedFlags = gpu::kPhotonPrimary;
-    PhotonGrid grid(context, photonBuffer, static_cast<uint32_t>(photons.size()), settings);
+    PhotonGrid grid(context, photonBuffer, static_cast<uint32_t>(photons.size()), settings, GetParam());
+    if (GetParam()) {
+        ASSERT_EQ(photonBuffer.segmentCount(), 16u);
+        ASSERT_EQ(grid.photonArray().segmentCount(), 16u);
+    }
 
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -183,20 +198,20 @@ TEST_F(PhotonGridTest, GathersMatchBruteForce) {
     EXPECT_GT(fullK, queries.size() / 4);
 }
 
-TEST_F(PhotonGridTest, EveryMapPhotonLandsInItsBucketAndRebuildsAreIdentical) {
+TEST_P(PhotonGridSegmentTest, EveryMapPhotonLandsInItsBucketAndRebuildsAreIdentical) {
     vk::Context& context = test::gpu();
     const auto photons = randomPhotons(100000, 5);
-    vk::Buffer photonBuffer = vk::makeStorageBuffer(context, "test photons", photons);
+    vk::SegmentedBuffer photonBuffer = photonArray(context, photons, GetParam());
     PhotonGridSettings settings;
     settings.cellSize = 0.01f;
     settings.requiredFlags = gpu::kPhotonCaustic;
-    PhotonGrid grid(context, photonBuffer, static_cast<uint32_t>(photons.size()), settings);
+    PhotonGrid grid(context, photonBuffer, static_cast<uint32_t>(photons.size()), settings, GetParam());
     auto build = [&] {
         context.submitAndWait([&](VkCommandBuffer cmd) {
             grid.record(cmd);
             vk::computeToHostBarrier(cmd);
         });
-        return std::make_pair(grid.cellStart().download<uint32_t>(), grid.photons().download<gpu::GpuPhoton>());
+        return std::make_pair(grid.cellStart().download<uint32_t>(), grid.downloadPhotons());
     };
     const auto [starts, sorted] = build();
     std::vector<uint32_t> expectedIds;
@@ -238,7 +253,7 @@ TEST_F(PhotonGridTest, RadiancePhotonsChangeOnlyNearAnAddedPhoton) {
     std::vector<gpu::GpuPhoton> photons = randomPhotons(16000, 9);
     const glm::vec3 added(0.93f, 0.07f, 0.91f);
     auto radiance = [&](const std::vector<gpu::GpuPhoton>& input) {
-        vk::Buffer buffer = vk::makeStorageBuffer(context, "test photons", input);
+        vk::SegmentedBuffer buffer = photonArray(context, input);
         PhotonGridSettings settings;
         settings.cellSize = kCell;
         settings.tableSize = kTable;
@@ -252,8 +267,7 @@ TEST_F(PhotonGridTest, RadiancePhotonsChangeOnlyNearAnAddedPhoton) {
             rp.record(cmd);
             vk::computeToHostBarrier(cmd);
         });
-        std::vector<gpu::GpuPhoton> out = rp.grid().photons().download<gpu::GpuPhoton>();
-        out.resize(rp.grid().downloadPhotonCount());
+        std::vector<gpu::GpuPhoton> out = rp.grid().downloadPhotons();
         std::map<uint32_t, gpu::GpuPhoton> byId;  // randomPhotons keeps a photon's id in lightIndex
         for (const auto& p : out) byId[p.lightIndex] = p;
         return std::make_pair(byId, grid.downloadPhotonCount());
@@ -282,6 +296,8 @@ TEST_F(PhotonGridTest, RadiancePhotonsChangeOnlyNearAnAddedPhoton) {
     EXPECT_GT(compared, before.size() / 2);
     EXPECT_EQ(differing, 0u) << "of " << compared << " radiance photons away from the added photon";
 }
+
+INSTANTIATE_TEST_SUITE_P(OneOrManyBuffers, PhotonGridSegmentTest, ::testing::Values(0u, 10u));
 
 }  // namespace
 }  // namespace vkp

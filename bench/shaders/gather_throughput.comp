@@ -20,7 +20,7 @@ layout(push_constant) uniform Push { GatherBenchParams push; };
 void main() {
     uint q = gl_GlobalInvocationID.x;
     if (q >= push.queries) return;
-    GpuPhoton p = gridPhotons[q * push.stride];
+    GpuPhoton p = gridPhoton(q * push.stride);
     vec3 n = decodeOctahedral(p.normal);
     vec3 t;
     vec3 b;

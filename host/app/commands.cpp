@@ -30,6 +30,7 @@
 #include "shared/sampling.glsl"
 #include "util/check_range.h"
 #include "util/errors.h"
+#include "util/host_memory.h"
 #include "util/printable.h"
 #include "vk/context.h"
 
@@ -40,19 +41,6 @@ std::filesystem::path defaultOutput(const std::filesystem::path& scene) {
     return std::filesystem::path("out") / (scene.stem().string() + ".exr");
 }
 
-// MemAvailable of /proc/meminfo in bytes (0 when it cannot be read).
-uint64_t memoryAvailable() {
-    std::ifstream in("/proc/meminfo");
-    std::string line;
-    while (std::getline(in, line))
-        if (line.rfind("MemAvailable:", 0) == 0) {
-            std::istringstream fields(line.substr(13));
-            uint64_t kib = 0;
-            fields >> kib;
-            return kib * 1024;
-        }
-    return 0;
-}
 
 Scene loadScene(const std::filesystem::path& path, const vk::Context& context, double maxMemoryGiB, int sceneIndex,
                 const EnvironmentSettings& environment, bool quiet, uint32_t maxTextureSize) {
@@ -81,12 +69,12 @@ GltfLimits deviceSceneLimits(const vk::Context& context, double maxMemoryGiB) {
     GltfLimits limits;
     limits.deviceMaxTriangles = deviceTriangleLimit(context.properties().limits.maxStorageBufferRange);
     if (maxMemoryGiB > 0.0) limits.maxMemoryBytes = static_cast<uint64_t>(maxMemoryGiB * double(1ull << 30));
-    else if (const uint64_t available = memoryAvailable(); available > 0) limits.maxMemoryBytes = available;
+    else if (const uint64_t available = hostMemoryAvailable(); available > 0) limits.maxMemoryBytes = available;
     return limits;
 }
 
 void PhotonsCommandOptions::check() const {
-    checkRange("--photons", photons, 1u, 1u << 26);
+    checkRange("--photons", photons, 1u, 1u << 30);  // maps of any size: docs/photon-mapping.md
     checkRange("--max-deposits", maxDeposits, 1u, 64u);
     checkRange("--width", width, 1u, 16384u);
     checkRange("--height", height, 1u, 16384u);
@@ -262,7 +250,7 @@ int runPhotons(const PhotonsCommandOptions& options) {
     const double seconds = stats.traceSeconds;
     writePhotonPly(output, map.downloadPhotons(), map.photonPower());
     if (stats.dropped > 0)
-        fmt::print(stderr, "warning: {} photon(s) did not fit the map ({} photons at most on this device)\n",
+        fmt::print(stderr, "warning: {} photon(s) did not fit the map ({} photons at most: paths x --max-deposits, 2^31)\n",
                    stats.dropped, map.capacity());
     Stats terminations;  // the context's counters start at zero: importons and photons of this run
     reportTerminations(readTerminations(context), terminations);
@@ -270,9 +258,9 @@ int runPhotons(const PhotonsCommandOptions& options) {
     if (!options.quiet)
         fmt::print(stderr,
                    "traced {} photon paths in {:.2f} s on {}: stored {} caustic, {} global, {} primary; "
-                   "absorbed {}, lost {}, truncated {}; wrote {}\n",
+                   "absorbed {}, lost {}, truncated {}; map {} photons, {:.1f} MiB with its grid; wrote {}\n",
                    c.emitted, seconds, context.deviceName(), c.storedCaustic, c.storedGlobal, c.storedPrimary,
-                   c.absorbed, c.lost, c.truncated, printable(output.string()));
+                   c.absorbed, c.lost, c.truncated, stats.stored, stats.bytes / 1048576.0, printable(output.string()));
     if (!options.quiet && importons)
         fmt::print(stderr, "deposit {}: kept {} of {} photons ({:.1f} %, {:.1f} MB); {} importons, f = {:.4g}\n",
                    depositModeName(options.deposit.mode), stats.stored, stats.candidates,

@@ -56,6 +56,8 @@ gpu::GpuMaterial toGpu(const Material& m, bool emitterDoubleSided) {
     g.sheenRoughnessTexture = m.sheenRoughnessTexture;
     g.clearcoatTexture = m.clearcoatTexture;
     g.clearcoatRoughnessTexture = m.clearcoatRoughnessTexture;
+    g.clearcoatNormalTexture = m.clearcoatNormalTexture;
+    g.clearcoatNormalScale = m.clearcoatNormalScale;
     return g;
 }
 

@@ -12,7 +12,7 @@ PhotonGridSettings cacheGrid(float cellSize, uint32_t tableSize) {
 
 }  // namespace
 
-GuideCache::GuideCache(vk::Context& context, const vk::Buffer& photons, uint32_t slotCount, float cellSize,
+GuideCache::GuideCache(vk::Context& context, const vk::SegmentedBuffer& photons, uint32_t slotCount, float cellSize,
                        uint32_t tableSize, const gpu::GuideParams& params)
     : m_grid(context, photons, slotCount, cacheGrid(cellSize, tableSize)), m_params(params),
       m_cells(context, "guide cache cells", VkDeviceSize(m_grid.tableSize()) * 4 * sizeof(int32_t), vk::kStorageUsage),

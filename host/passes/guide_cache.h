@@ -19,7 +19,7 @@ public:
     // A cache over the `slotCount` photon slots of `photons` (e.g. a map's grid photons) with
     // cells of `cellSize` and `tableSize` buckets; `params` gives the grid size (m, n) and, in
     // params.grid.photonPower, the watts of a photon of relative power 1.
-    GuideCache(vk::Context& context, const vk::Buffer& photons, uint32_t slotCount, float cellSize, uint32_t tableSize,
+    GuideCache(vk::Context& context, const vk::SegmentedBuffer& photons, uint32_t slotCount, float cellSize, uint32_t tableSize,
                const gpu::GuideParams& params);
 
     // Records the coarse grid and the grids' construction; the caller places barriers around.

@@ -8,6 +8,7 @@
 #include "shared/kernels/compaction.glsl"
 #include "shared/photon_grid.glsl"
 #include "vk/buffer.h"
+#include "vk/segmented_buffer.h"
 #include "vk/kernel.h"
 
 namespace vkp {
@@ -16,12 +17,14 @@ class PhotonCompaction {
 public:
     // Chunks of up to `maxSlots` slots of `slots`; `state` holds kPhotonMapStateSize uints
     // (count, dropped), zeroed by the caller before the first chunk. `params.slotCount` is unused.
-    PhotonCompaction(vk::Context& context, const vk::Buffer& slots, uint32_t maxSlots, const vk::Buffer& map,
+    // The map is a segmented array (any size); `params.capacity` is replaced by record's.
+    PhotonCompaction(vk::Context& context, const vk::Buffer& slots, uint32_t maxSlots, const vk::SegmentedBuffer& map,
                      const vk::Buffer& state, const gpu::PhotonCompactParams& params);
 
-    // Records the append of the first `slotCount` slots; the caller places a barrier before
-    // (after the slot writes) and after.
-    void record(VkCommandBuffer cmd, uint32_t slotCount) const;
+    // Records the append of the first `slotCount` slots to a map that holds `capacity` photons
+    // now (its allocated part: photons past it are counted as dropped); the caller places a
+    // barrier before (after the slot writes) and after.
+    void record(VkCommandBuffer cmd, uint32_t slotCount, uint32_t capacity) const;
 
 private:
     gpu::PhotonCompactParams m_params;

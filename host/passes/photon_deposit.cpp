@@ -1,16 +1,22 @@
 #include "passes/photon_deposit.h"
 
+#include <algorithm>
+
 #include <glm/glm.hpp>
+
+#include "vk/context.h"
 
 namespace vkp {
 
 PhotonDeposit::PhotonDeposit(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& importanceTable,
-                             const vk::Buffer& slots, uint32_t maxSlots, const vk::Buffer& map,
+                             const vk::Buffer& slots, uint32_t maxSlots, const vk::SegmentedBuffer& map,
                              const PhotonGrid& mapGrid)
     : m_importance(context, "deposit importance", std::max<VkDeviceSize>(16, VkDeviceSize(maxSlots) * sizeof(glm::vec2)),
                    vk::kStorageUsage),
       m_redistributed(context, "deposit redistributed power",
-                      std::max<VkDeviceSize>(16, VkDeviceSize(mapGrid.slotCount()) * 3 * sizeof(uint32_t)),
+                      // Density control only (whose maps PhotonMap keeps within one buffer of these).
+                      std::clamp<VkDeviceSize>(VkDeviceSize(mapGrid.capacity()) * 3 * sizeof(uint32_t), 16,
+                                               context.properties().limits.maxStorageBufferRange),
                       vk::kStorageUsage),
       m_lookup(context, importanceTable, slots, m_importance), m_deposit(context), m_redistribute(context) {
     m_deposit.bind(scene.bindings());
@@ -19,7 +25,7 @@ PhotonDeposit::PhotonDeposit(vk::Context& context, const SceneBuffers& scene, co
     m_deposit.bind(gpu::kPhotonDepositSlotBinding, slots);
     m_deposit.bind(gpu::kPhotonDepositImportanceBinding, m_importance);
     m_deposit.bind(gpu::kPhotonDepositRedistributedBinding, m_redistributed);
-    m_redistribute.bind(gpu::kRedistributeMapBinding, map);
+    m_redistribute.bind(gpu::kRedistributeMapBinding, map.table());
     m_redistribute.bind(gpu::kRedistributeSortedSlotBinding, mapGrid.sortedSlots());
     m_redistribute.bind(gpu::kRedistributeRedistributedBinding, m_redistributed);
 }

@@ -21,7 +21,7 @@ public:
     // (shared/importance.glsl), the dense map's photons and the grid over them (read by density
     // control, which also hands rejected photons' power to the map's photons).
     PhotonDeposit(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& importanceTable,
-                  const vk::Buffer& slots, uint32_t maxSlots, const vk::Buffer& map, const PhotonGrid& mapGrid);
+                  const vk::Buffer& slots, uint32_t maxSlots, const vk::SegmentedBuffer& map, const PhotonGrid& mapGrid);
 
     // Zeroes the power handed to the map's photons (a transfer): record it once, before the first
     // record(), followed by a transfer-to-compute barrier.

@@ -5,11 +5,14 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "passes/prefix_scan.h"
 #include "shared/kernels/grid_build.glsl"
+#include "shared/photon.glsl"
 #include "shared/photon_grid.glsl"
 #include "vk/buffer.h"
+#include "vk/segmented_buffer.h"
 #include "vk/kernel.h"
 
 namespace vkp {
@@ -23,8 +26,15 @@ struct PhotonGridSettings {
 
 class PhotonGrid {
 public:
-    // A grid over the `slotCount` photon slots of `photons` (empty slots are skipped).
-    PhotonGrid(vk::Context& context, const vk::Buffer& photons, uint32_t slotCount, const PhotonGridSettings& settings);
+    // A grid over up to `slotCount` photon slots of `photons` (empty slots are skipped), at first
+    // over those `photons` has allocated (resize changes that). The table's size follows slotCount;
+    // the grid's arrays have segments of 2^segmentShift elements (0: as many as the input's).
+    PhotonGrid(vk::Context& context, const vk::SegmentedBuffer& photons, uint32_t slotCount,
+               const PhotonGridSettings& settings, uint32_t segmentShift = 0);
+
+    // The next builds cover slots [0, slots) of the input (at most its allocated slots and the
+    // grid's slotCount): allocates the grid's own arrays for them.
+    void resize(uint32_t slots);
 
     // Changes the cell size for the next build (the table and buffers stay).
     void setCellSize(float cellSize);
@@ -33,11 +43,18 @@ public:
     void record(VkCommandBuffer cmd) const;
 
     const vk::Buffer& cellStart() const { return m_cellStart; }  // tableSize + 1 entries
-    // Bucket order; only the first downloadPhotonCount() entries are written by a build.
-    const vk::Buffer& photons() const { return m_gridPhotons; }
-    // Map slot of each grid entry (the order the grid's photons follow).
-    const vk::Buffer& sortedSlots() const { return m_sortedSlots; }
-    uint32_t slotCount() const { return m_params.slotCount; }
+    // Bucket order, a segmented array's table (bind it; vk/segmented_buffer.h); only the first
+    // downloadPhotonCount() entries are written by a build.
+    const vk::Buffer& photons() const { return m_gridPhotons.table(); }
+    // Map slot of each grid entry (the order the grid's photons follow), likewise segmented.
+    const vk::Buffer& sortedSlots() const { return m_sortedSlots.table(); }
+    const vk::SegmentedBuffer& photonArray() const { return m_gridPhotons; }
+    uint32_t slotCount() const { return m_params.slotCount; }   // slots the builds cover now
+    uint32_t capacity() const { return m_capacity; }            // slots they may cover at most
+    // Device memory of the grid: the table, sorted slots and photons.
+    uint64_t bytes() const { return m_cellStart.size() + m_cursor.size() + m_sortedSlots.bytes() + m_gridPhotons.bytes(); }
+    // The first downloadPhotonCount() photons in bucket order (after the build has completed).
+    std::vector<gpu::GpuPhoton> downloadPhotons() const;
     uint32_t tableSize() const { return m_params.tableMask + 1; }
     const PhotonGridSettings& settings() const { return m_settings; }
     // What a gather shader needs to find its photons, with the watts of a relative power of 1.
@@ -50,12 +67,14 @@ public:
 
 private:
     vk::Context& m_context;
+    const vk::SegmentedBuffer& m_input;
+    uint32_t m_capacity;
     PhotonGridSettings m_settings;
     gpu::PhotonGridParams m_params{};
     vk::Buffer m_cellStart;
     vk::Buffer m_cursor;
-    vk::Buffer m_sortedSlots;
-    vk::Buffer m_gridPhotons;
+    vk::SegmentedBuffer m_sortedSlots;
+    vk::SegmentedBuffer m_gridPhotons;
     PrefixScan m_scan;
     vk::Kernel<gpu::GridCountKernel> m_count;
     vk::Kernel<gpu::GridScatterKernel> m_scatter;

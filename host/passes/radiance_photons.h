@@ -13,6 +13,7 @@
 #include "shared/kernels/photon_estimates.glsl"
 #include "shared/photon_render.glsl"
 #include "vk/buffer.h"
+#include "vk/segmented_buffer.h"
 #include "vk/kernel.h"
 
 namespace vkp {
@@ -29,12 +30,12 @@ public:
 
     const PhotonGrid& grid() const { return *m_grid; }
     uint32_t count() const { return m_count; }  // slots (one per global photon; empty ones are not radiance photons)
-    uint64_t bytes() const { return m_photons.size() + m_grid->photons().size(); }
+    uint64_t bytes() const { return m_photons.bytes() + m_grid->bytes(); }
 
 private:
     gpu::RadiancePhotonParams m_params{};
     uint32_t m_count;
-    vk::Buffer m_photons;
+    vk::SegmentedBuffer m_photons;
     vk::Kernel<gpu::RadiancePhotonsKernel> m_kernel;
     std::unique_ptr<PhotonGrid> m_grid;
 };

@@ -159,8 +159,10 @@ float ImportonMap::estimateImportanceScale(vk::Context& context, const std::vect
     for (uint32_t slot = 0; slot < testSlots; ++slot)
         if ((importons[slot].flags & gpu::kImportonPrimary) != 0 && values[slot].x > 0.0f)
             least = std::min(least, values[slot].x);
-    if (!std::isfinite(least))
-        throw InputError("importance-driven deposition: the camera sees no surface that stores photons");
+    // The camera sees no surface that stores photons (only glass or mirrors with nothing behind,
+    // say): no photon can reach the image, whatever is kept. Any scale will do; the render goes on
+    // (it once stopped here with an error, refusing scenes the path tracer renders).
+    if (!std::isfinite(least)) return 1.0f;
     return 1.0f / least;
 }
 

@@ -119,7 +119,7 @@ PathGuide::PathGuide(const GpuScene& scene, const GuideSettings& g, uint32_t see
         const auto table = static_cast<uint32_t>(std::clamp(2.0 * cells, 1024.0, double(1u << 20)));
         // Only the first `stored` entries of the grid's photon buffer are written.
         const auto stored = static_cast<uint32_t>(std::max<uint64_t>(1, m_mapStats.stored));
-        m_cache = std::make_unique<GuideCache>(context, m_map->grid().photons(), stored, cellSize, table, m_params);
+        m_cache = std::make_unique<GuideCache>(context, m_map->grid().photonArray(), stored, cellSize, table, m_params);
         context.submitAndWait([&](VkCommandBuffer cmd) {
             vk::computeBarrier(cmd);
             m_cache->record(cmd);

@@ -20,6 +20,8 @@ constexpr uint64_t kChunkSlots = 1u << 21;  // 64 MiB of photon slots per traced
 constexpr uint64_t kMaxChunkPaths = 1u << 16;
 // A build stopped before it began still traces this many paths, so the map is not empty.
 constexpr uint32_t kStoppedChunkPaths = 4096;
+// Photons a map holds at most: indices stay far from uint overflow (64 GiB of photons).
+constexpr uint64_t kMaxMapPhotons = uint64_t(1) << 31;
 // Density control's current-density estimates search one cell (one ring of cells).
 constexpr float kDensityRadiusCells = 1.0f;
 
@@ -62,36 +64,42 @@ PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays
         if (deposit.mode == gpu::kDepositDensity && !(deposit.densityAccuracy > 0.0f))
             throw InputError(fmt::format("--density-accuracy {}: must be positive", deposit.densityAccuracy));
     }
-    // The map's buffer within the storage-buffer range, and its grid passes (one invocation per
-    // photon, 64 per workgroup) within one dispatch: 4 M photons on lavapipe either way, where a
-    // capacity of 2^22 once asked for 65536 workgroups (the limit is 65535).
+    // A chunk's slots are one storage buffer; the map and its grid are segmented arrays that
+    // grow with the photons stored, and their kernels dispatch rows of workgroups past 4 M
+    // photons. Density control's redistribution sums are one storage buffer (12 bytes a photon).
     const VkPhysicalDeviceLimits& limits = context.properties().limits;
-    const uint64_t maxPhotons = std::min<uint64_t>(limits.maxStorageBufferRange / sizeof(gpu::GpuPhoton),
-                                                   uint64_t(limits.maxComputeWorkGroupCount[0]) * 64);
+    const uint64_t maxSlots = limits.maxStorageBufferRange / sizeof(gpu::GpuPhoton);
+    uint64_t maxPhotons = kMaxMapPhotons;
+    if (deposit.mode == gpu::kDepositDensity) maxPhotons = limits.maxStorageBufferRange / (3 * sizeof(uint32_t));
     uint64_t chunk = settings.chunkPaths ? settings.chunkPaths
                                          : std::clamp<uint64_t>(kChunkSlots / settings.maxDeposits, 1, kMaxChunkPaths);
     // Density control decides each round against the photons stored by the rounds before.
     if (deposit.mode == gpu::kDepositDensity && !settings.chunkPaths)
         chunk = std::max<uint64_t>(1, kChunkSlots / settings.maxDeposits);
     if (deposit.mode == gpu::kDepositDensity) chunk = std::min<uint64_t>(chunk, (settings.paths + deposit.rounds - 1) / deposit.rounds);
-    m_chunkPaths = static_cast<uint32_t>(std::min<uint64_t>({chunk, settings.paths, maxPhotons / settings.maxDeposits}));
+    m_chunkPaths = static_cast<uint32_t>(std::min<uint64_t>({chunk, settings.paths, maxSlots / settings.maxDeposits}));
     if (m_chunkPaths == 0)
         throw InputError(fmt::format("--max-deposits {}: one path's slots exceed the device's storage-buffer range",
                                      settings.maxDeposits));
     m_photonPower = static_cast<float>(arrays.totalLightPower / settings.paths);
     m_capacity = static_cast<uint32_t>(std::min<uint64_t>(uint64_t(settings.paths) * settings.maxDeposits, maxPhotons));
-    m_map = vk::Buffer(context, "photon map", VkDeviceSize(m_capacity) * sizeof(gpu::GpuPhoton), vk::kStorageUsage);
+    m_map = vk::SegmentedBuffer(context, "photon map", sizeof(gpu::GpuPhoton), m_capacity, settings.segmentShift);
     m_state = vk::Buffer(context, "photon map state", gpu::kPhotonMapStateSize * sizeof(uint32_t), vk::kStorageUsage);
     PhotonGridSettings grid;
     grid.cellSize = settings.cellSize;
     grid.requiredFlags = settings.requiredFlags;
     grid.rejectedFlags = settings.rejectedFlags;
-    m_grid = std::make_unique<PhotonGrid>(context, m_map, m_capacity, grid);
+    m_grid = std::make_unique<PhotonGrid>(context, m_map, m_capacity, grid, settings.segmentShift);
     // A shorter (stopped) chunk must not reallocate the slots the passes below are bound to.
     m_tracer.reserve(m_chunkPaths, settings.maxDeposits);
 }
 
 PhotonMap::~PhotonMap() = default;
+
+void PhotonMap::reserve(uint64_t photons) {
+    m_map.reserve(photons);
+    m_grid->resize(static_cast<uint32_t>(m_map.allocated()));
+}
 
 gpu::PhotonDepositParams PhotonMap::depositParams(uint32_t firstPath, uint32_t paths, uint32_t round) const {
     const DepositSettings& d = m_settings.deposit;
@@ -142,6 +150,9 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
         chunk.maxDeposits = m_settings.maxDeposits;
         chunk.seed = m_settings.seed;
         stats.traced += m_tracer.trace(chunk);
+        // Room for every photon of the map's kinds traced so far (the most the compaction keeps):
+        // the map's segments grow with the photons, not with paths x maxDeposits.
+        reserve(candidateCount(stats.traced, m_settings.requiredFlags, m_settings.rejectedFlags));
         bool freshDeposit = false;
         if (!m_compaction) {  // the first chunk is the largest: the tracer's slots never move after it
             gpu::PhotonCompactParams params{};
@@ -171,7 +182,7 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
                     vk::computeBarrier(cmd);
                 }
             }
-            m_compaction->record(cmd, chunk.paths * chunk.maxDeposits);
+            m_compaction->record(cmd, chunk.paths * chunk.maxDeposits, static_cast<uint32_t>(m_map.allocated()));
             if (densityControl) {  // the next round's current density sees this round's photons
                 vk::computeBarrier(cmd);
                 m_grid->record(cmd);
@@ -208,6 +219,7 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
         vk::computeToHostBarrier(cmd);
     });
     stats.gridSeconds = secondsSince(start);
+    stats.bytes = bytes();
     return stats;
 }
 
@@ -226,6 +238,7 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t first
     params.requiredFlags = m_settings.requiredFlags;
     params.rejectedFlags = m_settings.rejectedFlags;
     const uint32_t count = static_cast<uint32_t>(slotCount);
+    reserve(slotCount);
     uint32_t state[gpu::kPhotonMapStateSize];
     auto compact = [&](const PhotonCompaction& compaction, const PhotonDeposit* decide) {
         m_context.submitAndWait([&](VkCommandBuffer cmd) {
@@ -239,7 +252,7 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t first
                                depositParams(firstPath, m_settings.paths, 0));
                 vk::computeBarrier(cmd);
             }
-            compaction.record(cmd, count);
+            compaction.record(cmd, count, static_cast<uint32_t>(m_map.allocated()));
             vk::computeToHostBarrier(cmd);
         });
         m_state.download(state, sizeof(state));
@@ -279,19 +292,16 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t first
         vk::computeToHostBarrier(cmd);
     });
     stats.gridSeconds = secondsSince(start);
+    stats.bytes = bytes();
     return stats;
 }
 
-uint64_t PhotonMap::bytes() const {
-    return m_lastStored * sizeof(gpu::GpuPhoton) + m_grid->cellStart().size();
-}
+uint64_t PhotonMap::bytes() const { return m_map.bytes() + m_grid->bytes(); }
 
 std::vector<gpu::GpuPhoton> PhotonMap::downloadPhotons() const {
     uint32_t count = 0;
     m_state.download(&count, sizeof(count), gpu::kPhotonMapStateCount * sizeof(uint32_t));
-    std::vector<gpu::GpuPhoton> photons(count);
-    m_map.download(photons.data(), count * sizeof(gpu::GpuPhoton));
-    return photons;
+    return m_map.download<gpu::GpuPhoton>(count);
 }
 
 }  // namespace vkp

@@ -1,7 +1,8 @@
 // One photon map on the GPU: photon paths traced in chunks (render/photon_tracer.h), the photons
 // the map keeps appended densely in path order (passes/photon_compaction.h), and the hash grid
 // over them (passes/photon_grid.h). Chunking keeps each chunk's slot buffer within the device's
-// maxStorageBufferRange, so a map can hold millions of photons.
+// maxStorageBufferRange; the map and its grid are segmented arrays (vk/segmented_buffer.h) that
+// grow chunk by chunk, so a map holds as many photons as the device's memory does.
 #pragma once
 
 #include <cstdint>
@@ -46,6 +47,9 @@ struct PhotonMapSettings {
     std::function<float(uint64_t photons)> cellSizeFor;
     uint32_t chunkPaths = 0;      // paths per traced chunk; 0: at most kMaxChunkPaths and 2 M slots
     DepositSettings deposit;
+    // Photons per segment of the map and its grid, log2 (0: 128 MiB segments, 4 M photons).
+    // Lower values split small maps over many buffers: tests compare them with one buffer.
+    uint32_t segmentShift = 0;
     // Checked between chunks (may be null): a stopped build keeps the chunks traced so far, with
     // the photon power normalised by the paths actually traced (at least one small chunk).
     const RenderControl* control = nullptr;
@@ -56,6 +60,7 @@ struct PhotonMapStats {
     uint64_t candidates = 0;      // deposits of the map's kind the paths made (before any deposit decision)
     uint64_t stored = 0;          // photons in the map
     uint64_t dropped = 0;         // kept photons beyond the map's capacity
+    uint64_t bytes = 0;           // device memory of the map and its grid after the build
     uint32_t chunks = 0;
     float cellSize = 0.0f;
     double traceSeconds = 0.0;    // tracing and compaction
@@ -95,9 +100,11 @@ public:
     // Watts carried by a photon of relative power 1 (total light power / paths of one build).
     float photonPower() const { return m_photonPower; }
     uint32_t capacity() const { return m_capacity; }
-    // Device memory of the map's stored photons and its grid's table (the buffers are allocated
-    // for every traced deposit; the traced chunk's slots are scratch).
+    // Device memory of the map's photons and its grid (allocated in segments as the map fills;
+    // the traced chunk's slots are scratch).
     uint64_t bytes() const;
+    // Photons per segment of the map's buffers.
+    uint64_t segmentPhotons() const { return uint64_t(1) << m_map.segmentShift(); }
     // The map's photons, in path order (after a build).
     std::vector<gpu::GpuPhoton> downloadPhotons() const;
 
@@ -114,12 +121,14 @@ private:
     uint32_t m_chunkPaths;
     float m_photonPower;
     uint32_t m_capacity;
-    vk::Buffer m_map;
+    vk::SegmentedBuffer m_map;
     vk::Buffer m_state;
     std::unique_ptr<PhotonGrid> m_grid;
     std::unique_ptr<PhotonCompaction> m_compaction;  // bound to the tracer's slots (allocated by the first chunk)
     std::unique_ptr<PhotonDeposit> m_deposit;        // likewise; only with a deposit mode other than all
     uint64_t m_lastStored = 0;
+    // Allocates the map's segments for `photons` and the grid's for all the map holds.
+    void reserve(uint64_t photons);
 };
 
 }  // namespace vkp

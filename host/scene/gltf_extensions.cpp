@@ -12,7 +12,7 @@ constexpr std::array kExtensions{
     GltfExtension{"KHR_materials_emissive_strength", Read, "multiplies the emission"},
     GltfExtension{"KHR_materials_ior", Read, "index of refraction"},
     GltfExtension{"KHR_materials_specular", Read, "specular strength and F0 colour, factors and textures"},
-    GltfExtension{"KHR_materials_clearcoat", Read, "coat factor and roughness with textures (not clearcoatNormalTexture)"},
+    GltfExtension{"KHR_materials_clearcoat", Read, "coat factor, roughness and normal, with their textures"},
     GltfExtension{"KHR_materials_sheen", Read, "Charlie sheen colour and roughness with textures"},
     GltfExtension{"KHR_materials_transmission", Read, "transmissionFactor and transmissionTexture (R)"},
     GltfExtension{"KHR_materials_volume", Read, "thicknessFactor and attenuation (not the thickness texture)"},

@@ -531,7 +531,13 @@ private:
         const uint32_t material = primitiveMaterial(primitive, element);
         checkTexCoordSets(m_scene.materials[material], v, element);
         const Material& m = m_scene.materials[material];
-        if (m.normalTexture >= 0 && attribute("TANGENT") >= 0) {
+        // Tangents for the normal maps: the base's and the coat's (KHR_materials_clearcoat), which
+        // share the TANGENT attribute or the tangents generated from the base map's TEXCOORD set
+        // (else the coat map's).
+        const int tangentTexture = m.normalTexture >= 0 ? m.normalTexture
+                                   : m.clearcoat > 0.0f ? m.clearcoatNormalTexture
+                                                        : -1;
+        if (tangentTexture >= 0 && attribute("TANGENT") >= 0) {
             v.tangents = readVec4Accessor(m_model, attribute("TANGENT"));
             if (v.tangents.size() != v.positions.size()) fail(element, "TANGENT and POSITION counts differ");
             for (size_t i = 0; i < v.tangents.size(); ++i)
@@ -539,8 +545,8 @@ private:
                     fail(element, fmt::format("TANGENT {} is NaN or infinite (accessors[{}])", i, attribute("TANGENT")));
         }
         morph(primitive, v, element);
-        if (m.normalTexture >= 0 && attribute("TANGENT") < 0)  // from the morphed shape; the skin moves them
-            v.tangents = generateTangents(v.positions, v.normals, v.uvs[m_scene.textureViews[m.normalTexture].texCoord],
+        if (tangentTexture >= 0 && attribute("TANGENT") < 0)  // from the morphed shape; the skin moves them
+            v.tangents = generateTangents(v.positions, v.normals, v.uvs[m_scene.textureViews[tangentTexture].texCoord],
                                           indices);
         skin(primitive, v, element);
         if ((m_target ? m_target->triangles : m_scene.triangles).size() + indices.size() / 3 > m_limits.maxTriangles)
@@ -583,7 +589,8 @@ private:
     void checkTexCoordSets(const Material& m, const Vertices& v, const std::string& element) const {
         for (const int view : {m.baseColorTexture, m.metallicRoughnessTexture, m.emissiveTexture, m.normalTexture,
                                m.specularTexture, m.specularColorTexture, m.sheenColorTexture, m.sheenRoughnessTexture,
-                               m.clearcoatTexture, m.clearcoatRoughnessTexture, m.transmissionTexture}) {
+                               m.clearcoatTexture, m.clearcoatRoughnessTexture, m.transmissionTexture,
+                               m.clearcoatNormalTexture}) {
             if (view < 0) continue;
             const int slot = m_scene.textureViews[view].texCoord, set = m_texCoordSetOfView[view];
             if (set > 0 && v.uvs[slot].empty())

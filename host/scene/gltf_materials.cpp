@@ -143,8 +143,8 @@ void GltfMaterials::readExtensions(const tinygltf::Material& source, const std::
         m.clearcoatRoughness = static_cast<float>(numberOr(*e, "clearcoatRoughnessFactor", 0.0, coat));
         m.clearcoatTexture = extensionTexture(*e, "clearcoatTexture", false, coat);
         m.clearcoatRoughnessTexture = extensionTexture(*e, "clearcoatRoughnessTexture", false, coat);
-        if (e->IsObject() && e->Has("clearcoatNormalTexture"))
-            m_warn(fmt::format("{} ({}): clearcoatNormalTexture is ignored; the coat uses the surface normal", element, m.name));
+        m.clearcoatNormalTexture = extensionTexture(*e, "clearcoatNormalTexture", false, coat);
+        m.clearcoatNormalScale = static_cast<float>(textureScale(*e, "clearcoatNormalTexture", coat));
     }
     if (const auto* e = extension(source.extensions, "KHR_materials_sheen")) {
         const std::string sheen = name("KHR_materials_sheen");
@@ -224,6 +224,18 @@ int GltfMaterials::extensionTexture(const tinygltf::Value& object, const char* k
     if (info.Has("extensions") && info.Get("extensions").IsObject())
         for (const std::string& k : info.Get("extensions").Keys()) extensions[k] = info.Get("extensions").Get(k);
     return texture(static_cast<int>(index), texCoord, extensions, srgb, name);
+}
+
+// A normalTextureInfo's `scale` inside an extension object (1 when absent).
+double GltfMaterials::textureScale(const tinygltf::Value& object, const char* key, const std::string& element) {
+    if (!object.IsObject() || !object.Has(key)) return 1.0;
+    const tinygltf::Value& info = object.Get(key);
+    const std::string name = fmt::format("{}.{}", element, key);
+    if (!info.IsObject() || !info.Has("scale")) return 1.0;
+    const tinygltf::Value& scale = info.Get("scale");
+    if (!scale.IsNumber() || !std::isfinite(scale.GetNumberAsDouble()) || std::abs(scale.GetNumberAsDouble()) > 1.0e6)
+        fail(name + ".scale", "must be a finite number");
+    return scale.GetNumberAsDouble();
 }
 
 int GltfMaterials::texture(int gltfTexture, int texCoord, const tinygltf::ExtensionMap& extensions, bool srgb,

@@ -39,6 +39,7 @@ private:
     void readTransform(const tinygltf::Value& transform, const std::string& element, TextureView& view);
     // A textureInfo object `key` of an extension object (KHR_materials_*), or -1 when absent.
     int extensionTexture(const tinygltf::Value& object, const char* key, bool srgb, const std::string& element);
+    double textureScale(const tinygltf::Value& object, const char* key, const std::string& element);
     Texture convertImage(int source, bool srgb);
 
     const tinygltf::Model& m_model;

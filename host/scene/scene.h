@@ -83,6 +83,8 @@ struct Material {
     float clearcoatRoughness = 0.0f;
     int clearcoatTexture = -1;      // R channel
     int clearcoatRoughnessTexture = -1;  // G channel
+    int clearcoatNormalTexture = -1;     // tangent-space normal of the coat (RGB), as normalTexture
+    float clearcoatNormalScale = 1.0f;   // clearcoatNormalTexture.scale
     std::vector<std::string> extensions;  // the glTF extensions the material and its textures name
 };
 

@@ -37,6 +37,9 @@ Buffer::Buffer(Context& context, std::string name, VkDeviceSize size, VkBufferUs
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = context.findMemoryType(req.memoryTypeBits, required, preferred);
+    VkMemoryAllocateFlagsInfo allocFlags{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
+    allocFlags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
+    if (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) alloc.pNext = &allocFlags;
     try {
         check(vkAllocateMemory(device, &alloc, nullptr, &m_memory),
               fmt::format("allocating {:.1f} MiB for the {} buffer", size / 1048576.0, m_name));
@@ -115,6 +118,12 @@ void Buffer::download(void* data, VkDeviceSize bytes, VkDeviceSize offset) const
         vkCmdCopyBuffer(cmd, m_buffer, staging.handle(), 1, &region);
     });
     staging.download(data, bytes);
+}
+
+VkDeviceAddress Buffer::deviceAddress() const {
+    VkBufferDeviceAddressInfo info{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
+    info.buffer = m_buffer;
+    return vkGetBufferDeviceAddress(m_context->device(), &info);
 }
 
 void Buffer::fillZero(VkCommandBuffer cmd) const { vkCmdFillBuffer(cmd, m_buffer, 0, VK_WHOLE_SIZE, 0); }

@@ -49,6 +49,8 @@ public:
     }
 
     void fillZero(VkCommandBuffer cmd) const;
+    // The buffer's address for shaders (usage kSegmentUsage: vk/segmented_buffer.h).
+    VkDeviceAddress deviceAddress() const;
 
 private:
     void release();
@@ -63,6 +65,12 @@ private:
 
 // Usage for buffers read and written by compute shaders and copied to and from.
 constexpr VkBufferUsageFlags kStorageUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                            VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+// Usage for buffers shaders reach through their device address (GL_EXT_buffer_reference), not
+// through a descriptor: not bound by maxStorageBufferRange, only by the allocation limits.
+constexpr VkBufferUsageFlags kSegmentUsage = VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
                                             VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                             VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 

@@ -94,8 +94,16 @@ void ComputeKernel::bind(const TextureArray& textures) {
     m_texturesBound = true;
 }
 
-void ComputeKernel::record(VkCommandBuffer cmd, uint32_t groups, const void* push, uint32_t pushBytes,
-                           uint32_t firstGroup) const {
+void ComputeKernel::record(VkCommandBuffer cmd, uint64_t groups, const void* push, uint32_t pushBytes,
+                           uint32_t firstGroup, bool rows) const {
+    const uint32_t maxGroups = m_context.properties().limits.maxComputeWorkGroupCount[0];
+    const bool wide = groups + firstGroup > maxGroups;
+    if (wide && (!rows || firstGroup != 0))
+        throw std::logic_error(fmt::format("{}: {} workgroups exceed the device's {} per dispatch", m_interface.shader,
+                                           groups, maxGroups));
+    const uint64_t rowCount = (groups + kRowGroups - 1) / kRowGroups;
+    if (wide && rowCount > m_context.properties().limits.maxComputeWorkGroupCount[1])
+        throw RuntimeError(fmt::format("{}: {} workgroups exceed the device's dispatch limits", m_interface.shader, groups));
     for (uint32_t i = 0; i < m_interface.bindingCount; ++i)
         if (!m_bound[i]) throw RuntimeError(fmt::format("{}: binding {} was never bound", m_interface.shader, i));
     if (m_textureSet && !m_texturesBound)
@@ -113,8 +121,9 @@ void ComputeKernel::record(VkCommandBuffer cmd, uint32_t groups, const void* pus
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline->layout(), gpu::kSceneTextureSet, 1,
                                 &m_textureSet, 0, nullptr);
     if (pushBytes) vkCmdPushConstants(cmd, m_pipeline->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes, push);
-    if (groups && firstGroup) vkCmdDispatchBase(cmd, firstGroup, 0, 0, groups, 1, 1);
-    else if (groups) vkCmdDispatch(cmd, groups, 1, 1);
+    if (wide) vkCmdDispatch(cmd, kRowGroups, static_cast<uint32_t>(rowCount), 1);
+    else if (groups && firstGroup) vkCmdDispatchBase(cmd, firstGroup, 0, 0, static_cast<uint32_t>(groups), 1, 1);
+    else if (groups) vkCmdDispatch(cmd, static_cast<uint32_t>(groups), 1, 1);
 }
 
 namespace {

@@ -66,9 +66,12 @@ public:
     void bind(const TextureArray& textures);
 
     // Dispatches `groups` 1-D workgroups, from workgroup `firstGroup` on, after pushing
-    // `pushBytes` of push constants.
-    void record(VkCommandBuffer cmd, uint32_t groups, const void* push, uint32_t pushBytes,
-                uint32_t firstGroup = 0) const;
+    // `pushBytes` of push constants. Past maxComputeWorkGroupCount[0] workgroups, a kernel whose
+    // items are numbered by itemIndex() (`rows`) gets rows of kRowGroups workgroups; any other
+    // throws.
+    void record(VkCommandBuffer cmd, uint64_t groups, const void* push, uint32_t pushBytes,
+                uint32_t firstGroup = 0, bool rows = false) const;
+    static constexpr uint32_t kRowGroups = 32768;  // workgroups per row (shaders/item_index.glsl)
     template <typename Push> void record(VkCommandBuffer cmd, uint32_t groups, const Push& push) const {
         record(cmd, groups, &push, sizeof(Push));
     }

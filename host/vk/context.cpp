@@ -270,6 +270,13 @@ void Context::pickPhysicalDevice(const std::string& request) {
     }
     m_physicalDevice = devices[chosen];
     vkGetPhysicalDeviceProperties(m_physicalDevice, &m_properties);
+    VkPhysicalDeviceMaintenance4Properties maintenance4{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_PROPERTIES};
+    VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+    maintenance3.pNext = &maintenance4;
+    VkPhysicalDeviceProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    properties2.pNext = &maintenance3;
+    vkGetPhysicalDeviceProperties2(m_physicalDevice, &properties2);
+    m_maxAllocationSize = std::min(maintenance3.maxMemoryAllocationSize, maintenance4.maxBufferSize);
     vkGetPhysicalDeviceMemoryProperties(m_physicalDevice, &m_memoryProperties);
     m_deviceName = m_properties.deviceName;
     findQueueFamily(m_physicalDevice, m_queueFamily);
@@ -290,6 +297,11 @@ void Context::createDevice() {
     // pass objects, synchronization2 barriers; both core in 1.3 and required of every device.
     features13.dynamicRendering = VK_TRUE;
     features13.synchronization2 = VK_TRUE;
+    // Photon maps larger than one storage buffer's range are segments reached through their
+    // device addresses (vk/segmented_buffer.h); bufferDeviceAddress is required of every 1.3 device.
+    VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    features12.bufferDeviceAddress = VK_TRUE;
+    features13.pNext = &features12;
     VkPhysicalDeviceFeatures supported{};
     vkGetPhysicalDeviceFeatures(m_physicalDevice, &supported);
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
@@ -316,6 +328,14 @@ void Context::createDevice() {
     check(vkCreateCommandPool(m_device, &poolInfo, nullptr, &m_commandPool), "creating a command pool");
     VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     check(vkCreateFence(m_device, &fenceInfo, nullptr, &m_fence), "creating a fence");
+}
+
+VkDeviceSize Context::deviceLocalHeapSize() const {
+    VkDeviceSize largest = 0;
+    for (uint32_t i = 0; i < m_memoryProperties.memoryHeapCount; ++i)
+        if (m_memoryProperties.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+            largest = std::max(largest, m_memoryProperties.memoryHeaps[i].size);
+    return largest;
 }
 
 std::vector<std::string> Context::validationMessages() const {

@@ -64,6 +64,10 @@ public:
     bool validationEnabled() const { return m_validate; }
     bool depthClampEnabled() const { return m_depthClamp; }
     bool geometryShaderEnabled() const { return m_geometryShader; }
+    // Largest single buffer: maxMemoryAllocationSize and maxBufferSize, the smaller.
+    VkDeviceSize maxAllocationSize() const { return m_maxAllocationSize; }
+    // Size of the largest device-local memory heap (what buffers of the device can hold at most).
+    VkDeviceSize deviceLocalHeapSize() const;
 
     // Validation messages (warnings and errors) seen so far; tests assert this stays empty.
     std::vector<std::string> validationMessages() const;
@@ -98,6 +102,7 @@ private:
     VkPhysicalDevice m_physicalDevice = VK_NULL_HANDLE;
     VkPhysicalDeviceProperties m_properties{};
     VkPhysicalDeviceMemoryProperties m_memoryProperties{};
+    VkDeviceSize m_maxAllocationSize = 0;
     std::string m_deviceName;
     uint32_t m_queueFamily = 0;
     VkDevice m_device = VK_NULL_HANDLE;

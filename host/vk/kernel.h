@@ -26,8 +26,10 @@ public:
     void bind(const KernelBindings& bindings, uint32_t first = 0) { m_kernel.bind(bindings, first); }
 
     // Records one invocation per item, in workgroups of K::kGroupSize (none when items is 0).
+    // More workgroups than the device dispatches in x need K::kRowsOfGroups (the kernel numbers
+    // its items with itemIndex(), shaders/item_index.glsl): they go as rows of workgroups.
     void record(VkCommandBuffer cmd, uint64_t items, const Push& push) const {
-        m_kernel.record(cmd, groupCount(items, K::kGroupSize), &push, sizeof(Push));
+        m_kernel.record(cmd, groupCount(items, K::kGroupSize), &push, sizeof(Push), 0, kRows);
     }
     // Records the items of `range` among `total` (a window of pixels; see ItemRange).
     void record(VkCommandBuffer cmd, ItemRange range, uint64_t total, const Push& push) const {
@@ -35,6 +37,7 @@ public:
     }
 
 private:
+    static constexpr bool kRows = requires { K::kRowsOfGroups; };
     ComputeKernel m_kernel;
 };
 

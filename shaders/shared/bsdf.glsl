@@ -33,8 +33,15 @@ const uint kLobeDiffuse = 1u;
 const uint kLobeGlossy = 2u;
 const uint kLobeDelta = 4u;          // a Dirac lobe: pdf is not a density, excluded from MIS
 const uint kLobeTransmission = 8u;
+// A sample of the rough dielectric layer: kLobeDelta for the kernels that take it at full weight
+// (photons, importons, final gathers), and with this bit the camera-path integrators know it has
+// a density (pdfDielectricLayer) to weigh it against next-event estimation with.
+const uint kLobeLayer = 16u;
 
 const uint kBsdfNoEnergyCompensation = 1u;  // BsdfParams.flags: the spec's plain single-scattering GGX
+// BsdfParams.flags: the coat has its own normal, clearcoatNormal (KHR_materials_clearcoat's
+// clearcoatNormalTexture, or the unmapped surface normal under a base normal map).
+const uint kBsdfCoatNormal = 2u;
 
 // Everything the BSDF reads at one surface point (material factors x textures). Fields after
 // thinWalled are appended for KHR_materials_specular/sheen/clearcoat; construct with
@@ -54,8 +61,10 @@ struct BsdfParams {
     float clearcoatRoughness;
     uint flags;           // kBsdf* bits
     float pad0;
+    vec3 clearcoatNormal; // the coat's unit normal in the local frame; +z unless kBsdfCoatNormal
+    float pad1;
 };
-STATIC_ASSERT_SIZE(BsdfParams, 80)
+STATIC_ASSERT_SIZE(BsdfParams, 96)
 
 // The glTF defaults: a rough white dielectric of ior 1.5 with full specular, no extensions.
 INLINE BsdfParams makeBsdfParams(vec3 baseColor, float metallic, float roughness) {
@@ -74,6 +83,8 @@ INLINE BsdfParams makeBsdfParams(vec3 baseColor, float metallic, float roughness
     p.clearcoatRoughness = 0.0f;
     p.flags = 0u;
     p.pad0 = 0.0f;
+    p.clearcoatNormal = vec3(0.0f, 0.0f, 1.0f);
+    p.pad1 = 0.0f;
     return p;
 }
 
@@ -98,6 +109,42 @@ INLINE bool specularIsDelta(BsdfParams p) {
 
 INLINE bool clearcoatIsDelta(BsdfParams p) {
     return p.clearcoatRoughness < kDeltaRoughness;
+}
+
+INLINE bool hasCoatNormal(BsdfParams p) {
+    return (p.flags & kBsdfCoatNormal) != 0u;
+}
+
+// A local direction in the coat's own frame (+z = clearcoatNormal), and back. Without a coat
+// normal the frames are the same.
+INLINE vec3 toCoatFrame(BsdfParams p, vec3 w) {
+    if (!hasCoatNormal(p)) return w;
+    vec3 t;
+    vec3 b;
+    orthonormalBasis(p.clearcoatNormal, t, b);
+    return toLocal(w, t, b, p.clearcoatNormal);
+}
+
+INLINE vec3 fromCoatFrame(BsdfParams p, vec3 w) {
+    if (!hasCoatNormal(p)) return w;
+    vec3 t;
+    vec3 b;
+    orthonormalBasis(p.clearcoatNormal, t, b);
+    return toWorld(w, t, b, p.clearcoatNormal);
+}
+
+// The coat's GGX lobe (without its Fresnel): Appendix B's specular_brdf around the coat normal.
+// With a coat normal of its own, the lobe's light is weighted by the coat normal's cosine of wi
+// (as the Khronos sample viewer's NdotL of the coat) where every integrator multiplies by the
+// shading normal's: the ratio of the two is folded in here.
+INLINE float clearcoatReflection(BsdfParams p, vec3 wo, vec3 wi) {
+    if (!hasCoatNormal(p)) return ggxReflection(wo, wi, clearcoatAlpha(p));
+    vec3 coatWi = toCoatFrame(p, wi);
+    return ggxReflection(toCoatFrame(p, wo), coatWi, clearcoatAlpha(p)) * (coatWi.z / wi.z);
+}
+
+INLINE float clearcoatReflectionPdf(BsdfParams p, vec3 wo, vec3 wi) {
+    return ggxReflectionPdf(toCoatFrame(p, wo), toCoatFrame(p, wi), clearcoatAlpha(p));
 }
 
 INLINE bool energyCompensationOn(BsdfParams p) {
@@ -250,7 +297,7 @@ INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
     if (p.clearcoat > 0.0f) {
         float fc = clearcoatFresnel(p, cosH);
         f = f * (1.0f - fc);
-        if (!clearcoatIsDelta(p)) f = f + vec3(fc * ggxReflection(wo, wi, clearcoatAlpha(p)));
+        if (!clearcoatIsDelta(p)) f = f + vec3(fc * clearcoatReflection(p, wo, wi));
     }
     return f * (1.0f - p.transmission);
 }
@@ -275,7 +322,7 @@ INLINE float pdfBsdf(BsdfParams p, vec3 wo, vec3 wi) {
     BsdfLobeProbabilities q = bsdfLobeProbabilities(p, wo.z);
     float pdf = q.diffuse * cosineHemispherePdf(wi.z) + q.sheen * (0.5f * kInvPi);
     if (!specularIsDelta(p)) pdf = pdf + q.specular * ggxReflectionPdf(wo, wi, bsdfAlpha(p));
-    if (q.clearcoat > 0.0f && !clearcoatIsDelta(p)) pdf = pdf + q.clearcoat * ggxReflectionPdf(wo, wi, clearcoatAlpha(p));
+    if (q.clearcoat > 0.0f && !clearcoatIsDelta(p)) pdf = pdf + q.clearcoat * clearcoatReflectionPdf(p, wo, wi);
     return pdf * (1.0f - p.transmission);
 }
 
@@ -334,10 +381,11 @@ INLINE float pdfDielectricLayer(BsdfParams p, vec3 wo, vec3 wi, bool entering) {
 }
 
 // Samples the rough dielectric layer (roughness >= kDeltaRoughness). Its samples are distributed by
-// pdfDielectricLayer but the lobe is flagged kLobeDelta: evalBsdf and light sampling
-// do not see the dielectric layer, so integrators must take its samples at full weight (as a
-// mirror's), and photon paths pass through it like through smooth glass. Rough reflection off the
-// layer is kLobeDelta too, transmission adds kLobeTransmission.
+// pdfDielectricLayer but the lobe is flagged kLobeDelta: evalBsdf does not include the dielectric
+// layer, so integrators must take its samples at full weight (as a mirror's), and photon paths
+// pass through it like through smooth glass. Rough reflection off the layer is kLobeDelta too,
+// transmission adds kLobeTransmission; both carry kLobeLayer, with which the camera-path
+// integrators weigh them against next-event estimation (path_vertex.glsl evalVertexDirect).
 INLINE BsdfSample sampleRoughDielectricLayer(BsdfParams p, vec3 wo, bool entering, bool radiance, vec3 u) {
     BsdfSample s;
     s.lobe = kLobeNone;
@@ -353,10 +401,10 @@ INLINE BsdfSample sampleRoughDielectricLayer(BsdfParams p, vec3 wo, bool enterin
     // pdf stays 0 as for every kLobeDelta sample (pdfDielectricLayer has the layer's density).
     if (s.wi.z > 0.0f) {
         s.weight = vec3(w);
-        s.lobe = kLobeDelta;
+        s.lobe = kLobeDelta | kLobeLayer;
     } else {
         s.weight = p.baseColor * w;
-        s.lobe = kLobeDelta | kLobeTransmission;
+        s.lobe = kLobeDelta | kLobeTransmission | kLobeLayer;
     }
     return s;
 }
@@ -378,13 +426,19 @@ INLINE BsdfSample sampleBsdf(BsdfParams p, vec3 wo, bool entering, bool radiance
     float uLobe = (u.x - p.transmission) / max(1.0f - p.transmission, 1.0e-6f);
     vec3 mirror = vec3(-wo.x, -wo.y, wo.z);
     if (uLobe < q.clearcoat) {
+        // Around the coat's normal; a direction below it (or below the shading normal) is no sample.
+        vec3 coatWo = toCoatFrame(p, wo);
+        if (coatWo.z <= 0.0f) return s;
         if (clearcoatIsDelta(p)) {
-            s.wi = mirror;
-            s.weight = vec3(clearcoatFresnel(p, wo.z) / q.clearcoat);
+            s.wi = fromCoatFrame(p, vec3(-coatWo.x, -coatWo.y, coatWo.z));
+            if (s.wi.z <= 0.0f) return s;
+            s.weight = vec3(clearcoatFresnel(p, coatWo.z) / q.clearcoat);
             s.lobe = kLobeDelta;
             return s;
         }
-        s.wi = reflect(-wo, sampleGgxVisibleNormal(wo, clearcoatAlpha(p), vec2(u.y, u.z)));
+        vec3 coatWi = reflect(-coatWo, sampleGgxVisibleNormal(coatWo, clearcoatAlpha(p), vec2(u.y, u.z)));
+        if (coatWi.z <= 0.0f) return s;
+        s.wi = fromCoatFrame(p, coatWi);
         s.lobe = kLobeGlossy;
     } else if (uLobe < q.clearcoat + q.specular) {
         if (specularIsDelta(p)) {

@@ -121,8 +121,12 @@ struct GpuMaterial {
     int sheenRoughnessTexture;    // A channel
     int clearcoatTexture;         // R channel
     int clearcoatRoughnessTexture;  // G channel
+    int clearcoatNormalTexture;     // the coat's tangent-space normal map, -1 when absent
+    float clearcoatNormalScale;     // its normalTextureInfo.scale
+    uint pad2;
+    uint pad3;
 };
-STATIC_ASSERT_SIZE(GpuMaterial, 160)
+STATIC_ASSERT_SIZE(GpuMaterial, 176)
 
 const uint kLightPoint = 0u;
 const uint kLightSpot = 1u;

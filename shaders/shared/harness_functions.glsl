@@ -41,6 +41,14 @@ INLINE BsdfParams harnessBsdfParams(HarnessInput in_) {
     // KHR_materials_specular: weight 0, 0.25 .. 1 and an F0 colour up to 2 in green.
     p.specular = float((in_.u.y >> 8u) % 5u) * 0.25f;
     p.specularColor = vec3(1.0f, float((in_.u.y >> 12u) % 5u) * 0.5f, 1.0f);
+    // KHR_materials_clearcoat: none, half or full, of roughness 0.3; a third of the coats have a
+    // normal of their own, tilted 22 degrees off the shading normal.
+    p.clearcoat = float((in_.u.y >> 16u) % 3u) * 0.5f;
+    p.clearcoatRoughness = 0.3f;
+    if ((in_.u.y >> 20u) % 3u == 0u) {
+        p.clearcoatNormal = normalize(vec3(0.3f, -0.2f, 0.9f));
+        p.flags |= kBsdfCoatNormal;
+    }
     return p;
 }
 

@@ -45,5 +45,5 @@ void main() {
     uint base = q * (kMaxGatherK + 2u);
     nearestResults[base] = found;
     nearestResults[base + 1u] = floatBitsToUint(radius2);
-    for (uint j = 0u; j < found; ++j) nearestResults[base + 2u + j] = gridPhotons[heapIndex[j]].lightIndex;
+    for (uint j = 0u; j < found; ++j) nearestResults[base + 2u + j] = gridPhoton(heapIndex[j]).lightIndex;
 }

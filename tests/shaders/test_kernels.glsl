@@ -40,7 +40,7 @@ struct BsdfSamplingCase {
     BsdfParams bsdf;
     vec4 wo;                                  // xyz, in the shading frame
 };
-STATIC_ASSERT_SIZE(BsdfSamplingCase, 96)
+STATIC_ASSERT_SIZE(BsdfSamplingCase, 112)
 
 // bvh_trace_test.comp; push constants: uint rayCount.
 const uint kBvhTestRayBinding = 0u;       // TestRay
@@ -62,7 +62,7 @@ struct GatherTestParams {
     uint requiredFlags;
     uint rejectedFlags;
 };
-STATIC_ASSERT_SIZE(GatherTestParams, 112)
+STATIC_ASSERT_SIZE(GatherTestParams, 128)
 
 // shadow_visibility_test.comp: the scene's bindings, then; push constants: RasterDirectParams.
 const uint kShadowTestLightBinding = kSceneBindingCount + 0u;  // GpuLight: the raster lights

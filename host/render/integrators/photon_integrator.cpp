@@ -73,6 +73,7 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
     globalSettings.seed = frame.seed;
     globalSettings.deposit = depositSettings(deposit, deposit.mode, m_importons.get());
     globalSettings.control = &frame.control;
+    globalSettings.segmentShift = p.mapSegmentShift;
     const double area = sceneSurfaceArea(m_scene.arrays());
     const uint32_t k = p.gatherK;
     globalSettings.cellSizeFor = [k, area](uint64_t photons) { return evenSpreadRadius(k, photons, area); };
@@ -103,6 +104,7 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
         causticSettings.requiredFlags = gpu::kPhotonCaustic;
         causticSettings.cellSize = 2.0f * m_radius;
         causticSettings.control = &frame.control;
+        causticSettings.segmentShift = p.mapSegmentShift;
         // Caustics are seen directly, where density control's path importance does not reach:
         // they are deposited by importance in that mode too.
         causticSettings.deposit = depositSettings(

@@ -13,8 +13,8 @@
 namespace vkp {
 
 void PhotonIntegratorSettings::check() const {
-    checkRange("--photons", globalPaths, 1u, 1u << 26);
-    checkRange("--caustic-photons", causticPaths, 0u, 1u << 26);
+    checkRange("--photons", globalPaths, 1u, 1u << 30);  // maps of any size: docs/photon-mapping.md
+    checkRange("--caustic-photons", causticPaths, 0u, 1u << 30);
     checkRange("--gather-rays", gatherRays, 0u, 1024u);
     checkRange("--gather-k", gatherK, 1u, gpu::kMaxGatherK);
     checkRange("--radiance-photons", radiancePhotonStride, 0u, 1024u);

@@ -27,6 +27,8 @@ struct PhotonIntegratorSettings {
     float q = 0.0f;                   // --q: --photons paths fill the caustic map, the first q of them the
                                       // global map (Keller & Wald's N, q); 0: --caustic-photons paths
     DepositOptions deposit;           // --deposit and its flags
+    uint32_t mapSegmentShift = 0;     // photons per buffer of a map, log2 (0: 4 M); no flag: tests lower
+                                      // it to split small maps over many buffers (PhotonMapSettings)
 
     // Throws InputError naming the flag of a value out of range.
     void check() const;

@@ -29,6 +29,7 @@ void ProgressivePhotonIntegrator::prepare(const Frame& frame, const Film& film) 
     mapSettings.paths = p.globalPaths;
     mapSettings.maxDeposits = p.maxDeposits;
     mapSettings.seed = frame.seed;
+    mapSettings.segmentShift = m_settings.mapSegmentShift;
     mapSettings.rejectedFlags = gpu::kPhotonPrimary;
     mapSettings.cellSize = 2.0f * m_radius;
     mapSettings.control = &frame.control;  // a stopped pass keeps its paths, normalised by their number

@@ -33,6 +33,7 @@ struct PhotonDepositKernel {
 };
 struct DepositRedistributeKernel {
     static constexpr const char* kShader = "deposit_redistribute.comp";
+    static constexpr bool kRowsOfGroups = true;  // items by itemIndex(): maps past 4 M photons
     static constexpr uint32_t kBindingCount = kRedistributeRedistributedBinding + 1u;
     static constexpr uint32_t kGroupSize = kDepositGroupSize;
     using Push = RedistributeParams;

@@ -23,24 +23,28 @@ namespace vkp::gpu {
 
 struct GridCountKernel {
     static constexpr const char* kShader = "grid_count.comp";
+    static constexpr bool kRowsOfGroups = true;  // items by itemIndex(): maps past 4 M photons
     static constexpr uint32_t kBindingCount = kGridBindingCount;
     static constexpr uint32_t kGroupSize = kGridGroupSize;
     using Push = PhotonGridParams;
 };
 struct GridScatterKernel {
     static constexpr const char* kShader = "grid_scatter.comp";
+    static constexpr bool kRowsOfGroups = true;  // items by itemIndex(): maps past 4 M photons
     static constexpr uint32_t kBindingCount = kGridBindingCount;
     static constexpr uint32_t kGroupSize = kGridGroupSize;
     using Push = PhotonGridParams;
 };
 struct GridSortCellsKernel {
     static constexpr const char* kShader = "grid_sort_cells.comp";
+    static constexpr bool kRowsOfGroups = true;  // items by itemIndex(): maps past 4 M photons
     static constexpr uint32_t kBindingCount = kGridBindingCount;
     static constexpr uint32_t kGroupSize = kGridGroupSize;
     using Push = PhotonGridParams;
 };
 struct GridCopyKernel {
     static constexpr const char* kShader = "grid_copy.comp";
+    static constexpr bool kRowsOfGroups = true;  // items by itemIndex(): maps past 4 M photons
     static constexpr uint32_t kBindingCount = kGridBindingCount;
     static constexpr uint32_t kGroupSize = kGridGroupSize;
     using Push = PhotonGridParams;

@@ -69,6 +69,7 @@ struct SppmUpdateKernel {
 };
 struct RadiancePhotonsKernel {
     static constexpr const char* kShader = "radiance_photons.comp";
+    static constexpr bool kRowsOfGroups = true;  // items by itemIndex(): maps past 4 M photons
     static constexpr uint32_t kBindingCount = kRadiancePhotonsOutputBinding + 1u;
     static constexpr uint32_t kGroupSize = kPhotonEstimateGroupSize;
     using Push = RadiancePhotonParams;

@@ -32,6 +32,7 @@ struct ScanBlocksKernel {
 };
 struct ScanAddKernel {
     static constexpr const char* kShader = "scan_add.comp";
+    static constexpr bool kRowsOfGroups = true;  // items by itemIndex(): maps past 4 M photons
     static constexpr uint32_t kBindingCount = kScanAddBlockSumBinding + 1u;
     static constexpr uint32_t kGroupSize = kScanGroupSize;
     using Push = uint32_t;

@@ -1,0 +1,116 @@
+#include "vk/segmented_buffer.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "util/errors.h"
+#include "util/host_memory.h"
+#include "vk/context.h"
+
+namespace vkp::vk {
+namespace {
+
+constexpr VkDeviceSize kSegmentBytes = VkDeviceSize(1) << 27;  // 128 MiB
+constexpr VkDeviceSize kTableHeaderBytes = 16;                 // shift, mask, segments, pad (segmented.glsl)
+
+}  // namespace
+
+uint32_t SegmentedBuffer::defaultSegmentShift(const Context& context, uint32_t elementSize) {
+    const VkDeviceSize bytes = std::min(kSegmentBytes, context.maxAllocationSize());
+    return static_cast<uint32_t>(std::bit_width(std::max<VkDeviceSize>(1, bytes / elementSize)) - 1);
+}
+
+SegmentedBuffer::SegmentedBuffer(Context& context, std::string name, uint32_t elementSize, uint64_t capacity,
+                                 uint32_t segmentShift)
+    : m_context(&context), m_name(std::move(name)), m_elementSize(elementSize), m_capacity(capacity),
+      m_shift(segmentShift ? segmentShift : defaultSegmentShift(context, elementSize)) {
+    if (m_shift >= 32) throw std::logic_error("SegmentedBuffer: segments of 2^32 elements or more");
+    const uint64_t maxSegments = std::max<uint64_t>(1, (capacity + (uint64_t(1) << m_shift) - 1) >> m_shift);
+    m_table = Buffer(context, m_name + " segment table", kTableHeaderBytes + maxSegments * sizeof(VkDeviceAddress),
+                     kStorageUsage);
+    writeTable();
+}
+
+uint64_t SegmentedBuffer::segmentElements(size_t segment) const {
+    const uint64_t first = uint64_t(segment) << m_shift;
+    return std::min<uint64_t>(uint64_t(1) << m_shift, m_capacity - first);
+}
+
+void SegmentedBuffer::reserve(uint64_t count) {
+    count = std::min(count, m_capacity);
+    if (count <= m_allocated) return;
+    // A clear error before allocating what the device cannot hold. A CPU device (lavapipe)
+    // allocates host memory and reports a nominal heap (2 GiB) it does not enforce: the limit is
+    // the host's available memory, where the kernel's OOM killer would strike instead.
+    const uint64_t needed = (count - m_allocated) * m_elementSize;
+    const bool cpu = m_context->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    const uint64_t limit = cpu ? hostMemoryAvailable() : m_context->deviceLocalHeapSize() - std::min(bytes(), m_context->deviceLocalHeapSize());
+    if (needed > limit)
+        throw RuntimeError(fmt::format("the {} needs {:.1f} MiB more for {} elements but the device '{}' has {:.1f} MiB "
+                                       "{}: reduce the photon count",
+                                       m_name, needed / 1048576.0, count, m_context->deviceName(), limit / 1048576.0,
+                                       cpu ? "of host memory available" : "of memory left in its heap"));
+    const size_t firstNew = m_segments.size();
+    while (m_allocated < count) {
+        const uint64_t elements = segmentElements(m_segments.size());
+        m_segments.emplace_back(*m_context, fmt::format("{} segment {}", m_name, m_segments.size()),
+                                std::max<VkDeviceSize>(16, elements * m_elementSize), kSegmentUsage);
+        m_allocated += elements;
+    }
+    m_context->submitAndWait([&](VkCommandBuffer cmd) {
+        for (size_t i = firstNew; i < m_segments.size(); ++i) m_segments[i].fillZero(cmd);
+    });
+    writeTable();
+}
+
+void SegmentedBuffer::writeTable() {
+    std::vector<uint64_t> table(kTableHeaderBytes / sizeof(uint64_t) + m_segments.size());
+    const uint32_t header[4] = {m_shift, (1u << m_shift) - 1u, static_cast<uint32_t>(m_segments.size()), 0u};
+    std::memcpy(table.data(), header, sizeof(header));
+    for (size_t i = 0; i < m_segments.size(); ++i) table[2 + i] = m_segments[i].deviceAddress();
+    m_table.upload(table.data(), table.size() * sizeof(uint64_t));
+}
+
+uint64_t SegmentedBuffer::bytes() const {
+    uint64_t total = 0;
+    for (const Buffer& s : m_segments) total += s.size();
+    return total;
+}
+
+void SegmentedBuffer::fillZero(VkCommandBuffer cmd) const {
+    for (const Buffer& s : m_segments) s.fillZero(cmd);
+}
+
+void SegmentedBuffer::download(void* data, uint64_t first, uint64_t count) const {
+    if (first + count > m_allocated) throw RuntimeError(fmt::format("download past the end of the {}", m_name));
+    char* out = static_cast<char*>(data);
+    while (count > 0) {
+        const size_t segment = first >> m_shift;
+        const uint64_t offset = first - (uint64_t(segment) << m_shift);
+        const uint64_t n = std::min(count, segmentElements(segment) - offset);
+        m_segments[segment].download(out, n * m_elementSize, offset * m_elementSize);
+        out += n * m_elementSize;
+        first += n;
+        count -= n;
+    }
+}
+
+void SegmentedBuffer::upload(const void* data, uint64_t first, uint64_t count) {
+    reserve(first + count);
+    if (first + count > m_allocated) throw RuntimeError(fmt::format("upload past the end of the {}", m_name));
+    const char* in = static_cast<const char*>(data);
+    while (count > 0) {
+        const size_t segment = first >> m_shift;
+        const uint64_t offset = first - (uint64_t(segment) << m_shift);
+        const uint64_t n = std::min(count, segmentElements(segment) - offset);
+        m_segments[segment].upload(in, n * m_elementSize, offset * m_elementSize);
+        in += n * m_elementSize;
+        first += n;
+        count -= n;
+    }
+}
+
+}  // namespace vkp::vk

@@ -1,0 +1,65 @@
+// An array of fixed-size elements too large for one storage buffer: segments of 2^shift elements,
+// each a buffer of its own, reached by shaders through a small table of their device addresses
+// (shaders/segmented.glsl: element i lives at segment i >> shift, index i & mask). Kernels bind
+// the table like any storage buffer; segments are allocated as the array grows (reserve), and the
+// table, allocated once for the array's capacity, never moves, so bindings stay valid. Nothing
+// but the allocation limits bounds the array: maxStorageBufferRange applies to the table only.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "vk/buffer.h"
+
+namespace vkp::vk {
+
+class SegmentedBuffer {
+public:
+    SegmentedBuffer() = default;
+    // Up to `capacity` elements of `elementSize` bytes in segments of 2^segmentShift elements
+    // (0: defaultSegmentShift). Nothing is allocated until reserve().
+    SegmentedBuffer(Context& context, std::string name, uint32_t elementSize, uint64_t capacity,
+                    uint32_t segmentShift = 0);
+
+    // Makes elements [0, count) addressable (count is clamped to the capacity): allocates the
+    // missing segments, zero-filled, and rewrites the table. Throws RuntimeError (exit 1) when the
+    // device cannot hold them.
+    void reserve(uint64_t count);
+
+    const Buffer& table() const { return m_table; }  // bind this
+    uint64_t capacity() const { return m_capacity; }
+    uint64_t allocated() const { return m_allocated; }  // elements addressable
+    uint32_t segmentShift() const { return m_shift; }
+    size_t segmentCount() const { return m_segments.size(); }
+    uint64_t bytes() const;  // device memory of the allocated segments (the table aside)
+
+    void fillZero(VkCommandBuffer cmd) const;  // every allocated segment
+    // Elements [first, first + count) to or from the host (within allocated()).
+    void download(void* data, uint64_t first, uint64_t count) const;
+    void upload(const void* data, uint64_t first, uint64_t count);
+    template <typename T> std::vector<T> download(uint64_t count) const {
+        std::vector<T> out(count);
+        download(out.data(), 0, count);
+        return out;
+    }
+
+    // The largest power of two of elements whose segment stays within 128 MiB and the device's
+    // allocation limits (a segment is also the granularity of growth).
+    static uint32_t defaultSegmentShift(const Context& context, uint32_t elementSize);
+
+private:
+    void writeTable();
+    uint64_t segmentElements(size_t segment) const;
+
+    Context* m_context = nullptr;
+    std::string m_name;
+    uint32_t m_elementSize = 0;
+    uint64_t m_capacity = 0;
+    uint32_t m_shift = 0;
+    uint64_t m_allocated = 0;
+    Buffer m_table;
+    std::vector<Buffer> m_segments;
+};
+
+}  // namespace vkp::vk
