@@ -56,16 +56,24 @@ int main(int argc, char** argv) {
         settings.height = height;
         settings.samplesPerPixel = spp;
         std::vector<double> renderTimes;
-        for (uint32_t r = 0; r < std::max(1u, repeat / 2); ++r) 
+        std::vector<double> renderCpu;
+        for (uint32_t r = 0; r < std::max(1u, repeat / 2); ++r) {
+            const double cpuStart = bench::processCpuSeconds();
             renderTimes.push_back(renderer.render<PathIntegrator>(settings).stats.get<double>("timings.renderSeconds"));
+            renderCpu.push_back(bench::processCpuSeconds() - cpuStart);
+        }
         const double pathsPerSecond = pixels * spp / bench::median(renderTimes);
+        const double pathsPerCpuSecond = pixels * spp / bench::median(renderCpu);
 
         fmt::print("scene: {} ({} triangles), rays at {}x{}, path tracer at {}x{}, device: {}\n", scenePath,
                    scene.triangles.size(), raySize, raySize, width, height, context.deviceName());
-        fmt::print("| measure | value |\n|---|---|\n");
-        fmt::print("| camera rays (closest hit) | {:.2f} Mrays/s |\n", cameraMrays);
-        fmt::print("| diffuse bounce rays (closest hit) | {:.2f} Mrays/s |\n", bounceMrays);
-        fmt::print("| path tracer, {} spp, max depth {} | {:.3f} Msamples/s |\n", spp, settings.maxDepth, pathsPerSecond / 1e6);
+        fmt::print("| measure | value | per CPU-second (all threads) |\n|---|---|---|\n");
+        fmt::print("| camera rays (closest hit) | {:.2f} Mrays/s | {:.2f} Mrays |\n", cameraMrays,
+                   rays.cameraMraysPerCpuSecond);
+        fmt::print("| diffuse bounce rays (closest hit) | {:.2f} Mrays/s | {:.2f} Mrays |\n", bounceMrays,
+                   rays.bounceMraysPerCpuSecond);
+        fmt::print("| path tracer, {} spp, max depth {} | {:.3f} Msamples/s | {:.3f} Msamples |\n", spp,
+                   settings.maxDepth, pathsPerSecond / 1e6, pathsPerCpuSecond / 1e6);
         return 0;
     } catch (const std::exception& e) {
         fmt::print(stderr, "error: {}\n", e.what());

@@ -28,6 +28,11 @@ layout(std430, set = 0, binding = kSceneInstancesBinding) readonly buffer Instan
 layout(set = kSceneTextureSet, binding = kSceneTextureUnormBinding) uniform sampler2DArray sceneTexturesUnorm;
 layout(set = kSceneTextureSet, binding = kSceneTextureSrgbBinding) uniform sampler2DArray sceneTexturesSrgb;
 
+// Whether the scene has any texture (specialization constant, vk::SceneSpecialization): without,
+// no material names one, and the texture lookup, which lavapipe would run (masked) at every
+// call site for the whole SIMD group, is compiled out (issue 17, docs/bvh.md).
+layout(constant_id = kSceneHasTexturesId) const bool kSceneHasTextures = true;
+
 #include "shared/hash.glsl"
 #include "shared/photon.glsl"
 #include "shared/light_selection.glsl"
@@ -55,6 +60,7 @@ uint wrapTexel(int i, int n, uint mode) {
 // set, KHR_texture_transform, sampler); uv holds TEXCOORD_0 (xy) and TEXCOORD_1 (zw). Bilinear
 // or nearest, with the view's wrap modes; no mipmaps.
 vec4 sampleTexture(int index, vec4 uv) {
+    if (!kSceneHasTextures) return vec4(1.0f);  // never called then: compiles the lookup out (issue 17)
     GpuTexture tex = textures[index];
     vec2 set = tex.texCoord == 1u ? uv.zw : uv.xy;
     vec2 st = vec2(dot(tex.uvRow0.xyz, vec3(set, 1.0f)), dot(tex.uvRow1.xyz, vec3(set, 1.0f)));
@@ -298,7 +304,7 @@ uint instanceOfHit(uint id) {
 // The light-list index of the triangle a hit id names (GpuTriangle.v1.w), -1 when it is no
 // light; instanced triangles never are (the loader keeps emissive meshes static).
 float lightIndexOfHit(uint id) {
-    return id < instanceHeader.staticTriangles ? triangles[id].v1.w : -1.0f;
+    return !kSceneHasInstances || id < instanceHeader.staticTriangles ? triangles[id].v1.w : -1.0f;
 }
 
 // The surface at barycentrics (b1, b2) of the triangle with hit id `id`, in world space: an
@@ -309,7 +315,7 @@ float lightIndexOfHit(uint id) {
 // loop (sampleMaterialTextures); the normal map's is used here when wanted.
 SurfaceHit surfaceTexelsAt(uint id, float b1, float b2, vec3 rayDir, uint wanted, out MaterialTexels texels) {
     uint tri = id;
-    bool instanced = id >= instanceHeader.staticTriangles;
+    bool instanced = kSceneHasInstances && id >= instanceHeader.staticTriangles;  // compiled out without instances
     GpuInstance inst;
     if (instanced) {
         inst = instances[instanceOfHit(id)];

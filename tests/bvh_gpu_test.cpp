@@ -2,12 +2,16 @@
 // against brute force over all triangles and against the same traversal on the host, on a shipped
 // scene, and shadow rays that must not be occluded by the surfaces they start and end on.
 #include <cstring>
+#include <optional>
 #include <random>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
 #include "bvh/bvh.h"
 #include "bvh/scene_bvh.h"
+#include "gpu_scene/scene_buffers.h"
+#include "shared/light_selection.glsl"
 #include "gpu_test_support.h"
 #include "scene/gltf_loader.h"
 #include "shared/intersect.glsl"
@@ -33,8 +37,10 @@ struct TestHit {         // tests/shaders/bvh_trace_test.comp
 static_assert(sizeof(TestHit) == 20);
 constexpr uint32_t kNoTriangle = 0xffffffffu;
 
-// Traces `rays` through the arrays on the GPU (instances too, when the arrays have them).
-std::vector<TestHit> traceOnGpu(const gpu::BvhArrays& arrays, const std::vector<TestRay>& rays) {
+// Traces `rays` through the arrays on the GPU (instances too, when the arrays have them), with the
+// generic traversal or, given `specialization`, the one compiled for such a scene.
+std::vector<TestHit> traceOnGpu(const gpu::BvhArrays& arrays, const std::vector<TestRay>& rays,
+                                std::optional<vk::SceneSpecialization> specialization = std::nullopt) {
     vk::Context& context = test::gpu();
     std::vector<gpu::GpuBvhNode> nodes(arrays.nodes.begin(), arrays.nodes.end());
     std::vector<gpu::GpuTriangle> tris(arrays.triangles.begin(), arrays.triangles.end());
@@ -54,6 +60,7 @@ std::vector<TestHit> traceOnGpu(const gpu::BvhArrays& arrays, const std::vector<
     kernel.bind(gpu::kBvhTestTriangleBinding, triBuffer);
     kernel.bind(gpu::kBvhTestHitBinding, hitBuffer);
     kernel.bind(gpu::kBvhTestInstanceBinding, instanceBuffer);
+    if (specialization) kernel.bind(vk::KernelBindings{{}, nullptr, specialization});
     const auto count = static_cast<uint32_t>(rays.size());
     context.submitAndWait([&](VkCommandBuffer cmd) {
         kernel.record(cmd, count, count);
@@ -82,6 +89,21 @@ RayHit bruteForce(const std::vector<gpu::GpuTriangle>& tris, glm::vec3 org, glm:
         }
     }
     return best;
+}
+
+// Rays from inside and outside a scene's bounds, a fifth of them short.
+std::vector<TestRay> raysThrough(const Scene& scene, uint32_t count, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> n(-1.0f, 1.0f);
+    const glm::vec3 c = scene.bounds.center(), e = scene.bounds.extent();
+    std::vector<TestRay> rays;
+    for (uint32_t i = 0; i < count; ++i) {
+        const glm::vec3 o = c + (i % 2 ? 0.45f : 1.5f) * e * glm::vec3(n(rng), n(rng), n(rng));
+        glm::vec3 d(n(rng), n(rng), n(rng));
+        if (glm::length(d) < 1e-3f) d = glm::vec3(0.3f, 0.5f, -0.8f);
+        rays.push_back({glm::vec4(o, i % 5 == 0 ? 0.5f : 1e30f), glm::vec4(glm::normalize(d), 0.0f)});
+    }
+    return rays;
 }
 
 class BvhGpu : public test::GpuTest {};
@@ -163,16 +185,7 @@ TEST_F(BvhGpu, ShadowRaysBetweenFacingQuadsAreUnoccluded) {
 TEST_F(BvhGpu, TwoLevelHitsEqualTheHostTraversal) {
     const Scene scene = test::instancedCornell(50, 21);
     const SceneBvh bvh = buildSceneBvh(scene);
-    std::mt19937 rng(8);
-    std::uniform_real_distribution<float> n(-1.0f, 1.0f);
-    const glm::vec3 c = scene.bounds.center(), e = scene.bounds.extent();
-    std::vector<TestRay> rays;
-    for (uint32_t i = 0; i < 8000; ++i) {
-        const glm::vec3 o = c + (i % 2 ? 0.45f : 1.5f) * e * glm::vec3(n(rng), n(rng), n(rng));
-        glm::vec3 d(n(rng), n(rng), n(rng));
-        if (glm::length(d) < 1e-3f) d = glm::vec3(0.3f, 0.5f, -0.8f);
-        rays.push_back({glm::vec4(o, i % 5 == 0 ? 0.5f : 1e30f), glm::vec4(glm::normalize(d), 0.0f)});
-    }
+    const std::vector<TestRay> rays = raysThrough(scene, 8000, 8);
     const auto hits = traceOnGpu(bvh.arrays(), rays);
     uint32_t instanceHits = 0;
     for (uint32_t i = 0; i < rays.size(); ++i) {
@@ -188,6 +201,61 @@ TEST_F(BvhGpu, TwoLevelHitsEqualTheHostTraversal) {
         EXPECT_EQ(hits[i].b2, host.b2) << "ray " << i;
     }
     EXPECT_GT(instanceHits, 200u);
+}
+
+bool sameHits(const std::vector<TestHit>& a, const std::vector<TestHit>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(TestHit)) == 0;
+}
+
+// The traversal compiled for a scene without instances or alpha-tested triangles (the
+// specialization constants of vk::SceneSpecialization, docs/bvh.md "Specialized traversal") hits
+// exactly what the generic one hits there; and the constants do reach the compiled shader: told
+// "no instances", it no longer enters the instances of an instanced scene.
+TEST_F(BvhGpu, SpecializedTraversalsHitWhatTheGenericOneHits) {
+    const Scene glass = loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-glass.gltf");
+    const SceneArrays glassArrays = buildSceneArrays(glass);
+    const vk::SceneSpecialization plain = sceneSpecialization(glassArrays);
+    EXPECT_FALSE(plain.instances);
+    EXPECT_FALSE(plain.alphaTest);
+    EXPECT_FALSE(plain.textures);
+    const std::vector<TestRay> glassRays = raysThrough(glass, 8000, 5);
+    const auto generic = traceOnGpu(glassArrays.bvhArrays(), glassRays);
+    EXPECT_TRUE(sameHits(traceOnGpu(glassArrays.bvhArrays(), glassRays, plain), generic));
+
+    const Scene instanced = test::instancedCornell(50, 21);
+    SceneArrays arrays = buildSceneArrays(instanced);
+    const vk::SceneSpecialization withInstances = sceneSpecialization(arrays);
+    EXPECT_TRUE(withInstances.instances);
+    EXPECT_FALSE(withInstances.alphaTest);
+    const std::vector<TestRay> rays = raysThrough(instanced, 8000, 8);
+    const auto instancedGeneric = traceOnGpu(arrays.bvhArrays(), rays);
+    EXPECT_TRUE(sameHits(traceOnGpu(arrays.bvhArrays(), rays, withInstances), instancedGeneric));
+    const auto instanceHits = [&](const std::vector<TestHit>& hits) {
+        uint32_t n = 0;
+        for (const TestHit& h : hits) n += h.triangle != kNoTriangle && h.triangle >= arrays.topLevel.header.staticTriangles;
+        return n;
+    };
+    EXPECT_GT(instanceHits(instancedGeneric), 200u);
+    EXPECT_EQ(instanceHits(traceOnGpu(arrays.bvhArrays(), rays, plain)), 0u);
+
+    arrays.triangles[0].v0.w = 1.0f;  // one alpha-tested triangle
+    EXPECT_TRUE(sceneSpecialization(arrays).alphaTest);
+}
+
+// The light sampler a scene's kernels are compiled for is the one its selection data names, and
+// the scene refuses data of another sampler (its kernels could not read it as meant).
+TEST_F(BvhGpu, KernelsAreSpecializedForTheScenesLightSampler) {
+    const Scene glass = loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-glass.gltf");
+    const SceneArrays power = buildSceneArrays(glass);
+    LightSampling bvhSampling;
+    bvhSampling.sampler = LightSampler::Bvh;
+    const SceneArrays bvh = buildSceneArrays(glass, bvhSampling);
+    EXPECT_EQ(sceneSpecialization(power).lightSampler, gpu::kLightSamplerPower);
+    EXPECT_EQ(sceneSpecialization(bvh).lightSampler, gpu::kLightSamplerBvh);
+    SceneBuffers buffers(test::gpu(), power);
+    EXPECT_EQ(buffers.bindings().scene->lightSampler, gpu::kLightSamplerPower);
+    EXPECT_THROW(buffers.replaceLightSelection(test::gpu(), bvh.lightCdf), std::logic_error);
+    EXPECT_TRUE(buffers.replaceLightSelection(test::gpu(), power.lightCdf));
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "gpu_scene/textured_emission.h"
 #include "shared/bsdf_tables.glsl"
 #include "shared/constants.glsl"
+#include "shared/light_selection.glsl"
 #include "shared/photon.glsl"
 #include "shared/sampling.glsl"
 
@@ -298,7 +299,28 @@ SceneBuffers::SceneBuffers(vk::Context& context, const SceneArrays& a)
       m_textureArray(std::make_unique<vk::TextureArray>(context, "texture atlas", a.textureAtlas.width,
                                                         a.textureAtlas.height, a.textureAtlas.layers,
                                                         a.textureAtlas.texels)),
-      m_lightCount(static_cast<uint32_t>(a.lights.size())) {}
+      m_lightCount(static_cast<uint32_t>(a.lights.size())), m_specialization(sceneSpecialization(a)) {}
+
+namespace {
+// The mode word of light-selection data (shared/light_selection.glsl), kLightSamplerAny when there
+// is none (no lights).
+uint32_t lightSamplerOf(const std::vector<float>& selection, size_t lightCount) {
+    if (lightCount == 0 || selection.size() <= lightCount) return gpu::kLightSamplerAny;
+    uint32_t mode;
+    std::memcpy(&mode, &selection[lightCount], sizeof mode);
+    return mode;
+}
+}  // namespace
+
+vk::SceneSpecialization sceneSpecialization(const SceneArrays& a) {
+    vk::SceneSpecialization s;
+    s.instances = a.topLevel.header.instanceCount > 0;
+    s.alphaTest = std::any_of(a.triangles.begin(), a.triangles.end(),
+                              [](const gpu::GpuTriangle& t) { return t.v0.w != 0.0f; });
+    s.textures = !a.textures.empty();
+    s.lightSampler = lightSamplerOf(a.lightCdf, a.lights.size());
+    return s;
+}
 
 TextureLimits deviceTextureLimits(const vk::Context& context, uint32_t maxTextureSize) {
     const vk::TextureArrayLimits device = vk::textureArrayLimits(context);
@@ -325,10 +347,12 @@ vk::KernelBindings SceneBuffers::bindings() const {
     b[gpu::kSceneTexelsBinding] = &m_texels;
     b[gpu::kSceneTablesBinding] = &m_tables;
     b[gpu::kSceneInstancesBinding] = &m_instances;
-    return {b, m_textureArray.get()};
+    return {b, m_textureArray.get(), m_specialization};
 }
 
 void SceneBuffers::updateInstances(const SceneArrays& a) {
+    if ((a.topLevel.header.instanceCount > 0) != m_specialization.instances)  // kernels are specialized for it
+        throw std::logic_error("SceneBuffers::updateInstances: a scene cannot gain or lose its instances");
     const std::vector<uint8_t> bytes = a.instanceBytes();
     m_instances.upload(bytes.data(), bytes.size());
     const uint32_t first = a.topLevel.header.tlasRoot;
@@ -342,12 +366,21 @@ void SceneBuffers::updateLights(const SceneArrays& a) {
     if (padded(a.lights.size() * sizeof(gpu::GpuLight)) != m_lights.size() ||
         a.lightCdf.size() * sizeof(float) > m_lightCdf.size())
         throw std::logic_error("SceneBuffers::updateLights: the lights changed size or their selection data outgrew its buffer");
+    checkLightSampler(a.lightCdf);
     m_lights.upload(a.lights);
     m_lightCdf.upload(a.lightCdf);
 }
 
+void SceneBuffers::checkLightSampler(const std::vector<float>& selection) const {
+    // Kernels bound to this scene are compiled for its light sampler (sceneSpecialization).
+    if (m_specialization.lightSampler != gpu::kLightSamplerAny &&
+        lightSamplerOf(selection, m_lightCount) != m_specialization.lightSampler)
+        throw std::logic_error("SceneBuffers: new light-selection data names another light sampler than the scene's");
+}
+
 bool SceneBuffers::replaceLightSelection(vk::Context& context, const std::vector<float>& data) {
     const VkDeviceSize bytes = data.size() * sizeof(float);
+    checkLightSampler(data);
     if (bytes <= m_lightCdf.size()) {
         if (!data.empty()) m_lightCdf.upload(data);
         return true;

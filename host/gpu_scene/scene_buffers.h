@@ -76,12 +76,18 @@ vk::Buffer makeBsdfTablesBuffer(vk::Context& context);
 
 gpu::GpuCamera makeGpuCamera(const Camera& camera, uint32_t width, uint32_t height);
 
+// What the scene lets its kernels compile out (vk::SceneSpecialization): no instances, no
+// alpha-tested triangle (GpuTriangle v0.w, set from the materials above), no texture; and the
+// light sampler its selection data names.
+vk::SceneSpecialization sceneSpecialization(const SceneArrays& arrays);
+
 class SceneBuffers {
 public:
     SceneBuffers(vk::Context& context, const SceneArrays& arrays);
 
-    // The scene buffers in binding order (kSceneBindingCount of them, from binding 0) and the
-    // texture array (set gpu::kSceneTextureSet).
+    // The scene buffers in binding order (kSceneBindingCount of them, from binding 0), the
+    // texture array (set gpu::kSceneTextureSet) and the scene's specialization (kernels that trace
+    // rays switch to the pipeline compiled for it).
     vk::KernelBindings bindings() const;
     uint32_t lightCount() const { return m_lightCount; }
     // Uploads new light-selection data (the CDF, then shared/light_selection.glsl's layout): into
@@ -110,7 +116,12 @@ private:
     vk::Buffer m_tables;  // the BSDF's albedo tables (shared/bsdf_tables.glsl kBsdfTables), binding kSceneTablesBinding
     vk::Buffer m_instances;                          // GpuInstanceHeader + GpuInstance[] (docs/bvh.md)
     std::unique_ptr<vk::TextureArray> m_textureArray;
+    // Throws std::logic_error when `selection` names another light sampler than the one the
+    // scene's kernels are specialized for.
+    void checkLightSampler(const std::vector<float>& selection) const;
+
     uint32_t m_lightCount = 0;
+    vk::SceneSpecialization m_specialization;
 };
 
 }  // namespace vkp

@@ -14,12 +14,12 @@ namespace vkp::vk {
 
 ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
     : m_context(context), m_interface(std::move(interface)), m_bound(m_interface.bindingCount, false),
-      m_pipeline(context.computePipeline(m_interface)) {
+      m_pipeline(&context.computePipeline(m_interface)) {
     const VkDevice device = context.device();
     const uint32_t bufferCount = m_interface.bindingCount;
-    const VkDescriptorSetLayout setLayout = m_pipeline.bufferSetLayout();
-    const VkDescriptorSetLayout terminationLayout = m_pipeline.terminationSetLayout();
-    const VkDescriptorSetLayout textureLayout = m_pipeline.textureSetLayout();
+    const VkDescriptorSetLayout setLayout = m_pipeline->bufferSetLayout();
+    const VkDescriptorSetLayout terminationLayout = m_pipeline->terminationSetLayout();
+    const VkDescriptorSetLayout textureLayout = m_pipeline->textureSetLayout();
     const VkDescriptorPoolSize poolSizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, std::max(1u, bufferCount + 1u)},
                                                {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2u}};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -73,6 +73,7 @@ void ComputeKernel::bind(const std::vector<const Buffer*>& buffers, uint32_t fir
 void ComputeKernel::bind(const KernelBindings& bindings, uint32_t first) {
     bind(bindings.buffers, first);
     if (bindings.textures) bind(*bindings.textures);
+    if (bindings.scene) m_pipeline = &m_context.computePipeline(m_interface, *bindings.scene);
 }
 
 void ComputeKernel::bind(const TextureArray& textures) {
@@ -111,15 +112,15 @@ void ComputeKernel::record(VkCommandBuffer cmd, uint64_t groups, const void* pus
     if (pushBytes != m_interface.pushBytes)
         throw RuntimeError(fmt::format("{}: push constants are {} bytes, expected {}", m_interface.shader,
                                        pushBytes, m_interface.pushBytes));
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline.pipeline());
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline.layout(), 0, 1, &m_set, 0, nullptr);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline->pipeline());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline->layout(), 0, 1, &m_set, 0, nullptr);
     if (m_terminationSet)
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline.layout(), gpu::kTerminationSet, 1,
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline->layout(), gpu::kTerminationSet, 1,
                                 &m_terminationSet, 0, nullptr);
     if (m_textureSet)
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline.layout(), gpu::kSceneTextureSet, 1,
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline->layout(), gpu::kSceneTextureSet, 1,
                                 &m_textureSet, 0, nullptr);
-    if (pushBytes) vkCmdPushConstants(cmd, m_pipeline.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes, push);
+    if (pushBytes) vkCmdPushConstants(cmd, m_pipeline->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes, push);
     if (wide) vkCmdDispatch(cmd, kRowGroups, static_cast<uint32_t>(rowCount), 1);
     else if (groups && firstGroup) vkCmdDispatchBase(cmd, firstGroup, 0, 0, static_cast<uint32_t>(groups), 1, 1);
     else if (groups) vkCmdDispatch(cmd, static_cast<uint32_t>(groups), 1, 1);

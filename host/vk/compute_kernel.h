@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,9 +24,12 @@ class TextureArray;
 // What a resource owner binds to a kernel at once (SceneBuffers::bindings()): storage buffers at
 // bindings first, first + 1, ... of set 0 and, for kernels that declare it, the texture array of
 // set gpu::kSceneTextureSet (kernels that do not read textures ignore it).
+// A scene's bindings also say what the scene lets the traversal leave out (`scene`): binding them
+// switches a ray-tracing kernel to the pipeline specialized for it (compute_pipeline.h).
 struct KernelBindings {
     std::vector<const Buffer*> buffers;
     const TextureArray* textures = nullptr;
+    std::optional<SceneSpecialization> scene;
 };
 
 // Items first .. first + count - 1 of a dispatch (a window of pixels: --tile, --crop). Recorded
@@ -55,7 +59,8 @@ public:
     void bind(uint32_t binding, const Buffer& buffer);
     // Points bindings first, first + 1, ... at `buffers`.
     void bind(const std::vector<const Buffer*>& buffers, uint32_t first = 0);
-    // Points the buffers as above and, when the shader declares them, the scene textures.
+    // Points the buffers as above and, when the shader declares them, the scene textures; with
+    // bindings.scene, later dispatches use the pipeline specialized for that scene.
     void bind(const KernelBindings& bindings, uint32_t first = 0);
     // Points set gpu::kSceneTextureSet at `textures` (ignored when the shader declares no textures).
     void bind(const TextureArray& textures);
@@ -87,7 +92,9 @@ private:
     Context& m_context;
     KernelInterface m_interface;
     std::vector<bool> m_bound;
-    const ComputePipeline& m_pipeline;  // the context's, shared by every kernel of this interface
+    // The context's, shared by every kernel of this interface (and scene specialization); the
+    // descriptor sets, allocated with the first one's layouts, fit all of them (identical layouts).
+    const ComputePipeline* m_pipeline;
     VkDescriptorPool m_pool = VK_NULL_HANDLE;
     VkDescriptorSet m_set = VK_NULL_HANDLE;
     // The shared silent-termination counters (set gpu::kTerminationSet), when the shader declares them.

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "shared/kernels/scene.glsl"
@@ -24,8 +25,23 @@ VkDescriptorSetLayout createSetLayout(VkDevice device, const std::vector<VkDescr
 }
 }  // namespace
 
-ComputePipeline::ComputePipeline(const Context& context, const KernelInterface& interface)
-    : m_device(context.device()) {
+bool usesSceneSpecialization(std::span<const uint32_t> spirv) {
+    constexpr uint32_t kOpDecorate = 71;
+    constexpr uint32_t kDecorationSpecId = 1;
+    for (size_t i = 5; i < spirv.size();) {  // after the 5-word header: instructions (word count << 16 | opcode)
+        const uint32_t words = spirv[i] >> 16u;
+        if ((spirv[i] & 0xffffu) == kOpDecorate && words >= 4 && i + 3 < spirv.size() &&
+            spirv[i + 2] == kDecorationSpecId &&
+            (spirv[i + 3] == gpu::kSceneHasInstancesId || spirv[i + 3] == gpu::kSceneHasAlphaTestId ||
+             spirv[i + 3] == gpu::kSceneHasTexturesId || spirv[i + 3] == gpu::kSceneLightSamplerId))
+            return true;
+        i += std::max(words, 1u);
+    }
+    return false;
+}
+
+ComputePipeline::ComputePipeline(const Context& context, const KernelInterface& interface, SceneSpecialization scene)
+    : m_device(context.device()), m_name(interface.shader), m_scene(scene) {
     const std::string& name = interface.shader;
     const auto code = shaderCode(name);
     const ShaderInterface declared = checkKernelInterface(interface, code);
@@ -67,34 +83,51 @@ ComputePipeline::ComputePipeline(const Context& context, const KernelInterface& 
     layoutInfo.pushConstantRangeCount = interface.pushBytes ? 1 : 0;
     layoutInfo.pPushConstantRanges = &range;
     check(vkCreatePipelineLayout(m_device, &layoutInfo, nullptr, &m_pipelineLayout), "creating a pipeline layout");
+}
 
-    VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-    pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    pipelineInfo.stage.module = m_module;
-    pipelineInfo.stage.pName = "main";
-    pipelineInfo.layout = m_pipelineLayout;
-    pipelineInfo.flags = VK_PIPELINE_CREATE_DISPATCH_BASE_BIT;  // windows of items (ItemRange)
-    check(vkCreateComputePipelines(m_device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &m_pipeline),
-          fmt::format("creating the compute pipeline {}", name));
+VkPipeline ComputePipeline::pipeline() const {
+    std::call_once(m_compiled, [&] {
+        // Entries for constants a shader does not declare are ignored (shaders without a traversal).
+        const uint32_t values[4] = {m_scene.instances ? VK_TRUE : VK_FALSE, m_scene.alphaTest ? VK_TRUE : VK_FALSE,
+                                    m_scene.textures ? VK_TRUE : VK_FALSE, m_scene.lightSampler};
+        const VkSpecializationMapEntry entries[4] = {{gpu::kSceneHasInstancesId, 0, sizeof(VkBool32)},
+                                                     {gpu::kSceneHasAlphaTestId, 4, sizeof(VkBool32)},
+                                                     {gpu::kSceneHasTexturesId, 8, sizeof(VkBool32)},
+                                                     {gpu::kSceneLightSamplerId, 12, sizeof(uint32_t)}};
+        const VkSpecializationInfo specialization{4, entries, sizeof(values), values};
+        VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+        pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+        pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+        pipelineInfo.stage.module = m_module;
+        pipelineInfo.stage.pName = "main";
+        pipelineInfo.stage.pSpecializationInfo = &specialization;
+        pipelineInfo.layout = m_pipelineLayout;
+        pipelineInfo.flags = VK_PIPELINE_CREATE_DISPATCH_BASE_BIT;  // windows of items (ItemRange)
+        check(vkCreateComputePipelines(m_device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &m_pipeline),
+              fmt::format("creating the compute pipeline {}", m_name));
+    });
+    return m_pipeline;
 }
 
 ComputePipeline::~ComputePipeline() {
-    vkDestroyPipeline(m_device, m_pipeline, nullptr);
+    if (m_pipeline) vkDestroyPipeline(m_device, m_pipeline, nullptr);
     vkDestroyPipelineLayout(m_device, m_pipelineLayout, nullptr);
     for (VkDescriptorSetLayout layout : {m_setLayout, m_terminationLayout, m_emptyLayout, m_textureLayout})
         if (layout) vkDestroyDescriptorSetLayout(m_device, layout, nullptr);
     vkDestroyShaderModule(m_device, m_module, nullptr);
 }
 
-const ComputePipeline& ComputePipelineCache::get(const Context& context, const KernelInterface& interface) {
-    const std::string key = fmt::format("{}|{}|{}|{}", interface.shader, interface.bindingCount, interface.pushBytes,
-                                        interface.groupSize);
+const ComputePipeline& ComputePipelineCache::get(const Context& context, const KernelInterface& interface,
+                                                 SceneSpecialization scene) {
+    if (!usesSceneSpecialization(shaderCode(interface.shader))) scene = {};  // one pipeline for any scene
+    const std::string key = fmt::format("{}|{}|{}|{}|{}{}{}|{}", interface.shader, interface.bindingCount,
+                                        interface.pushBytes, interface.groupSize, int(scene.instances),
+                                        int(scene.alphaTest), int(scene.textures), scene.lightSampler);
     std::lock_guard lock(m_mutex);
     auto& slot = m_pipelines[key];
     if (!slot) {
         try {
-            slot = std::make_unique<ComputePipeline>(context, interface);
+            slot = std::make_unique<ComputePipeline>(context, interface, scene);
         } catch (...) {
             m_pipelines.erase(key);
             throw;

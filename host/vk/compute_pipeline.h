@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <string>
 
 #include <vulkan/vulkan.h>
@@ -19,15 +20,23 @@ namespace vkp::vk {
 
 class Context;
 
+// Whether SPIR-V declares the scene's specialization constants (gpu::kSceneHasInstancesId,
+// kSceneHasAlphaTestId, kSceneHasTexturesId, kSceneLightSamplerId): kernels that trace rays
+// (shared/bvh_traverse.glsl), read the scene's textures or select lights (scene_access.glsl).
+bool usesSceneSpecialization(std::span<const uint32_t> spirv);
+
 class ComputePipeline {
 public:
-    // Throws RuntimeError when the shader's SPIR-V does not declare what `interface` says.
-    ComputePipeline(const Context& context, const KernelInterface& interface);
+    // Throws RuntimeError when the shader's SPIR-V does not declare what `interface` says. The
+    // pipeline is compiled on first use (pipeline()), with `scene`'s specialization constants.
+    ComputePipeline(const Context& context, const KernelInterface& interface, SceneSpecialization scene = {});
     ~ComputePipeline();
     ComputePipeline(const ComputePipeline&) = delete;
     ComputePipeline& operator=(const ComputePipeline&) = delete;
 
-    VkPipeline pipeline() const { return m_pipeline; }
+    // Compiles on the first call (a kernel that is bound to a scene before its first dispatch
+    // never compiles the unspecialized form). Thread-safe.
+    VkPipeline pipeline() const;
     VkPipelineLayout layout() const { return m_pipelineLayout; }
     // Set 0: the storage buffers at bindings 0 .. bindingCount - 1.
     VkDescriptorSetLayout bufferSetLayout() const { return m_setLayout; }
@@ -44,14 +53,19 @@ private:
     VkDescriptorSetLayout m_emptyLayout = VK_NULL_HANDLE;  // set 1 when textures come without counters
     VkDescriptorSetLayout m_textureLayout = VK_NULL_HANDLE;
     VkPipelineLayout m_pipelineLayout = VK_NULL_HANDLE;
-    VkPipeline m_pipeline = VK_NULL_HANDLE;
+    std::string m_name;
+    SceneSpecialization m_scene;
+    mutable std::once_flag m_compiled;
+    mutable VkPipeline m_pipeline = VK_NULL_HANDLE;
 };
 
 // The pipelines a context has made, by interface; they live as long as the cache (the context's
 // lifetime). Thread-safe.
 class ComputePipelineCache {
 public:
-    const ComputePipeline& get(const Context& context, const KernelInterface& interface);
+    // One pipeline per interface and, for shaders that use them, per scene specialization.
+    const ComputePipeline& get(const Context& context, const KernelInterface& interface,
+                               SceneSpecialization scene = {});
     size_t size() const;
     void clear();
 

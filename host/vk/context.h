@@ -48,8 +48,9 @@ public:
     const Buffer& terminationCounters() const { return *m_terminationCounters; }
     // The compiled pipeline for a kernel interface: made on first use, then shared for the
     // context's lifetime (compiling is the slow part of creating a kernel on lavapipe).
-    const ComputePipeline& computePipeline(const KernelInterface& interface) const {
-        return m_pipelines.get(*this, interface);
+    // Shaders that trace rays get one per scene specialization (SceneSpecialization).
+    const ComputePipeline& computePipeline(const KernelInterface& interface, SceneSpecialization scene = {}) const {
+        return m_pipelines.get(*this, interface, scene);
     }
     // How many distinct compute pipelines this context has compiled.
     size_t computePipelineCount() const { return m_pipelines.size(); }

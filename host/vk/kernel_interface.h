@@ -19,6 +19,22 @@ struct KernelInterface {
 
 // The interface a kernel descriptor K declares: K::kShader, K::kBindingCount, K::Push,
 // K::kGroupSize (e.g. gpu::GridCountKernel in shaders/shared/kernels/grid_build.glsl).
+// What a scene lets the ray-tracing kernels leave out (shared/bvh_traverse.glsl): the
+// specialization constants gpu::kSceneHasInstancesId, kSceneHasAlphaTestId, kSceneHasTexturesId
+// and kSceneLightSamplerId. lavapipe runs both sides of every branch of a SIMD group, so code a scene
+// never needs (the instance entry in each traversal step, the alpha test after each trace, the
+// texture lookups of the shading, the light samplers the scene does not use) costs every ray
+// unless it is compiled out (issue 17,
+// docs/bvh.md "Specialized kernels"). The default keeps everything:
+// right for any scene. SceneBuffers::bindings() says what its scene has.
+struct SceneSpecialization {
+    bool instances = true;   // the scene has a top level (instanceCount > 0)
+    bool alphaTest = true;   // some triangle is alpha-tested (GpuTriangle v0.w != 0)
+    bool textures = true;    // some material has a texture (the scene's GpuTexture views)
+    uint32_t lightSampler = 0xffffffffu;  // gpu::kLightSamplerPower/Bvh/Photon, or kLightSamplerAny (read the data)
+    bool operator==(const SceneSpecialization&) const = default;
+};
+
 template <typename K> KernelInterface interfaceOf() {
     return {K::kShader, K::kBindingCount, static_cast<uint32_t>(sizeof(typename K::Push)), K::kGroupSize};
 }

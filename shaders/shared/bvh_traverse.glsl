@@ -26,6 +26,7 @@
 #include "intersect.glsl"
 #include "bvh_constants.glsl"
 #include "terminations.glsl"
+#include "kernels/scene.glsl"
 #ifdef __cplusplus
 #include <span>
 #endif
@@ -65,6 +66,20 @@ struct BvhArrays {
 #define BVH_ALPHA_TEST(triangle, tri, b1, b2, org, dir) true
 #endif
 
+// What the scene lets the traversal leave out: specialization constants of the kernels (set from
+// the bound scene, vk::SceneSpecialization; true unless the scene has no instances, or no
+// alpha-tested triangle). lavapipe runs both sides of every branch for its whole SIMD group, so
+// the instance entry in every step and the alpha test's texture lookup after every trace cost each
+// ray even in scenes without them, unless compiled out (issue 17, docs/bvh.md). The host
+// traversal keeps both.
+#ifdef __cplusplus
+constexpr bool kSceneHasInstances = true;
+constexpr bool kSceneHasAlphaTest = true;
+#else
+layout(constant_id = kSceneHasInstancesId) const bool kSceneHasInstances = true;
+layout(constant_id = kSceneHasAlphaTestId) const bool kSceneHasAlphaTest = true;
+#endif
+
 // Hit id reported by traceClosest when nothing is hit.
 const uint kBvhNoTriangle = 0xffffffffu;
 
@@ -100,7 +115,7 @@ INLINE vec3 transformVector3x4(vec4 r0, vec4 r1, vec4 r2, vec3 v) {
 // visibility rays); hits on alpha-tested ones only set alphaSeen. On a miss: false, t = tMax,
 // tri = kBvhNoTriangle.
 //
-// Two levels, one loop and one stack: the static tree (world space, root 0) is walked first
+// Two levels, one walk and one stack: the static tree (world space, root 0) is walked first
 // while the top level's root waits at the bottom of the stack. A top-level leaf enters its
 // instance: the ray goes to object space (origin and direction through worldToObject, the
 // direction not renormalised, so t means the same distance in both spaces and one running t
@@ -121,7 +136,7 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMin, uint mi
     float stackEntry[kBvhMaxDepth];
     uint sp = 0u;
     GpuInstanceHeader header = BVH_INSTANCE_HEADER;
-    if (header.instanceCount > 0u) {
+    if (kSceneHasInstances && header.instanceCount > 0u) {
         GpuBvhNode top = BVH_NODE(header.tlasRoot);
         float entry = intersectAabb(org, worldInvDir, top.boundsMin, top.boundsMax, tMax);
         if (entry < kInfinity) {
@@ -144,42 +159,25 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMin, uint mi
     uint idOffset = 0u;
     bool finished = false;
     uint step = 0u;
+    // Two nested loops ("while-while", Aila and Laine 2009): the inner one descends through inner
+    // nodes (and enters instances) until the node is a leaf or nothing is left; then the leaf's
+    // triangles are tested and the next subtree popped. lavapipe runs every branch of a loop body
+    // for its whole SIMD group, so in one loop with both branches (as before) every step paid a
+    // triangle test and a node pair; here a descent step pays only the node pair (issue 17).
+    // Each ray visits the same nodes in the same order as with one loop.
     for (; step < kBvhMaxSteps; ++step) {
-        if (visit && node.count == kBvhInstanceLeaf) {
-            GpuInstance instance = BVH_INSTANCE(node.leftOrFirst);
-            o = transformPoint3x4(instance.worldToObject[0], instance.worldToObject[1], instance.worldToObject[2], org);
-            d = transformVector3x4(instance.worldToObject[0], instance.worldToObject[1], instance.worldToObject[2], dir);
-            invDir = safeInverseDirection(d);
-            inInstance = true;
-            instanceDepth = sp;
-            idOffset = instance.firstId - instance.firstTriangle;  // modulo 2^32
-            node = BVH_NODE(instance.blasRoot);
-            continue;
-        }
-        if (visit && node.count > 0u) {
-            uint end = node.leftOrFirst + node.count;
-            for (uint i = node.leftOrFirst; i < end; ++i) {
-                GpuTriangle triangle = BVH_TRIANGLE(i);
-                float tCandidate;
-                float b1Candidate;
-                float b2Candidate;
-                if (intersectTriangle(o, d, vec3(triangle.v0), vec3(triangle.v1), vec3(triangle.v2), t,
-                                      tCandidate, b1Candidate, b2Candidate) &&
-                    (tCandidate > tMin || (tCandidate == tMin && i + idOffset > minTri))) {
-                    if (anyHit && triangle.v0.w != 0.0f) {
-                        alphaSeen = true;
-                        continue;
-                    }
-                    t = tCandidate;
-                    tri = i + idOffset;
-                    triIndex = i;
-                    b1 = b1Candidate;
-                    b2 = b2Candidate;
-                    if (anyHit) return true;
-                    backFace = dot(d, cross(vec3(triangle.v1) - vec3(triangle.v0), vec3(triangle.v2) - vec3(triangle.v0))) > 0.0f;
-                }
+        for (; step < kBvhMaxSteps && visit && (node.count == 0u || node.count == kBvhInstanceLeaf); ++step) {
+            if (kSceneHasInstances && node.count == kBvhInstanceLeaf) {
+                GpuInstance instance = BVH_INSTANCE(node.leftOrFirst);
+                o = transformPoint3x4(instance.worldToObject[0], instance.worldToObject[1], instance.worldToObject[2], org);
+                d = transformVector3x4(instance.worldToObject[0], instance.worldToObject[1], instance.worldToObject[2], dir);
+                invDir = safeInverseDirection(d);
+                inInstance = true;
+                instanceDepth = sp;
+                idOffset = instance.firstId - instance.firstTriangle;  // modulo 2^32
+                node = BVH_NODE(instance.blasRoot);
+                continue;
             }
-        } else if (visit) {
             uint left = node.leftOrFirst;
             GpuBvhNode leftNode = BVH_NODE(left);
             GpuBvhNode rightNode = BVH_NODE(left + 1u);
@@ -199,19 +197,45 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMin, uint mi
                     noteTermination(kTerminationStackOverflow);
                 }
                 node = rightFirst ? rightNode : leftNode;
-                continue;
-            }
-            if (hitLeft || hitRight) {
+            } else if (hitLeft || hitRight) {
                 node = hitLeft ? leftNode : rightNode;
-                continue;
+            } else {
+                visit = false;
             }
         }
+        if (visit && node.count > 0u && node.count != kBvhInstanceLeaf) {
+            uint end = node.leftOrFirst + node.count;
+            for (uint i = node.leftOrFirst; i < end; ++i) {
+                GpuTriangle triangle = BVH_TRIANGLE(i);
+                float tCandidate;
+                float b1Candidate;
+                float b2Candidate;
+                if (intersectTriangle(o, d, vec3(triangle.v0), vec3(triangle.v1), vec3(triangle.v2), t,
+                                      tCandidate, b1Candidate, b2Candidate) &&
+                    (tCandidate > tMin || (tCandidate == tMin && i + idOffset > minTri))) {
+                    if (kSceneHasAlphaTest && anyHit && triangle.v0.w != 0.0f) {
+                        alphaSeen = true;
+                        continue;
+                    }
+                    t = tCandidate;
+                    tri = i + idOffset;
+                    triIndex = i;
+                    b1 = b1Candidate;
+                    b2 = b2Candidate;
+                    if (anyHit) return true;
+                    backFace = dot(d, cross(vec3(triangle.v1) - vec3(triangle.v0), vec3(triangle.v2) - vec3(triangle.v0))) > 0.0f;
+                }
+            }
+            visit = false;
+        }
+        // An inner node still to visit here means the descent was cut (kBvhMaxSteps, or lavapipe's
+        // loop budget): it goes on from that node, nothing is popped past it.
+        if (visit) continue;
         // Pop the nearest pending subtree that can still hold a closer hit; the same bound as
         // intersectAabb(..., t) would apply (exit widened by kAabbExitScale). Entries below the
         // instance's depth belong to the world-space levels.
-        visit = false;
         while (sp > 0u && !visit) {
-            if (inInstance && sp == instanceDepth) {
+            if (kSceneHasInstances && inInstance && sp == instanceDepth) {
                 o = org;
                 d = dir;
                 invDir = worldInvDir;
@@ -265,7 +289,7 @@ INLINE bool traceBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool anyHi
         if (!hit) return false;
         GpuTriangle triangle = BVH_TRIANGLE(triIndex);
         if (!culledBackFace(cullBackFaces, backFace, triangle) &&
-            (triangle.v0.w == 0.0f || BVH_ALPHA_TEST(triangle, triIndex, b1, b2, org, dir))) {
+            (!kSceneHasAlphaTest || triangle.v0.w == 0.0f || BVH_ALPHA_TEST(triangle, triIndex, b1, b2, org, dir))) {
             return true;
         }
         tMin = t;

@@ -29,6 +29,7 @@
 #include "gpu_types.glsl"
 #include "light_tree.glsl"
 #include "photon_grid.glsl"
+#include "kernels/scene.glsl"
 #ifdef __cplusplus
 #include <span>
 #endif
@@ -65,7 +66,19 @@ INLINE uint lightSelectionWord(LIGHT_SELECTION_PARAM uint i) {
     return floatBitsToUint(LIGHT_SELECTION(i));
 }
 
+// The scene's light sampler as a specialization constant (vk::SceneSpecialization; issue 17):
+// lavapipe runs every branch of selectLight and selectLightPdf for the whole SIMD group, the light
+// tree's loops included, whatever the mode; a kernel compiled for the mode drops the others.
+// kLightSamplerAny (the default, and the host's): the mode word of the selection data decides.
+const uint kLightSamplerAny = 0xffffffffu;
+#ifdef __cplusplus
+constexpr uint kSceneLightSampler = kLightSamplerAny;
+#else
+layout(constant_id = kSceneLightSamplerId) const uint kSceneLightSampler = kLightSamplerAny;
+#endif
+
 INLINE uint lightSamplerMode(LIGHT_SELECTION_PARAM uint lightCount) {
+    if (kSceneLightSampler != kLightSamplerAny) return kSceneLightSampler;
     return lightSelectionWord(LIGHT_SELECTION_ARG lightCount);
 }
 

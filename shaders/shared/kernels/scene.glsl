@@ -18,6 +18,15 @@ const uint kSceneTablesBinding = 8u;     // float: the BSDF's albedo tables (sha
 const uint kSceneInstancesBinding = 9u;  // GpuInstanceHeader, then GpuInstance[] (two-level BVH, docs/bvh.md)
 const uint kSceneBindingCount = 10u;
 
+// Specialization constants (bool, default true) of kernels that trace rays, set from the bound
+// scene (vk::SceneSpecialization, docs/bvh.md "Specialized kernels"): false compiles the
+// instance code or the alpha test out of the traversal, or the texture lookup out of the shading;
+// the light sampler's mode compiles the other modes out of next-event estimation.
+const uint kSceneHasInstancesId = 0u;
+const uint kSceneHasAlphaTestId = 1u;
+const uint kSceneHasTexturesId = 2u;
+const uint kSceneLightSamplerId = 3u;  // uint: kLightSamplerPower/Bvh/Photon, or kLightSamplerAny
+
 // The textures: one RGBA8 2-D array image (host/gpu_scene/texture_atlas.h), read with texelFetch
 // through two views, in a descriptor set of their own (set 1 holds the termination counters).
 const uint kSceneTextureSet = 2u;
