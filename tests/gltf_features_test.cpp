@@ -167,6 +167,19 @@ protected:
         return renderer.render<PathIntegrator>(s).image;
     }
 
+    // The path tracer with --direct raster (the raster pass needs a perspective camera).
+    static ImageRgb rasterDirect(const Scene& scene, uint32_t spp = 2) {
+        Renderer renderer(test::gpu(), scene);
+        FrameSettings s;
+        s.width = kSize;
+        s.height = kSize;
+        s.samplesPerPixel = spp;
+        s.seed = 1;
+        s.pixelCentres = true;
+        s.direct = DirectLight::Raster;
+        return renderer.render<PathIntegrator>(s).image;
+    }
+
     static ImageRgb photonMapped(const Scene& scene) {
         Renderer renderer(test::gpu(), scene);
         FrameSettings s;
@@ -482,17 +495,7 @@ TEST_F(GltfFeatures, AlphaMaskInTheRasterPassLetsTheLightThrough) {
         q.doc()["cameras"] = {{{"type", "perspective"},
                                {"perspective", {{"yfov", 2.0 * std::atan(0.5)}, {"znear", 0.01}, {"aspectRatio", 1.0}}}}};
     };
-    const auto raster = [](const Scene& scene) {
-        Renderer renderer(test::gpu(), scene);
-        FrameSettings s;
-        s.width = kSize;
-        s.height = kSize;
-        s.samplesPerPixel = 2;
-        s.seed = 1;
-        s.pixelCentres = true;
-        s.direct = DirectLight::Raster;
-        return renderer.render<PathIntegrator>(s).image;
-    };
+    const auto raster = [](const Scene& scene) { return rasterDirect(scene); };
     const auto black = [](double alpha) { return json{{"baseColorFactor", {0, 0, 0, alpha}}}; };
     {
         QuadDoc q;  // alpha 0.3 below the cutoff 0.5: the camera and the light see through
@@ -630,6 +633,12 @@ TEST_F(GltfFeatures, ClearcoatNormalTextureTiltsTheCoatOnly) {
     EXPECT_LT(expectedCoat(mappedNormal(away), wi), 0.5f * flat);
 }
 
+// A white thin-walled glass material (transmissionFactor 1, ior 1.5) of the given roughness.
+json roughGlass(double roughness) {
+    return {{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 0}, {"roughnessFactor", roughness}}},
+            {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}};
+}
+
 // A rough thin-walled transmissive quad (transmissionFactor 1, roughness 0.5, ior 1.5, white)
 // under tiltLight's directional light (irradiance pi), seen straight down (the reflection) and
 // straight up from below (the transmission through it). The light is a Dirac, so only next-event
@@ -659,24 +668,23 @@ float roughLayer(bool transmission) {
 }
 
 TEST_F(GltfFeatures, RoughGlassIsLitByDeltaLights) {
-    const auto roughGlass = [](QuadDoc& q) {
+    const auto litPane = [](QuadDoc& q) {
         tiltLight(q);
-        q.material() = {{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0.5}}},
-                        {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}};
+        q.material() = roughGlass(0.5);
     };
     const float reflection = roughLayer(false), transmission = roughLayer(true);
     ASSERT_GT(reflection, 0.005f);
     ASSERT_GT(transmission, 0.05f);
     {
         QuadDoc q;
-        roughGlass(q);
+        litPane(q);
         const Scene scene = load(q);
         expectEverywhere(pathTraced(scene), reflection, 0.01f * reflection, "reflection, path tracer");
         expectEverywhere(photonMapped(scene), reflection, 0.01f * reflection, "reflection, photon integrator");
     }
     {
         QuadDoc q;  // the camera below, looking up (local -Z turned to +y)
-        roughGlass(q);
+        litPane(q);
         const double r = std::sqrt(0.5);
         q.doc()["nodes"][1] = {{"camera", 0}, {"translation", {0, -2, 0}}, {"rotation", {r, 0, 0, r}}};
         const Scene scene = load(q);
@@ -691,23 +699,14 @@ TEST_F(GltfFeatures, RasterLightsRoughGlassAsTracedLightDoes) {
     for (const bool below : {false, true}) {
         QuadDoc q;
         tiltLight(q);
-        q.material() = {{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0.5}}},
-                        {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}};
+        q.material() = roughGlass(0.5);
         q.doc()["cameras"] = {{{"type", "perspective"},
                                {"perspective", {{"yfov", 2.0 * std::atan(0.5)}, {"znear", 0.01}, {"aspectRatio", 1.0}}}}};
         const double r = std::sqrt(0.5);
         if (below) q.doc()["nodes"][1] = {{"camera", 0}, {"translation", {0, -2, 0}}, {"rotation", {r, 0, 0, r}}};
         const Scene scene = load(q);
         const ImageRgb traced = pathTraced(scene, 2);
-        Renderer renderer(test::gpu(), scene);
-        FrameSettings s;
-        s.width = kSize;
-        s.height = kSize;
-        s.samplesPerPixel = 2;
-        s.seed = 1;
-        s.pixelCentres = true;
-        s.direct = DirectLight::Raster;
-        const ImageRgb raster = renderer.render<PathIntegrator>(s).image;
+        const ImageRgb raster = rasterDirect(scene);
         int wrong = 0;
         double sum = 0.0;
         for (uint32_t y = 0; y < kSize; ++y)
@@ -732,8 +731,7 @@ TEST_F(GltfFeatures, RasterLightsRoughGlassAsTracedLightDoes) {
 TEST_F(GltfFeatures, RoughGlassUnderAnAreaLightMatchesBsdfSampling) {
     for (const bool below : {false, true}) {
         QuadDoc q;
-        q.material() = {{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0.3}}},
-                        {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}}}}};
+        q.material() = roughGlass(0.3);
         q.doc()["nodes"][2].erase("extensions");  // no directional light
         q.doc()["extensions"].erase("KHR_lights_punctual");
         // The emitter: corners counter-clockwise seen from below (facing -y).
