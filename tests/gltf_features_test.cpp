@@ -155,39 +155,34 @@ protected:
         return loadGltf(path);
     }
 
-    // Path tracer at pixel centres: every sample is the closed form, so a few suffice.
-    static ImageRgb pathTraced(const Scene& scene, uint32_t spp = 4) {
-        Renderer renderer(test::gpu(), scene);
+    // kSize x kSize at pixel centres (every sample of these closed forms is exact).
+    static FrameSettings centres(uint32_t spp, uint32_t seed) {
         FrameSettings s;
         s.width = kSize;
         s.height = kSize;
         s.samplesPerPixel = spp;
-        s.seed = 1;
+        s.seed = seed;
         s.pixelCentres = true;
-        return renderer.render<PathIntegrator>(s).image;
+        return s;
+    }
+
+    // Path tracer at pixel centres: every sample is the closed form, so a few suffice.
+    static ImageRgb pathTraced(const Scene& scene, uint32_t spp = 4) {
+        Renderer renderer(test::gpu(), scene);
+        return renderer.render<PathIntegrator>(centres(spp, 1)).image;
     }
 
     // The path tracer with --direct raster (the raster pass needs a perspective camera).
     static ImageRgb rasterDirect(const Scene& scene, uint32_t spp = 2) {
         Renderer renderer(test::gpu(), scene);
-        FrameSettings s;
-        s.width = kSize;
-        s.height = kSize;
-        s.samplesPerPixel = spp;
-        s.seed = 1;
-        s.pixelCentres = true;
+        FrameSettings s = centres(spp, 1);
         s.direct = DirectLight::Raster;
         return renderer.render<PathIntegrator>(s).image;
     }
 
     static ImageRgb photonMapped(const Scene& scene) {
         Renderer renderer(test::gpu(), scene);
-        FrameSettings s;
-        s.width = kSize;
-        s.height = kSize;
-        s.samplesPerPixel = 4;
-        s.seed = 2;
-        s.pixelCentres = true;
+        const FrameSettings s = centres(4, 2);
         PhotonIntegratorSettings p;
         p.globalPaths = 20000;
         p.causticPaths = 0;

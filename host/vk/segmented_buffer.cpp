@@ -87,30 +87,18 @@ void SegmentedBuffer::fillZero(VkCommandBuffer cmd) const {
 void SegmentedBuffer::download(void* data, uint64_t first, uint64_t count) const {
     if (first + count > m_allocated) throw RuntimeError(fmt::format("download past the end of the {}", m_name));
     char* out = static_cast<char*>(data);
-    while (count > 0) {
-        const size_t segment = first >> m_shift;
-        const uint64_t offset = first - (uint64_t(segment) << m_shift);
-        const uint64_t n = std::min(count, segmentElements(segment) - offset);
-        m_segments[segment].download(out, n * m_elementSize, offset * m_elementSize);
-        out += n * m_elementSize;
-        first += n;
-        count -= n;
-    }
+    forEachRun(first, count, [&](size_t segment, uint64_t offset, uint64_t n, uint64_t done) {
+        m_segments[segment].download(out + done * m_elementSize, n * m_elementSize, offset * m_elementSize);
+    });
 }
 
 void SegmentedBuffer::upload(const void* data, uint64_t first, uint64_t count) {
     reserve(first + count);
     if (first + count > m_allocated) throw RuntimeError(fmt::format("upload past the end of the {}", m_name));
     const char* in = static_cast<const char*>(data);
-    while (count > 0) {
-        const size_t segment = first >> m_shift;
-        const uint64_t offset = first - (uint64_t(segment) << m_shift);
-        const uint64_t n = std::min(count, segmentElements(segment) - offset);
-        m_segments[segment].upload(in, n * m_elementSize, offset * m_elementSize);
-        in += n * m_elementSize;
-        first += n;
-        count -= n;
-    }
+    forEachRun(first, count, [&](size_t segment, uint64_t offset, uint64_t n, uint64_t done) {
+        m_segments[segment].upload(in + done * m_elementSize, n * m_elementSize, offset * m_elementSize);
+    });
 }
 
 }  // namespace vkp::vk

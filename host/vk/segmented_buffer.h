@@ -6,6 +6,8 @@
 // but the allocation limits bounds the array: maxStorageBufferRange applies to the table only.
 #pragma once
 
+#include <algorithm>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -51,6 +53,20 @@ public:
 private:
     void writeTable();
     uint64_t segmentElements(size_t segment) const;
+    // Calls run(segment, offset in it, element count, elements done before) for each segment's
+    // part of the elements [first, first + count).
+    template <typename Run> void forEachRun(uint64_t first, uint64_t count, Run run) const {
+        uint64_t done = 0;
+        while (count > 0) {
+            const size_t segment = first >> m_shift;
+            const uint64_t offset = first - (uint64_t(segment) << m_shift);
+            const uint64_t n = std::min(count, segmentElements(segment) - offset);
+            run(segment, offset, n, done);
+            done += n;
+            first += n;
+            count -= n;
+        }
+    }
 
     Context* m_context = nullptr;
     std::string m_name;
