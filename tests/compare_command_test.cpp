@@ -121,5 +121,19 @@ TEST(CompareCommand, OtherSizesDifferAndUnreadableFilesAreBadInput) {
     EXPECT_NE(absent.output.find("absent.exr"), std::string::npos) << absent.output;
 }
 
+TEST(CompareCommand, UsageAndQuiet) {
+    const fs::path dir = test::freshTempDir("compare", "usage");
+    const RunResult help = test::runVkphoton("compare --help");
+    EXPECT_EQ(help.exitCode, kExitOk) << help.output;
+    EXPECT_NE(help.output.find("Usage"), std::string::npos) << help.output;
+    writeExr(dir / "a.exr", pattern());
+    writeExr(dir / "small.exr", makeImage(4, 4));
+    EXPECT_EQ(test::runVkphoton("compare " + (dir / "a.exr").string()).exitCode, kExitBadInput);
+    const RunResult quiet =
+        test::runVkphoton("compare --quiet " + (dir / "a.exr").string() + " " + (dir / "small.exr").string());
+    EXPECT_EQ(quiet.exitCode, kExitImagesDiffer);
+    EXPECT_EQ(quiet.output, "");
+}
+
 }  // namespace
 }  // namespace vkp
