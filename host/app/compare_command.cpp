@@ -1,8 +1,9 @@
 #include "app/compare_command.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
-#include <cstring>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -15,12 +16,6 @@
 
 namespace vkp {
 namespace {
-
-uint32_t bitsOf(float v) {
-    uint32_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    return bits;
-}
 
 // The names joined by ", ", escaped for the terminal (a channel or attribute name is the file's).
 std::string listed(const std::vector<std::string>& names) {
@@ -73,7 +68,7 @@ ExrComparison compareExrs(const std::filesystem::path& a, const std::filesystem:
         const std::vector<float> va = readExrChannel(a, name), vb = readExrChannel(b, name);
         result.values += pixels;
         for (size_t i = 0; i < pixels; ++i) {
-            if (bitsOf(va[i]) == bitsOf(vb[i])) continue;
+            if (std::bit_cast<uint32_t>(va[i]) == std::bit_cast<uint32_t>(vb[i])) continue;
             ++result.differingValues;
             pixelDiffers[i] = true;
             if (std::isfinite(va[i]) && std::isfinite(vb[i]))
