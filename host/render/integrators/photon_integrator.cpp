@@ -99,7 +99,7 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
     if (causticPaths > 0) {
         PhotonMapSettings causticSettings;
         causticSettings.paths = causticPaths;
-        causticSettings.maxDeposits = 1;  // a caustic photon is its path's first deposit
+        causticSettings.maxDeposits = 1;  // a path's first caustic photon (PhotonSettings::requiredFlags)
         causticSettings.seed = frame.seed;
         causticSettings.requiredFlags = gpu::kPhotonCaustic;
         causticSettings.cellSize = 2.0f * m_radius;
