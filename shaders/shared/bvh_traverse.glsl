@@ -51,8 +51,13 @@ struct BvhArrays {
 #else
 #define BVH_ARRAYS_PARAM
 #define BVH_ARRAYS_ARG
+#ifdef BVH_NODE_AT  // the including shader reads them its own way (scene_geometry.glsl: texel buffers)
+#define BVH_NODE(i) BVH_NODE_AT(i)
+#define BVH_TRIANGLE(i) BVH_TRIANGLE_AT(i)
+#else
 #define BVH_NODE(i) bvhNodes[i]
 #define BVH_TRIANGLE(i) triangles[i]
+#endif
 #define BVH_INSTANCE(i) instances[i]
 #define BVH_INSTANCE_HEADER instanceHeader
 #endif
