@@ -8,8 +8,12 @@
 // through R32G32B32A32_UINT views (set kSceneGeometrySet): bit-identical values, the same hits.
 // kSceneBvhTexels (specialization constant, false by default and when the device's
 // maxTexelBufferElements cannot cover the scene) keeps the storage-buffer reads.
+// The including shader declares the storage buffers bvhNodes[] and triangles[] first (as
+// scene_access.glsl and tests/shaders/bvh_trace_test.comp do).
 #ifndef VKP_SCENE_GEOMETRY_GLSL
 #define VKP_SCENE_GEOMETRY_GLSL
+#include "shared/gpu_types.glsl"
+#include "shared/kernels/scene.glsl"
 
 layout(constant_id = kSceneBvhTexelsId) const bool kSceneBvhTexels = false;
 layout(set = kSceneGeometrySet, binding = kSceneNodeTexelsBinding) uniform usamplerBuffer bvhNodeTexels;

@@ -285,22 +285,9 @@ vk::Buffer makeBsdfTablesBuffer(vk::Context& context) {
     return vk::makeStorageBuffer(context, "BSDF tables", tables);
 }
 
-namespace {
-// A storage buffer that the traversal also reads as a uniform texel buffer (scene_geometry.glsl).
-template <typename T> vk::Buffer makeTexelReadBuffer(vk::Context& context, std::string name, const std::vector<T>& data) {
-    const VkDeviceSize bytes = std::max<VkDeviceSize>(16, data.size() * sizeof(T));
-    vk::Buffer buffer(context, std::move(name), bytes, vk::kStorageUsage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-    if (!data.empty()) buffer.upload(data);
-    return buffer;
-}
-constexpr VkFormat kBvhTexelFormat = VK_FORMAT_R32G32B32A32_UINT;
-constexpr uint32_t kBvhTexelBytes = 16;
-static_assert(sizeof(gpu::GpuBvhNode) == 2 * kBvhTexelBytes && sizeof(gpu::GpuTriangle) == 3 * kBvhTexelBytes);
-}  // namespace
-
 SceneBuffers::SceneBuffers(vk::Context& context, const SceneArrays& a)
-    : m_triangles(makeTexelReadBuffer(context, "triangles", a.triangles)),
-      m_nodes(makeTexelReadBuffer(context, "BVH nodes", a.nodes)),
+    : m_triangles(vk::makeTexelReadBuffer(context, "triangles", a.triangles)),
+      m_nodes(vk::makeTexelReadBuffer(context, "BVH nodes", a.nodes)),
       m_shading(vk::makeStorageBuffer(context, "triangle shading", a.shading)),
       m_materials(vk::makeStorageBuffer(context, "materials", a.materials)),
       m_lights(vk::makeStorageBuffer(context, "lights", a.lights)),
@@ -312,16 +299,9 @@ SceneBuffers::SceneBuffers(vk::Context& context, const SceneArrays& a)
       m_textureArray(std::make_unique<vk::TextureArray>(context, "texture atlas", a.textureAtlas.width,
                                                         a.textureAtlas.height, a.textureAtlas.layers,
                                                         a.textureAtlas.texels)),
+      m_bvhTexels(context, m_nodes, a.nodes.size(), m_triangles, a.triangles.size()),
       m_lightCount(static_cast<uint32_t>(a.lights.size())), m_specialization(sceneSpecialization(a)) {
-    // Views as long as the device allows (at least one texel: the descriptors stay valid); the
-    // traversal reads through them only when they cover every node and triangle.
-    const uint64_t nodeTexels = vk::uniformTexelCapacity(context, m_nodes, kBvhTexelFormat, kBvhTexelBytes);
-    const uint64_t triangleTexels = vk::uniformTexelCapacity(context, m_triangles, kBvhTexelFormat, kBvhTexelBytes);
-    m_nodeTexels = vk::BufferView(context, m_nodes, kBvhTexelFormat, kBvhTexelBytes, std::max<uint64_t>(1, nodeTexels));
-    m_triangleTexels =
-        vk::BufferView(context, m_triangles, kBvhTexelFormat, kBvhTexelBytes, std::max<uint64_t>(1, triangleTexels));
-    m_geometry = {m_nodeTexels.handle(), m_triangleTexels.handle()};
-    m_specialization.bvhTexels = nodeTexels >= 2 * a.nodes.size() && triangleTexels >= 3 * a.triangles.size();
+    m_specialization.bvhTexels = m_bvhTexels.covers();  // else the traversal reads the storage buffers
 }
 
 namespace {
@@ -370,7 +350,7 @@ vk::KernelBindings SceneBuffers::bindings() const {
     b[gpu::kSceneTexelsBinding] = &m_texels;
     b[gpu::kSceneTablesBinding] = &m_tables;
     b[gpu::kSceneInstancesBinding] = &m_instances;
-    return {b, m_textureArray.get(), m_specialization, &m_geometry};
+    return {b, m_textureArray.get(), m_specialization, &m_bvhTexels.views()};
 }
 
 void SceneBuffers::updateInstances(const SceneArrays& a) {

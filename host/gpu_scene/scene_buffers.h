@@ -118,10 +118,7 @@ private:
     vk::Buffer m_tables;  // the BSDF's albedo tables (shared/bsdf_tables.glsl kBsdfTables), binding kSceneTablesBinding
     vk::Buffer m_instances;                          // GpuInstanceHeader + GpuInstance[] (docs/bvh.md)
     std::unique_ptr<vk::TextureArray> m_textureArray;
-    // R32G32B32A32_UINT views of m_nodes and m_triangles (shaders/scene_geometry.glsl).
-    vk::BufferView m_nodeTexels;
-    vk::BufferView m_triangleTexels;
-    vk::SceneGeometryViews m_geometry;
+    vk::BvhTexelViews m_bvhTexels;  // m_nodes and m_triangles as texel buffers (shaders/scene_geometry.glsl)
     // Throws std::logic_error when `selection` names another light sampler than the one the
     // scene's kernels are specialized for.
     void checkLightSampler(const std::vector<float>& selection) const;

@@ -1,20 +1,12 @@
 #include "vk/buffer_view.h"
 
-#include <algorithm>
 #include <utility>
 
-#include "vk/buffer.h"
+#include "shared/gpu_types.glsl"
 #include "vk/check.h"
 #include "vk/context.h"
 
 namespace vkp::vk {
-
-uint64_t uniformTexelCapacity(const Context& context, const Buffer& buffer, VkFormat format, uint32_t texelBytes) {
-    VkFormatProperties props{};
-    vkGetPhysicalDeviceFormatProperties(context.physicalDevice(), format, &props);
-    if (!(props.bufferFeatures & VK_FORMAT_FEATURE_UNIFORM_TEXEL_BUFFER_BIT)) return 0;
-    return std::min<uint64_t>(buffer.size() / texelBytes, context.properties().limits.maxTexelBufferElements);
-}
 
 BufferView::BufferView(const Context& context, const Buffer& buffer, VkFormat format, uint32_t texelBytes,
                        uint64_t texels)
@@ -24,7 +16,7 @@ BufferView::BufferView(const Context& context, const Buffer& buffer, VkFormat fo
     info.format = format;
     info.offset = 0;
     info.range = texels * texelBytes;
-    check(vkCreateBufferView(m_device, &info, nullptr, &m_view), "creating a buffer view of " + buffer.name());
+    check(vkCreateBufferView(m_device, &info, nullptr, &m_view), "creating a texel view of the " + buffer.name() + " buffer");
 }
 
 BufferView::~BufferView() {
@@ -41,6 +33,23 @@ BufferView& BufferView::operator=(BufferView&& other) noexcept {
         m_view = std::exchange(other.m_view, VK_NULL_HANDLE);
     }
     return *this;
+}
+
+namespace {
+constexpr VkFormat kBvhTexelFormat = VK_FORMAT_R32G32B32A32_UINT;  // uniform texel buffers must support it
+constexpr uint32_t kBvhTexelBytes = 16;
+static_assert(sizeof(gpu::GpuBvhNode) == 2 * kBvhTexelBytes && sizeof(gpu::GpuTriangle) == 3 * kBvhTexelBytes);
+}  // namespace
+
+BvhTexelViews::BvhTexelViews(const Context& context, const Buffer& nodes, uint64_t nodeCount, const Buffer& triangles,
+                             uint64_t triangleCount) {
+    const uint64_t maxTexels = context.properties().limits.maxTexelBufferElements;
+    const uint64_t nodeTexels = std::min(nodes.size() / kBvhTexelBytes, maxTexels);
+    const uint64_t triangleTexels = std::min(triangles.size() / kBvhTexelBytes, maxTexels);
+    m_nodes = BufferView(context, nodes, kBvhTexelFormat, kBvhTexelBytes, std::max<uint64_t>(1, nodeTexels));
+    m_triangles = BufferView(context, triangles, kBvhTexelFormat, kBvhTexelBytes, std::max<uint64_t>(1, triangleTexels));
+    m_views = {m_nodes.handle(), m_triangles.handle()};
+    m_covers = nodeTexels >= 2 * nodeCount && triangleTexels >= 3 * triangleCount;
 }
 
 }  // namespace vkp::vk

@@ -8,6 +8,9 @@
 //      readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };   // static tree at 0, meshes', top level
 //      readonly buffer Triangles { GpuTriangle triangles[]; }; // static (BVH order), then meshes'
 //      readonly buffer Instances { GpuInstanceHeader instanceHeader; GpuInstance instances[]; };
+//    A shader that defines BVH_NODE_AT(i) and BVH_TRIANGLE_AT(i) first reads nodes and triangles
+//    through them instead (scene_geometry.glsl: the same buffers as uniform texel buffers, which
+//    lavapipe reads with vector gathers; docs/bvh.md "Texel-buffer reads").
 //  - C++: every function takes a BvhArrays (spans of the same arrays) as its first argument
 //    (BVH_ARRAYS_PARAM; nothing in GLSL).
 // docs/bvh.md describes the two levels and the hit ids.
