@@ -10,6 +10,7 @@ import json
 import math
 import os
 import struct
+import zlib
 
 WHITE = (0.73, 0.73, 0.73)
 RED = (0.63, 0.065, 0.05)
@@ -566,6 +567,54 @@ def spheres_outdoor(path):
     b.write(path)
 
 
+def png_data_uri(width, height, rgb_rows):
+    """A data: URI of an 8-bit RGB PNG (rows of (r, g, b) byte triples, top row first)."""
+    def chunk(kind, payload):
+        return struct.pack(">I", len(payload)) + kind + payload + struct.pack(">I", zlib.crc32(kind + payload))
+    raw = b"".join(b"\x00" + bytes(c for texel in row for c in texel) for row in rgb_rows)
+    png = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
+           chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+    return "data:image/png;base64," + base64.b64encode(png).decode()
+
+
+def checker_floor(path):
+    """A textured floor to the horizon under a sun: texture minification (mipmaps, ray cones)."""
+    b = GltfBuilder()
+    # 256 x 256 texels: 8 x 8 cells of 32 texels, light and dark, each cell with a thin dark
+    # line along its top and left edges (detail that aliases long before the cells do).
+    size, cell = 256, 32
+    rows = []
+    for y in range(size):
+        row = []
+        for x in range(size):
+            light = (x // cell + y // cell) % 2 == 0
+            edge = x % cell < 2 or y % cell < 2
+            row.append((40, 40, 45) if edge else (230, 225, 215) if light else (120, 60, 40))
+        rows.append(row)
+    b.doc["images"] = [{"name": "checker", "uri": png_data_uri(size, size, rows)}]
+    b.doc["samplers"] = [{"magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497}]
+    b.doc["textures"] = [{"source": 0, "sampler": 0}]
+    floor = b.material("floor", (1.0, 1.0, 1.0))
+    b.doc["materials"][floor]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}
+    # 400 x 400 m, the texture repeated every 4 m (TEXCOORD_0 = position / 4).
+    h, tile = 200.0, 4.0
+    corners = [(-h, 0.0, h), (h, 0.0, h), (h, 0.0, -h), (-h, 0.0, -h)]
+    uvs = [(c[0] / tile, c[2] / tile) for c in corners]
+    payload = b"".join(struct.pack("<2f", *uv) for uv in uvs)
+    b.doc["accessors"].append({"bufferView": b._view(payload, 34962), "componentType": 5126, "count": 4, "type": "VEC2"})
+    uv_accessor = len(b.doc["accessors"]) - 1
+    b.mesh("floor", corners, [(0.0, 1.0, 0.0)] * 4, [0, 1, 2, 0, 2, 3], floor)
+    b.doc["meshes"][-1]["primitives"][0]["attributes"]["TEXCOORD_0"] = uv_accessor
+    # The sun: 3 W/m^2 (lux / 683) from 50 degrees above the horizon.
+    b.doc["extensions"] = {"KHR_lights_punctual": {"lights": [{"name": "sun", "type": "directional", "intensity": 2049.0}]}}
+    b.extensions.add("KHR_lights_punctual")
+    b.node({"name": "sun", "rotation": list(look_at_rotation((0.0, 0.0, 0.0), (0.3, -math.sin(math.radians(50)), -0.6))),
+            "extensions": {"KHR_lights_punctual": {"light": 0}}})
+    eye = (0.3, 1.6, 6.0)
+    b.camera(eye, yfov=math.radians(45), aspect=16 / 9, rotation=look_at_rotation(eye, (0.0, 0.0, -20.0)))
+    b.write(path)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "..", "scenes"))
@@ -580,6 +629,7 @@ def main():
     door_slit(os.path.join(args.out, "door-slit.gltf"))
     spheres_outdoor(os.path.join(args.out, "spheres-outdoor.gltf"))
     cubicles_1024(os.path.join(args.out, "cubicles-1024.gltf"))
+    checker_floor(os.path.join(args.out, "checker-floor.gltf"))
 
 
 if __name__ == "__main__":

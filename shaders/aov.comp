@@ -31,9 +31,8 @@ void main() {
     for (uint s = 0u; s < kAovSamples; ++s) {
         Sampler rng = makePixelSampler(s, kAovSamples, hashCombine(hashCombine(params.seed, kAovStream), pixel));
         vec2 jitter = s == 0u ? vec2(0.5f) : nextSample2(rng);
-        Ray ray = cameraRay(params.camera.position,
-                          cameraRayDirection(params.camera, params.width, params.height,
-                                             vec2(float(pixel % params.width) + jitter.x, float(pixel / params.width) + jitter.y)));
+        Ray ray = cameraRay(params.camera, params.width, params.height,
+                            vec2(float(pixel % params.width) + jitter.x, float(pixel / params.width) + jitter.y));
         for (uint bounce = 0u; bounce <= params.maxSpecularDepth; ++bounce) {
             PathVertex v;
             if (!traceVertex(ray, v)) {

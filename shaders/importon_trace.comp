@@ -27,8 +27,7 @@ void traceImporton() {
     Sampler rng = makeSampler(params.firstPath + local, hashCombine(params.seed, kImportonStream));
     vec2 film = nextSample2(rng);
     vec2 filmPixel = film * vec2(float(params.width), float(params.height));
-    Ray ray = cameraRay(cameraRayOrigin(params.camera, params.width, params.height, filmPixel),
-                      cameraRayDirection(params.camera, params.width, params.height, filmPixel));
+    Ray ray = cameraRay(params.camera, params.width, params.height, filmPixel);
     vec3 throughput = vec3(1.0f);
     // The last stored vertex y and f_r(y) cos(y) towards the next one, for the path importance.
     bool haveY = false;

@@ -58,8 +58,7 @@ PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
     vec2 jitter = nextSample2(st.rng);
     if ((params.flags & kPathFlagPixelCentres) != 0u) jitter = vec2(0.5f);
     vec2 filmPixel = vec2(float(px) + jitter.x, float(py) + jitter.y);
-    st.ray = cameraRay(cameraRayOrigin(params.camera, params.width, params.height, filmPixel),
-                     cameraRayDirection(params.camera, params.width, params.height, filmPixel));
+    st.ray = cameraRay(params.camera, params.width, params.height, filmPixel);
     st.throughput = vec3(1.0f);
     st.radiance = vec3(0.0f);
     st.lastPdf = 0.0f;

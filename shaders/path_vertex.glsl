@@ -26,6 +26,8 @@ struct Ray {
     vec3 mediumSigma;   // Beer-Lambert absorption per unit length of the KHR_materials_volume
                         // solid the ray is inside (zero outside every solid)
     bool camera;        // a camera ray (primary visibility): skips culled back faces (traceClosest)
+    float coneWidth;    // the ray cone (texture level of detail, sampleTexture): its width at the
+    float coneSpread;   // origin and its growth per unit distance; both 0: textures at level 0
 };
 
 // A ray that starts outside every solid (lights, reflections off a visible point).
@@ -35,15 +37,24 @@ Ray rayFrom(vec3 origin, vec3 dir) {
     ray.dir = dir;
     ray.mediumSigma = vec3(0.0f);
     ray.camera = false;
+    ray.coneWidth = 0.0f;
+    ray.coneSpread = 0.0f;
     return ray;
 }
 
-// A ray from the camera: what it meets first is what the image shows, so it skips the back faces
-// of single-sided opaque triangles as glTF's back-face culling does (docs/scene-format.md "Back
-// faces"); every other ray sees both faces.
-Ray cameraRay(vec3 origin, vec3 dir) {
-    Ray ray = rayFrom(origin, dir);
+// The ray from `cam` through film position `pixel` (0..width, 0..height, y down). What it meets
+// first is what the image shows, so it skips the back faces of single-sided opaque triangles as
+// glTF's back-face culling does (docs/scene-format.md "Back faces"); every other ray sees both
+// faces. Its cone is one sample's share of the pixel (the pixel's angle, or an orthographic
+// pixel's width, over sqrt(samples per pixel)): textures are filtered over what one sample
+// stands for, so few samples see no aliasing and many converge to the supersampled texture.
+Ray cameraRay(GpuCamera cam, uint width, uint height, vec2 pixel) {
+    Ray ray = rayFrom(cameraRayOrigin(cam, width, height, pixel), cameraRayDirection(cam, width, height, pixel));
     ray.camera = true;
+    float share = 1.0f / (float(height) * sqrt(float(max(cam.pixelSamples, 1u))));
+    bool orthographic = cam.orthoHalfHeight > 0.0f;
+    ray.coneWidth = orthographic ? 2.0f * cam.orthoHalfHeight * share : 0.0f;
+    ray.coneSpread = orthographic ? 0.0f : 2.0f * cam.tanHalfFovY * share;
     return ray;
 }
 
@@ -62,6 +73,7 @@ struct PathVertex {
     vec3 wo;              // local direction back along the ray, never below the horizon
     uint triangle;        // the hit triangle (BVH order) and its barycentrics (b1, b2)
     vec2 barycentrics;
+    float coneWidth;      // the ray cone's width at the hit (Ray.coneWidth)
 };
 
 // The shading frame around n (world space) and the local outgoing direction woWorld in it. An
@@ -97,7 +109,8 @@ bool traceVertex(Ray ray, out PathVertex v) {
     // Every texture of the hit's material in one loop (normal map, BSDF, emission): one inlined
     // texture lookup instead of one per texture slot (issue 17).
     MaterialTexels texels;
-    v.hit = surfaceTexelsAt(tri, b1, b2, ray.dir, ~0u, texels);
+    v.coneWidth = ray.coneWidth + ray.coneSpread * v.distance;
+    v.hit = surfaceTexelsAt(tri, b1, b2, ray.dir, v.coneWidth, ~0u, texels);
     v.triangle = tri;
     v.barycentrics = vec2(b1, b2);
     v.material = materials[v.hit.material];
@@ -196,6 +209,12 @@ vec3 evalVertexDirect(PathVertex v, LightSample ls, vec3 wi) {
 void spawnRay(PathVertex v, BsdfSample bs, inout Ray ray) {
     ray.dir = normalize(toWorld(bs.wi, v.t, v.b, v.n));
     ray.camera = false;
+    // A mirror or a smooth pane passes the cone on (as a flat surface would: the reflected or
+    // seen-through texture is filtered like a directly seen one at the same distance); any
+    // other lobe spreads the ray over far more than its cone, so later hits read level 0.
+    bool delta = (bs.lobe & (kLobeDelta | kLobeLayer)) == kLobeDelta;
+    ray.coneWidth = delta ? v.coneWidth : 0.0f;
+    ray.coneSpread = delta ? ray.coneSpread : 0.0f;
     ray.origin = offsetRayOrigin(v.hit.position, v.hit.geometricNormal, ray.dir);
     if ((bs.lobe & kLobeTransmission) != 0u && (v.material.flags & kMaterialThinWalled) == 0u)
         ray.mediumSigma = v.hit.frontFace ? v.material.attenuationCoeff : vec3(0.0f);

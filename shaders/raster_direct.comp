@@ -26,10 +26,12 @@ void rasterDirectLight() {
     uint px = pixel % params.width;
     uint py = pixel / params.width;
     vec2 filmPixel = vec2(float(px) + 0.5f, float(py) + 0.5f);
-    vec3 dir = cameraRayDirection(params.camera, params.width, params.height, filmPixel);
-    // The same vertex as the path tracer's first one (traceVertex: shading frame and all).
+    // The same vertex as the path tracer's first one (traceVertex: shading frame and all), its
+    // textures filtered over the whole pixel: this one sample stands for all of the pixel's.
+    GpuCamera camera = params.camera;
+    camera.pixelSamples = 1u;
     PathVertex v;
-    if (!traceVertex(cameraRay(cameraRayOrigin(params.camera, params.width, params.height, filmPixel), dir), v)) return;
+    if (!traceVertex(cameraRay(camera, params.width, params.height, filmPixel), v)) return;
     vec3 sideNormal = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
 
     uint mask = masks[params.maskOffset + pixel];

@@ -37,11 +37,13 @@ layout(constant_id = kSceneHasTexturesId) const bool kSceneHasTextures = true;
 #include "shared/photon.glsl"
 #include "shared/light_selection.glsl"
 #include "shared/spherical_triangle.glsl"
+#include "shared/texture_levels.glsl"
 
-// Texel (x, y) of a texture, from its atlas rectangle; sRGB textures through the sRGB view, which
-// decodes to linear.
-vec4 texelValue(GpuTexture tex, uint x, uint y) {
-    ivec3 p = ivec3(int((tex.origin & 0xffffu) + x), int((tex.origin >> 16u) + y), int(tex.layer));
+// Texel (x, y) of a texture's mipmap level whose first texel is `level` texels from the
+// rectangle's (shared/texture_levels.glsl); sRGB textures through the sRGB view, which decodes
+// to linear.
+vec4 texelValue(GpuTexture tex, uvec2 level, uint x, uint y) {
+    ivec3 p = ivec3(int((tex.origin & 0xffffu) + level.x + x), int((tex.origin >> 16u) + level.y + y), int(tex.layer));
     return tex.srgb != 0u ? texelFetch(sceneTexturesSrgb, p, 0) : texelFetch(sceneTexturesUnorm, p, 0);
 }
 
@@ -56,22 +58,16 @@ uint wrapTexel(int i, int n, uint mode) {
     return uint(((i % n) + n) % n);
 }
 
-// The one texture lookup of every material texture: `index` names a texture view (image, TEXCOORD
-// set, KHR_texture_transform, sampler); uv holds TEXCOORD_0 (xy) and TEXCOORD_1 (zw). Bilinear
-// or nearest, with the view's wrap modes; no mipmaps.
-vec4 sampleTexture(int index, vec4 uv) {
-    if (!kSceneHasTextures) return vec4(1.0f);  // never called then: compiles the lookup out (issue 17)
-    GpuTexture tex = textures[index];
-    vec2 set = tex.texCoord == 1u ? uv.zw : uv.xy;
-    vec2 st = vec2(dot(tex.uvRow0.xyz, vec3(set, 1.0f)), dot(tex.uvRow1.xyz, vec3(set, 1.0f)));
-    // Far-away coordinates lose all precision; keep them finite and the integer casts defined.
-    st = clamp(st, vec2(-1.0e6f), vec2(1.0e6f));
-    int w = int(tex.width);
-    int h = int(tex.height);
+// One mipmap level of a texture at st (uv after the view's transform): the nearest texel or
+// bilinear, with the view's wrap modes.
+vec4 sampleLevel(GpuTexture tex, vec2 st, uint level, uint texelFilter) {
+    int w = int(mipLevelSize(tex.width, level));
+    int h = int(mipLevelSize(tex.height, level));
+    uvec2 origin = uvec2(mipLevelColumn(tex.width, level), mipLevelRow(tex.height, level));
     vec2 texel = st * vec2(float(w), float(h));
-    if (tex.magFilter == kTextureFilterNearest) {
+    if (texelFilter == kTextureFilterNearest) {
         vec2 base = floor(texel);
-        return texelValue(tex, wrapTexel(int(base.x), w, tex.wrapS), wrapTexel(int(base.y), h, tex.wrapT));
+        return texelValue(tex, origin, wrapTexel(int(base.x), w, tex.wrapS), wrapTexel(int(base.y), h, tex.wrapT));
     }
     texel -= 0.5f;
     vec2 base = floor(texel);
@@ -80,9 +76,63 @@ vec4 sampleTexture(int index, vec4 uv) {
     uint x1 = wrapTexel(int(base.x) + 1, w, tex.wrapS);
     uint y0 = wrapTexel(int(base.y), h, tex.wrapT);
     uint y1 = wrapTexel(int(base.y) + 1, h, tex.wrapT);
-    vec4 a = mix(texelValue(tex, x0, y0), texelValue(tex, x1, y0), f.x);
-    vec4 b = mix(texelValue(tex, x0, y1), texelValue(tex, x1, y1), f.x);
+    vec4 a = mix(texelValue(tex, origin, x0, y0), texelValue(tex, origin, x1, y0), f.x);
+    vec4 b = mix(texelValue(tex, origin, x0, y1), texelValue(tex, origin, x1, y1), f.x);
     return mix(a, b, f.y);
+}
+
+// The one texture lookup of every material texture: `index` names a texture view (image, TEXCOORD
+// set, KHR_texture_transform, sampler); uv holds TEXCOORD_0 (xy) and TEXCOORD_1 (zw).
+// `footprint` (SurfaceHit.textureFootprint; 0: none) is, per TEXCOORD set, the uv area the ray's
+// cone covers at the hit, as a square's side squared. Times the view's uv scale and the image's
+// texels it is the texels one sample covers; its log2 / 2 is the level of detail (ray cones:
+// Akenine-Moeller et al. 2019, "Texture Level of Detail Strategies for Real-Time Ray Tracing").
+// Up to level 0 the sampler's magFilter applies; beyond, its minFilter: within a level (nearest
+// or bilinear) and between levels (level 0 only, the nearest level, or a blend of two).
+vec4 sampleTexture(int index, vec4 uv, vec2 footprint) {
+    if (!kSceneHasTextures) return vec4(1.0f);  // never called then: compiles the lookup out (issue 17)
+    GpuTexture tex = textures[index];
+    vec2 set = tex.texCoord == 1u ? uv.zw : uv.xy;
+    vec2 st = vec2(dot(tex.uvRow0.xyz, vec3(set, 1.0f)), dot(tex.uvRow1.xyz, vec3(set, 1.0f)));
+    // Far-away coordinates lose all precision; keep them finite and the integer casts defined.
+    st = clamp(st, vec2(-1.0e6f), vec2(1.0e6f));
+    float uvScale = abs(tex.uvRow0.x * tex.uvRow1.y - tex.uvRow0.y * tex.uvRow1.x);
+    float texels = (tex.texCoord == 1u ? footprint.y : footprint.x) * uvScale * float(tex.width) * float(tex.height);
+    float lod = texels > 0.0f && texels < kInfinity ? 0.5f * log2(texels) : 0.0f;
+    bool minified = lod > 0.0f;
+    uint texelFilter = minified ? tex.minFilter : tex.magFilter;
+    float level = minified && tex.mipmapMode != kTextureMipmapNone ? min(lod, float(tex.levels - 1u)) : 0.0f;
+    if (tex.mipmapMode == kTextureMipmapNearest) level = min(floor(level + 0.5f), float(tex.levels - 1u));
+    // One or two levels through one inlined sampleLevel (a loop, not two calls: lavapipe runs
+    // both sides of a branch, but leaves a loop when no lane of the group goes on).
+    uint first = uint(level);
+    float blend = level - float(first);
+    vec4 value = vec4(0.0f);
+    for (uint k = 0u; k < 2u; ++k) {
+        value += (k == 0u ? 1.0f - blend : blend) * sampleLevel(tex, st, first + k, texelFilter);
+        if (!(blend > 0.0f)) break;
+    }
+    return value;
+}
+
+// The uv area (per TEXCOORD set) a ray cone of width `coneWidth` covers where it meets the
+// triangle (world-space corners v0, v1, v2, uv in s) at an angle whose cosine to the normal is
+// `cosine`, as a square's side squared: the cone's ellipse on the surface, coneWidth^2 / cosine
+// in area, times the triangle's uv area over its world area (sampleTexture's footprint). The
+// ellipse's area, not its long axis squared (coneWidth^2 / cosine^2, Akenine-Moeller et al.'s
+// isotropic choice), sets the level: at grazing angles the long axis blurs the texture across the
+// short one, and on a textured floor to the horizon the area's level gave 2.6-4.5x less error
+// than no mipmaps at 1-64 spp where the long axis's gave 1.7x at 1 spp and more error from 16 spp
+// on (docs/benchmarks.md "Texture level of detail"). Zero without a cone.
+vec2 textureFootprint(GpuTriangleShading s, vec3 v0, vec3 v1, vec3 v2, float cosine, float coneWidth) {
+    float worldArea = length(cross(v1 - v0, v2 - v0));  // both areas doubled: the ratio is the same
+    vec2 a = s.uv01.zw - s.uv01.xy;
+    vec2 b = s.uv2 - s.uv01.xy;
+    vec2 c = s.uvB01.zw - s.uvB01.xy;
+    vec2 d = s.uvB2 - s.uvB01.xy;
+    vec2 uvArea = vec2(abs(a.x * b.y - a.y * b.x), abs(c.x * d.y - c.y * d.x));
+    float surface = coneWidth * coneWidth / (max(cosine, 1.0e-4f) * max(worldArea, 1.0e-30f));
+    return coneWidth > 0.0f ? uvArea * surface : vec2(0.0f);
 }
 
 // The texels a surface point reads from its material's textures (sampleMaterialTextures), vec4(1)
@@ -151,7 +201,7 @@ uint materialTextureSlots(GpuMaterial m, uint wanted) {
 // sampleTexture call site: lavapipe inlines a function at every call, and one call per texture
 // slot made the path tracer's shader several times larger, slower to compile and slower to run
 // even on untextured scenes (issue 17). Untextured materials run no iteration.
-MaterialTexels sampleMaterialTextures(GpuMaterial m, vec4 uv, uint slots) {
+MaterialTexels sampleMaterialTextures(GpuMaterial m, vec4 uv, vec2 footprint, uint slots) {
     MaterialTexels t;
     t.baseColor = vec4(1.0f);
     t.metallicRoughness = vec4(1.0f);
@@ -168,7 +218,7 @@ MaterialTexels sampleMaterialTextures(GpuMaterial m, vec4 uv, uint slots) {
     for (uint k = 0u; k < kMaterialTextureSlots && slots != 0u; ++k) {
         uint slot = uint(findLSB(slots));
         slots &= slots - 1u;
-        vec4 v = sampleTexture(materialTexture(m, slot), uv);
+        vec4 v = sampleTexture(materialTexture(m, slot), uv, footprint);
         switch (slot) {
         case kMaterialTextureBaseColor: t.baseColor = v; break;
         case kMaterialTextureMetallicRoughness: t.metallicRoughness = v; break;
@@ -207,7 +257,7 @@ bool alphaPasses(uint tri, float b1, float b2, vec3 org, vec3 dir) {
     GpuMaterial m = materials[s.material];
     if ((m.flags & (kMaterialAlphaMask | kMaterialAlphaBlend)) == 0u) return true;
     float alpha = m.baseColor.a * vertexColor(s, b1, b2).a;
-    if (m.baseColorTexture >= 0) alpha *= sampleTexture(m.baseColorTexture, interpolatedUv(s, b1, b2)).a;
+    if (m.baseColorTexture >= 0) alpha *= sampleTexture(m.baseColorTexture, interpolatedUv(s, b1, b2), vec2(0.0f)).a;
     if ((m.flags & kMaterialAlphaMask) != 0u) return alpha >= m.alphaCutoff;
     uint h = hashCombine(pcgHash(tri), floatBitsToUint(org.x));
     h = hashCombine(h, floatBitsToUint(org.y));
@@ -249,7 +299,7 @@ vec3 emittedRadianceOf(GpuMaterial m, MaterialTexels texels) {
 vec3 emittedRadiance(GpuMaterial m, vec4 uv) {
     vec3 e = m.emissive;
     if (m.emissiveTexture >= 0 && (e.r > 0.0f || e.g > 0.0f || e.b > 0.0f))
-        e *= sampleTexture(m.emissiveTexture, uv).rgb;
+        e *= sampleTexture(m.emissiveTexture, uv, vec2(0.0f)).rgb;
     return e;
 }
 
@@ -262,6 +312,7 @@ struct SurfaceHit {
                             // or the base has a normal map the coat does not follow (the extension:
                             // without clearcoatNormalTexture the coat is not normal-mapped)
     vec4 uv;                // TEXCOORD_0 (xy) and TEXCOORD_1 (zw)
+    vec2 textureFootprint;  // the ray cone's uv area per TEXCOORD set (sampleTexture); 0: level 0
     vec4 color;             // COLOR_0 (1 when the mesh has none)
     uint material;
     float emitterPdfArea;
@@ -313,8 +364,11 @@ float lightIndexOfHit(uint id) {
 // by the inverse transpose; a mirroring transform reverses the winding, so the geometric normal is
 // negated and the tangent handedness flipped, as the loader does for flattened meshes).
 // `wanted`: the material texture slots (bits 1 << kMaterialTexture*) to sample there, all in one
-// loop (sampleMaterialTextures); the normal map's is used here when wanted.
-SurfaceHit surfaceTexelsAt(uint id, float b1, float b2, vec3 rayDir, uint wanted, out MaterialTexels texels) {
+// loop (sampleMaterialTextures); the normal map's is used here when wanted. `coneWidth`: the width
+// of the ray's cone at the hit (Ray.coneWidth and coneSpread), which picks the textures' mipmap
+// levels; 0 reads level 0.
+SurfaceHit surfaceTexelsAt(uint id, float b1, float b2, vec3 rayDir, float coneWidth, uint wanted,
+                           out MaterialTexels texels) {
     uint tri = id;
     bool instanced = kSceneHasInstances && id >= instanceHeader.staticTriangles;  // compiled out without instances
     GpuInstance inst;
@@ -338,6 +392,7 @@ SurfaceHit surfaceTexelsAt(uint id, float b1, float b2, vec3 rayDir, uint wanted
     hit.position = b0 * v0 + b1 * v1 + b2 * v2;
     hit.geometricNormal = normalize(cross(v1 - v0, v2 - v0)) * (mirrored ? -1.0f : 1.0f);
     hit.uv = interpolatedUv(s, b1, b2);
+    hit.textureFootprint = textureFootprint(s, v0, v1, v2, abs(dot(rayDir, hit.geometricNormal)), coneWidth);
     hit.color = vertexColor(s, b1, b2);
     vec3 n = b0 * decodeOctahedral(s.n0) + b1 * decodeOctahedral(s.n1) + b2 * decodeOctahedral(s.n2);
     if (instanced)  // inverse transpose: the columns of worldToObject's 3x3 part
@@ -347,7 +402,7 @@ SurfaceHit surfaceTexelsAt(uint id, float b1, float b2, vec3 rayDir, uint wanted
     GpuMaterial m = materials[s.material];
     if (s.tangentSign == kTangentNone) wanted &= ~kNormalMapSlots;
     uint slots = materialTextureSlots(m, wanted);
-    texels = sampleMaterialTextures(m, hit.uv, slots);
+    texels = sampleMaterialTextures(m, hit.uv, hit.textureFootprint, slots);
     vec3 coat = n;  // the coat's normal: not the base's normal map (KHR_materials_clearcoat)
     hit.hasCoatNormal = m.clearcoat > 0.0f && (slots & kNormalMapSlots) != 0u;
     if ((slots & kNormalMapSlots) != 0u) {
@@ -373,9 +428,9 @@ SurfaceHit surfaceTexelsAt(uint id, float b1, float b2, vec3 rayDir, uint wanted
 }
 
 // The surface with its normal maps applied (surfaceTexelsAt without other textures).
-SurfaceHit surfaceAt(uint id, float b1, float b2, vec3 rayDir) {
+SurfaceHit surfaceAt(uint id, float b1, float b2, vec3 rayDir, float coneWidth) {
     MaterialTexels texels;
-    return surfaceTexelsAt(id, b1, b2, rayDir, kNormalMapSlots, texels);
+    return surfaceTexelsAt(id, b1, b2, rayDir, coneWidth, kNormalMapSlots, texels);
 }
 
 // The material texture slots the BSDF reads (all but emissive and the normal maps).
@@ -395,13 +450,10 @@ BsdfParams bsdfParamsOf(GpuMaterial m, MaterialTexels texels) {
     return p;
 }
 
-// The material's parameters at a surface point: uv holds both TEXCOORD sets (SurfaceHit.uv).
-BsdfParams bsdfParamsAt(GpuMaterial m, vec4 uv) {
-    return bsdfParamsOf(m, sampleMaterialTextures(m, uv, materialTextureSlots(m, kBsdfTextureSlots)));
-}
-
+// The material's parameters at a surface point (its TEXCOORD sets and texture footprint).
 BsdfParams bsdfParamsAtHit(GpuMaterial m, SurfaceHit hit) {
-    BsdfParams p = bsdfParamsAt(m, hit.uv);
+    BsdfParams p = bsdfParamsOf(m, sampleMaterialTextures(m, hit.uv, hit.textureFootprint,
+                                                          materialTextureSlots(m, kBsdfTextureSlots)));
     p.baseColor *= hit.color.rgb;
     return p;
 }

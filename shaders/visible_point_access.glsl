@@ -18,7 +18,8 @@ struct VisibleSurface {
 
 VisibleSurface visibleSurface(GpuVisiblePoint vp) {
     VisibleSurface s;
-    SurfaceHit hit = surfaceAt(vp.triangle, vp.barycentrics.x, vp.barycentrics.y, vec3(0.0f));
+    // The textures at the levels the camera path read them (traceVertex).
+    SurfaceHit hit = surfaceAt(vp.triangle, vp.barycentrics.x, vp.barycentrics.y, -decodeOctahedral(vp.wo), vp.coneWidth);
     s.bsdf = bsdfParamsAtHit(materials[vp.material], hit);
     s.n = decodeOctahedral(vp.shadingNormal);
     shadingFrame(s.n, decodeOctahedral(vp.wo), s.t, s.b, s.wo);  // as traceVertex set it up

@@ -37,8 +37,7 @@ void findVisiblePoint() {
     vec2 jitter = nextSample2(rng);
     if ((params.flags & kPathFlagPixelCentres) != 0u) jitter = vec2(0.5f);
     vec2 filmPixel = vec2(float(pixel % params.width) + jitter.x, float(pixel / params.width) + jitter.y);
-    Ray ray = cameraRay(cameraRayOrigin(params.camera, params.width, params.height, filmPixel),
-                      cameraRayDirection(params.camera, params.width, params.height, filmPixel));
+    Ray ray = cameraRay(params.camera, params.width, params.height, filmPixel);
     vec3 throughput = vec3(1.0f);
     vec3 radiance = vec3(0.0f);
     bool lastDelta = true;  // the camera ray, then: was the last bounce a delta lobe
@@ -56,7 +55,7 @@ void findVisiblePoint() {
     vp.flags = 0u;
     vp.pixel = pixel;
     vp.triangle = 0u;
-    vp.pad1 = 0u;
+    vp.coneWidth = 0.0f;
 
     for (uint depth = 0u; depth <= params.maxSpecularDepth; ++depth) {
         PathVertex v;
@@ -95,6 +94,7 @@ void findVisiblePoint() {
             vp.shadingNormal = encodeOctahedral(v.n);
             vp.barycentrics = v.barycentrics;
             vp.triangle = v.triangle;
+            vp.coneWidth = v.coneWidth;
             vp.wo = encodeOctahedral(-ray.dir);
             vp.geometricNormal = encodeOctahedral(v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal);
             vp.flags = kVisiblePointValid | (v.hit.frontFace ? kVisiblePointFrontFace : 0u);

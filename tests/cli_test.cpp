@@ -127,6 +127,30 @@ TEST(Cli, RenderWritesExrPngAndStats) {
         EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
 }
 
+// --no-mipmaps reaches the renderer: on the checker floor (a texture minified to the horizon)
+// the two images differ, and the atlas holds no levels (smaller); --mipmaps is the default.
+TEST(Cli, NoMipmapsReadsFullResolutionTexels) {
+    const fs::path dir = tempDir("mipmaps");
+    const std::string floor = std::string(VKPHOTON_SCENES) + "/checker-floor.gltf";
+    const auto render = [&](const std::string& flag) {
+        const fs::path exr = dir / (flag.empty() ? "default.exr" : flag.substr(2) + ".exr");
+        const fs::path stats = dir / (exr.stem().string() + ".json");
+        const RunResult r = runVkphoton("render " + floor + " --validate --spp 1 --width 48 --height 27 --seed 3 " +
+                                        flag + " -o " + exr.string() + " --stats-json " + stats.string());
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        std::ifstream in(stats);
+        const nlohmann::json j = nlohmann::json::parse(in);
+        return std::make_pair(readExr(exr).pixels, j["scene_stats"]["textureAtlasBytes"].get<uint64_t>());
+    };
+    const auto [byDefault, defaultBytes] = render("");
+    const auto [mipmapped, mipmappedBytes] = render("--mipmaps");
+    const auto [levelZero, levelZeroBytes] = render("--no-mipmaps");
+    EXPECT_EQ(byDefault, mipmapped);
+    EXPECT_NE(mipmapped, levelZero);
+    EXPECT_EQ(defaultBytes, mipmappedBytes);
+    EXPECT_LT(levelZeroBytes, mipmappedBytes);
+}
+
 TEST(Cli, PhotonIntegratorRendersAndReportsItsMaps) {
     const fs::path dir = tempDir("photon");
     const fs::path exr = dir / "box.exr";

@@ -384,7 +384,7 @@ TEST_F(GltfFeatures, MaxTextureSizeKeepsAKnownTexel) {
         }
     QuadDoc q;
     q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {
-        {"index", q.texture(pngUri(8, 8, rgba), {{"magFilter", 9728}})}};
+        {"index", q.texture(pngUri(8, 8, rgba), {{"magFilter", 9728}, {"minFilter", 9728}})}};
     const auto expectKnownTexel = [](const ImageRgb& a) {
         EXPECT_NEAR(pixel(a, at(0.3f), at(0.6f)), 0.8f, 1e-3f);
         EXPECT_NEAR(pixel(a, at(0.1f), at(0.6f)), 0.0f, 1e-3f);
@@ -412,6 +412,87 @@ TEST_F(GltfFeatures, MaxTextureSizeKeepsAKnownTexel) {
         expectKnownTexel(renderer.render<PathIntegrator>(s).image);
     }
     ::unsetenv("VKPHOTON_TEXTURE_BUDGET_BYTES");
+}
+
+// A width x width checkerboard of black and white texels (sRGB 0 and 255).
+std::string checkerUri(int width) {
+    std::vector<uint8_t> rgba;
+    for (int y = 0; y < width; ++y)
+        for (int x = 0; x < width; ++x) {
+            const uint8_t v = (x + y) % 2 ? 255 : 0;
+            rgba.insert(rgba.end(), {v, v, v, 255});
+        }
+    return pngUri(width, width, rgba);
+}
+
+// Every mipmap level past 0 of a one-texel checkerboard is its mean, linear 0.5, stored in sRGB
+// as byte 188 (round(255 * linearToSrgb(0.5))): about 0.5029 in linear light.
+float checkerMean() {
+    return std::pow((188.0f / 255.0f + 0.055f) / 1.055f, 2.4f);
+}
+
+// A 256^2 one-texel checkerboard on the quad: each of the 32^2 pixels covers 8x8 texels, each of
+// the 4 samples (pixel centres) 4x4, so its ray cone reads level 2, the checkerboard's mean (the
+// linear mean, not sRGB mid-grey's 0.21). Without mipmaps every pixel centre falls on the same
+// texel parity (texel 8x + 4): an aliased image of one colour. Orthographic and perspective
+// cameras (the two cone shapes), the path tracer and the photon integrator (whose visible points
+// keep their cone for the gathers' BSDF).
+TEST_F(GltfFeatures, MinifiedTextureIsFilteredByRayConesNotAliased) {
+    const auto checkerQuad = [&](json sampler) {
+        QuadDoc q;
+        q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", q.texture(checkerUri(256), sampler)}};
+        return q;
+    };
+    const float filtered = 0.8f * checkerMean();
+    {
+        // No minFilter: vkphoton's choice, trilinear. magFilter NEAREST, which --no-mipmaps
+        // then uses for minified texels too: the aliased image.
+        QuadDoc q = checkerQuad({{"magFilter", 9728}});
+        const Scene scene = load(q);
+        expectEverywhere(pathTraced(scene), filtered, 1e-3f, "path tracer, orthographic");
+        expectEverywhere(photonMapped(scene), filtered, 1e-3f, "photon integrator, orthographic");
+        Scene plain = scene;
+        disableMipmaps(plain);
+        const ImageRgb aliased = pathTraced(plain);
+        const float first = pixel(aliased, 0, 0);
+        EXPECT_TRUE(std::abs(first) < 1e-3f || std::abs(first - 0.8f) < 1e-3f) << first;
+        expectEverywhere(aliased, first, 1e-3f, "--no-mipmaps");
+    }
+    {
+        QuadDoc q = checkerQuad(nullptr);
+        // A pinhole 2 above the quad whose view is exactly the quad (tan(yfov / 2) = 1 / 2).
+        q.doc()["cameras"] = {{{"type", "perspective"},
+                               {"perspective", {{"yfov", 2.0 * std::atan(0.5)}, {"aspectRatio", 1.0}, {"znear", 0.01}}}}};
+        expectEverywhere(pathTraced(load(q)), filtered, 1e-3f, "path tracer, perspective");
+    }
+    // The sampler's minFilter: *_MIPMAP_NEAREST filters too (level 2 exactly); NEAREST and
+    // LINEAR ask for no mipmaps (LINEAR at these texel centres mixes 2x2 texels: 0.5 by chance).
+    for (const int minFilter : {9984, 9985, 9986, 9728}) {
+        QuadDoc q = checkerQuad({{"minFilter", minFilter}});
+        const ImageRgb image = pathTraced(load(q));
+        if (minFilter == 9728) {
+            EXPECT_GT(std::abs(pixel(image, 5, 7) - filtered), 0.3f) << "NEAREST: no mipmaps";
+        } else {
+            expectEverywhere(image, filtered, 1e-3f, ("minFilter " + std::to_string(minFilter)).c_str());
+        }
+    }
+}
+
+// A magnified texture (8^2 texels, 4x4 pixels each) is read at level 0 with magFilter, as before
+// mipmaps: the image equals --no-mipmaps' bit for bit. A cone even 10x too wide would reach
+// level 1 here and differ.
+TEST_F(GltfFeatures, MagnifiedTextureIsReadAtLevelZero) {
+    QuadDoc q;
+    q.material()["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", q.texture(checkerUri(8))}};
+    const Scene scene = load(q);
+    Scene plain = scene;
+    disableMipmaps(plain);
+    const ImageRgb mipmapped = pathTraced(scene), level0 = pathTraced(plain);
+    ASSERT_EQ(mipmapped.pixels.size(), level0.pixels.size());
+    EXPECT_EQ(mipmapped.pixels, level0.pixels);
+    float lo = 1.0f, hi = 0.0f;
+    for (const float v : level0.pixels) { lo = std::min(lo, v); hi = std::max(hi, v); }
+    EXPECT_GT(hi - lo, 0.4f) << "the checkerboard is visible";
 }
 
 // A second quad 1 above the floor, scaled by 1.2 so it covers the floor from the camera and the

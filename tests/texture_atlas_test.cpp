@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "gpu_scene/texture_atlas.h"
+#include "shared/texture_levels.glsl"
 
 namespace vkp {
 namespace {
@@ -55,6 +56,76 @@ TEST(TextureAtlas, PackingKeepsEveryTexelAndNoTwoTexturesOverlap) {
                 o = static_cast<int>(i);
             }
     }
+}
+
+// Mipmapped textures: every level is the box-filter halving of the one before (halveTexture), at
+// the texels shared/texture_levels.glsl names, and no texture's levels overlap another's texels.
+TEST(TextureAtlas, MipmapLevelsLieWhereTheShaderReadsThem) {
+    std::vector<Texture> textures;
+    const uint32_t sizes[][2] = {{64, 64}, {16, 48}, {33, 7}, {64, 1}, {1, 1}, {5, 3}, {1, 9}, {64, 30}};
+    std::vector<bool> mipmapped;
+    for (uint32_t i = 0; i < 8; ++i) {
+        textures.push_back(makeTexture("t" + std::to_string(i), sizes[i][0], sizes[i][1], i, i % 2 == 0));
+        mipmapped.push_back(i != 7);  // the last one without levels
+    }
+    const TextureAtlas a = buildTextureAtlas(textures, {}, mipmapped);
+    std::vector<int> owner(size_t(a.width) * a.height * a.layers, -1);
+    for (size_t i = 0; i < textures.size(); ++i) {
+        const TextureAtlasEntry& e = a.entries[i];
+        ASSERT_EQ(e.width, textures[i].width);
+        ASSERT_EQ(e.height, textures[i].height);
+        const uint32_t expectedLevels = mipmapped[i] ? gpu::mipLevelCount(e.width, e.height) : 1u;
+        ASSERT_EQ(e.levels, expectedLevels) << textures[i].name;
+        ASSERT_LE(e.x + gpu::mipRectWidth(e.width, e.levels), a.width);
+        ASSERT_LE(e.y + gpu::mipRectHeight(e.height, e.levels), a.height);
+        Texture level = textures[i];
+        for (uint32_t l = 0; l < e.levels; ++l) {
+            if (l > 0) level = halveTexture(level);
+            ASSERT_EQ(level.width, gpu::mipLevelSize(e.width, l));
+            ASSERT_EQ(level.height, gpu::mipLevelSize(e.height, l));
+            const uint32_t x0 = gpu::mipLevelColumn(e.width, l), y0 = gpu::mipLevelRow(e.height, l);
+            for (uint32_t y = 0; y < level.height; ++y)
+                for (uint32_t x = 0; x < level.width; ++x) {
+                    ASSERT_EQ(atlasTexel(a, i, x0 + x, y0 + y), level.rgba8[size_t(y) * level.width + x])
+                        << textures[i].name << " level " << l;
+                    int& o = owner[(size_t(e.layer) * a.height + e.y + y0 + y) * a.width + e.x + x0 + x];
+                    ASSERT_EQ(o, -1) << textures[i].name << " level " << l << " overlaps texture " << o;
+                    o = static_cast<int>(i);
+                }
+        }
+        if (e.levels > 1) {
+            EXPECT_EQ(level.width * level.height, 1u) << textures[i].name << ": the chain ends at 1x1";
+        }
+    }
+}
+
+// mipLevelRow's closed form against the plain sum of the heights above the level.
+TEST(TextureAtlas, MipLevelRowIsTheSumOfTheHeightsAbove) {
+    for (uint32_t h = 1; h <= 4100; h += (h < 300 ? 1 : 37))
+        for (uint32_t level = 0; level <= gpu::mipLevelCount(1, h) + 2; ++level) {
+            uint32_t sum = 0;
+            for (uint32_t k = 1; k < level; ++k) sum += gpu::mipLevelSize(h, k);
+            ASSERT_EQ(gpu::mipLevelRow(h, level), sum) << "h " << h << " level " << level;
+        }
+    EXPECT_EQ(gpu::mipLevelCount(1, 1), 1u);
+    EXPECT_EQ(gpu::mipLevelCount(2, 1), 2u);
+    EXPECT_EQ(gpu::mipLevelCount(5, 3), 4u);   // 5x3, 3x2, 2x1, 1x1
+    EXPECT_EQ(gpu::mipLevelCount(1024, 1), 11u);
+}
+
+// Mipmaps cost texels: a budget that holds the textures alone but not with their levels makes
+// the atlas halve them (with a warning), not refuse.
+TEST(TextureAtlas, MipmapsCountInTheDeviceBudget) {
+    std::vector<Texture> textures{makeTexture("big", 256, 256, 1)};
+    TextureLimits limits;
+    limits.maxBytes = 256 * 256 * 4;
+    const TextureAtlas plain = buildTextureAtlas(textures, limits);
+    EXPECT_TRUE(plain.downscaled.empty());
+    const TextureAtlas mipmapped = buildTextureAtlas(textures, limits, {true});
+    ASSERT_EQ(mipmapped.downscaled.size(), 1u);
+    EXPECT_EQ(mipmapped.entries[0].width, 128u);
+    EXPECT_EQ(mipmapped.entries[0].levels, 8u);
+    EXPECT_LE(mipmapped.bytes(), limits.maxBytes);
 }
 
 TEST(TextureAtlas, HalvingAveragesTwoByTwoBlocksInLinearLight) {

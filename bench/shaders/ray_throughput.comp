@@ -30,7 +30,7 @@ void main() {
     if (traceClosest(push.camera.position, dir, kInfinity, true, t, tri, b1, b2)) {
         hits = 1u;
         if (push.mode == 1u) {
-            SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
+            SurfaceHit hit = surfaceAt(tri, b1, b2, dir, 0.0f);
             vec3 n = hit.frontFace ? hit.geometricNormal : -hit.geometricNormal;
             vec3 tangent;
             vec3 bitangent;

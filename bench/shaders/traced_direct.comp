@@ -28,8 +28,8 @@ void main() {
     float b1;
     float b2;
     if (!traceClosest(params.camera.position, dir, kInfinity, true, tHit, tri, b1, b2)) return;
-    SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
-    BsdfParams bsdf = bsdfParamsAt(materials[hit.material], hit.uv);
+    SurfaceHit hit = surfaceAt(tri, b1, b2, dir, 0.0f);
+    BsdfParams bsdf = bsdfParamsAtHit(materials[hit.material], hit);
     vec3 n = hit.frontFace ? hit.shadingNormal : -hit.shadingNormal;
     vec3 t;
     vec3 b;

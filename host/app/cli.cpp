@@ -121,18 +121,22 @@ void addEnvironmentOptions(CLI::App& cmd, EnvironmentSettings& env) {
 }
 
 void addDeviceOptions(CLI::App& cmd, std::string& device, bool& validate, double& maxMemoryGiB,
-                      uint32_t& maxTextureSize) {
+                      TextureOptions& textures) {
     cmd.add_option("--device", device, "Vulkan device: index or name substring (see `vkphoton devices`)");
     cmd.add_flag("--validate", validate, "Enable the Khronos validation layer; any message is an error");
     cmd.add_option("--max-memory", maxMemoryGiB,
                    "Memory the scene may take, in GiB, estimated from its triangle count before loading "
                    "(0: the memory available)")
         ->capture_default_str();
-    cmd.add_option("--max-texture-size", maxTextureSize,
+    cmd.add_option("--max-texture-size", textures.maxSize,
                    "Largest texture width/height in texels: larger textures are halved (box filter) until they "
                    "fit, with a warning (0: no limit; textures the device cannot hold are always downscaled)")
         ->check(CLI::Range(0u, 1u << 16))
         ->capture_default_str();
+    cmd.add_flag("--mipmaps,!--no-mipmaps", textures.mipmaps,
+                 "Filter minified textures over what each camera sample covers (mipmaps chosen by ray cones, "
+                 "as the samplers' minFilter says; the default), or read full-resolution texels only "
+                 "(--no-mipmaps: noisier at few samples, the supersampled reference at many)");
 }
 
 // --scene N: which of the file's glTF scenes to load.
@@ -181,7 +185,7 @@ int runCommandLine(int argc, const char* const* argv) {
             "Extra EXR channels, comma-separated: albedo (Albedo.R/G/B), normal (N.X/N.Y/N.Z, world space), depth "
             "(Z, metres) of the first non-specular surface, for denoisers and compositing")
         ->type_name("LIST");
-    addDeviceOptions(*renderCmd, render.device, render.validate, render.maxMemoryGiB, render.maxTextureSize);
+    addDeviceOptions(*renderCmd, render.device, render.validate, render.maxMemoryGiB, render.textures);
     addSceneIndexOption(*renderCmd, render.sceneIndex);
     renderCmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
     std::string tileText, cropText;  // resolved once --width and --height are known
@@ -299,7 +303,7 @@ int runCommandLine(int argc, const char* const* argv) {
     photonsCmd->add_option("--camera", photons.cameraIndex, "Scene camera index for the importons")->check(CLI::NonNegativeNumber);
     addViewOptions(*photonsCmd, photons.view);
     addEnvironmentOptions(*photonsCmd, photons.environment);
-    addDeviceOptions(*photonsCmd, photons.device, photons.validate, photons.maxMemoryGiB, photons.maxTextureSize);
+    addDeviceOptions(*photonsCmd, photons.device, photons.validate, photons.maxMemoryGiB, photons.textures);
     addSceneIndexOption(*photonsCmd, photons.sceneIndex);
     photonsCmd->add_flag("--quiet", photons.quiet, "No summary output");
 
@@ -317,7 +321,7 @@ int runCommandLine(int argc, const char* const* argv) {
     addEnvironmentOptions(*guideCmd, guideGrid.environment);
     guideCmd->add_option("--seed", guideGrid.seed, "Random seed")->capture_default_str();
     guideGrid.guide.addOptions(*guideCmd, false);
-    addDeviceOptions(*guideCmd, guideGrid.device, guideGrid.validate, guideGrid.maxMemoryGiB, guideGrid.maxTextureSize);
+    addDeviceOptions(*guideCmd, guideGrid.device, guideGrid.validate, guideGrid.maxMemoryGiB, guideGrid.textures);
     addSceneIndexOption(*guideCmd, guideGrid.sceneIndex);
     guideCmd->add_flag("--quiet", guideGrid.quiet, "No output but the file");
 

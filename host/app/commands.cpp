@@ -43,7 +43,7 @@ std::filesystem::path defaultOutput(const std::filesystem::path& scene) {
 
 
 Scene loadScene(const std::filesystem::path& path, const vk::Context& context, double maxMemoryGiB, int sceneIndex,
-                const EnvironmentSettings& environment, bool quiet, uint32_t maxTextureSize) {
+                const EnvironmentSettings& environment, bool quiet, const TextureOptions& textures) {
     GltfLimits limits = deviceSceneLimits(context, maxMemoryGiB);
     limits.sceneIndex = sceneIndex;
     Scene scene = loadGltf(path, limits);
@@ -58,8 +58,9 @@ Scene loadScene(const std::filesystem::path& path, const vk::Context& context, d
     if (scene.droppedDuplicateTriangles > 0)
         fmt::print(stderr, "warning: {}: dropped {} triangle(s) identical to an earlier one\n", printable(path.string()),
                    scene.droppedDuplicateTriangles);
-    for (const std::string& line : limitTextureSize(scene.textures, maxTextureSize))
-        fmt::print(stderr, "warning: texture downscaled: {} (--max-texture-size {})\n", printable(line), maxTextureSize);
+    for (const std::string& line : limitTextureSize(scene.textures, textures.maxSize))
+        fmt::print(stderr, "warning: texture downscaled: {} (--max-texture-size {})\n", printable(line), textures.maxSize);
+    if (!textures.mipmaps) disableMipmaps(scene);
     return scene;
 }
 
@@ -131,7 +132,7 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     // The device first: its limits bound the scene before it is decoded.
     vk::Context context({options.validate, options.device});
     Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet,
-                              options.maxTextureSize);
+                              options.textures);
     scene.energyCompensation = !options.noEnergyCompensation;
     const double loadSeconds = secondsSince(start);
     // Validate the camera choice before the expensive set-up.
@@ -224,7 +225,7 @@ int runPhotons(const PhotonsCommandOptions& options) {
     installInterruptHandler();
     vk::Context context({options.validate, options.device});
     const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet,
-                              options.maxTextureSize);
+                              options.textures);
     FrameSettings frameSettings;  // what the importons see: camera, image, seed
     frameSettings.width = options.width;
     frameSettings.height = options.height;
@@ -280,7 +281,7 @@ int runGuideGrid(const GuideGridCommandOptions& options) {
     installInterruptHandler();
     vk::Context context({options.validate, options.device});
     const Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet,
-                              options.maxTextureSize);
+                              options.textures);
     const Camera camera =
         chooseCamera(scene, options.cameraIndex, float(options.width) / float(options.height), options.view);
     const GpuScene gpuScene(context, scene);

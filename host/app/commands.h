@@ -22,6 +22,12 @@ constexpr size_t kAutoBvhLights = 16;
 // The light sampler a render without --light-sampler uses for `scene`.
 LightSampler autoLightSampler(const Scene& scene);
 
+// How the scene's textures are held and filtered (every command that loads a scene).
+struct TextureOptions {
+    uint32_t maxSize = 0;               // --max-texture-size: 0 = no limit
+    bool mipmaps = true;                // --no-mipmaps: level 0 only, whatever the samplers' minFilter
+};
+
 struct RenderCommandOptions {
     std::filesystem::path scene;
     std::filesystem::path output;       // .exr; empty: out/<scene name>.exr
@@ -37,7 +43,7 @@ struct RenderCommandOptions {
     LightSampling lightSampling;
     bool lightSamplerAuto = false;
     double maxMemoryGiB = 0.0;          // --max-memory: 0 = the memory available
-    uint32_t maxTextureSize = 0;        // --max-texture-size: 0 = no limit
+    TextureOptions textures;            // --max-texture-size, --no-mipmaps
     int sceneIndex = -1;                // --scene: the glTF scene; -1: the file's default
     std::string device;
     bool validate = false;
@@ -69,7 +75,7 @@ struct PhotonsCommandOptions {
     ViewOverride view;
     EnvironmentSettings environment;   // --env, --env-strength, --env-rotation
     double maxMemoryGiB = 0.0;
-    uint32_t maxTextureSize = 0;        // --max-texture-size
+    TextureOptions textures;            // --max-texture-size, --no-mipmaps
     int sceneIndex = -1;
     std::string device;
     bool validate = false;
@@ -89,7 +95,7 @@ struct GuideGridCommandOptions {
     GuideSettings guide;
     EnvironmentSettings environment;   // --env, --env-strength, --env-rotation
     double maxMemoryGiB = 0.0;
-    uint32_t maxTextureSize = 0;        // --max-texture-size
+    TextureOptions textures;            // --max-texture-size, --no-mipmaps
     int sceneIndex = -1;
     std::string device;
     bool validate = false;

@@ -212,7 +212,14 @@ SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling, const T
         a.lightCdf, buildLightTree(a.lights, a.triangles, a.shading, a.materials, power),
         static_cast<uint32_t>(a.lights.size()), sampling);
 
-    a.textureAtlas = buildTextureAtlas(scene.textures, textureLimits);
+    static_assert(uint32_t(TextureWrap::ClampToEdge) == gpu::kTextureWrapClamp &&
+                  uint32_t(TextureWrap::MirroredRepeat) == gpu::kTextureWrapMirrored);
+    static_assert(uint32_t(MipmapMode::Nearest) == gpu::kTextureMipmapNearest &&
+                  uint32_t(MipmapMode::Linear) == gpu::kTextureMipmapLinear);
+    std::vector<bool> mipmapped(scene.textures.size(), false);
+    for (const TextureView& view : scene.textureViews)
+        if (view.mipmaps != MipmapMode::None) mipmapped[view.image] = true;
+    a.textureAtlas = buildTextureAtlas(scene.textures, textureLimits, mipmapped);
     for (const TextureView& view : scene.textureViews) {
         const Texture& tex = scene.textures[view.image];
         const TextureAtlasEntry& e = a.textureAtlas.entries[view.image];
@@ -228,6 +235,9 @@ SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling, const T
         g.wrapS = static_cast<uint32_t>(view.wrapS);
         g.wrapT = static_cast<uint32_t>(view.wrapT);
         g.magFilter = view.nearest ? gpu::kTextureFilterNearest : gpu::kTextureFilterLinear;
+        g.minFilter = view.minNearest ? gpu::kTextureFilterNearest : gpu::kTextureFilterLinear;
+        g.mipmapMode = static_cast<uint32_t>(view.mipmaps);
+        g.levels = view.mipmaps == MipmapMode::None ? 1u : e.levels;
         a.textures.push_back(g);
     }
     if (!environmentData.empty()) a.lights.back().envOffset = 0;

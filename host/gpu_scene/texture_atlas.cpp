@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "shared/texture_levels.glsl"
 #include "util/errors.h"
 
 namespace vkp {
@@ -94,7 +95,25 @@ std::vector<std::string> limitTextureSize(std::vector<Texture>& textures, uint32
     return out;
 }
 
-TextureAtlas buildTextureAtlas(const std::vector<Texture>& textures, const TextureLimits& limits) {
+namespace {
+
+// Copies t's texels into the atlas layer (width `atlasWidth`) at (x, y).
+void copyTexels(const Texture& t, uint32_t* layer, uint32_t atlasWidth, uint32_t x, uint32_t y) {
+    for (uint32_t row = 0; row < t.height; ++row)
+        std::copy_n(t.rgba8.data() + size_t(row) * t.width, t.width, layer + size_t(y + row) * atlasWidth + x);
+}
+
+}  // namespace
+
+void disableMipmaps(Scene& scene) {
+    for (TextureView& view : scene.textureViews) {
+        view.mipmaps = MipmapMode::None;
+        view.minNearest = view.nearest;
+    }
+}
+
+TextureAtlas buildTextureAtlas(const std::vector<Texture>& textures, const TextureLimits& limits,
+                               const std::vector<bool>& mipmapped) {
     TextureAtlas atlas;
     if (textures.empty()) {
         atlas.texels.assign(1, 0u);
@@ -105,6 +124,13 @@ TextureAtlas buildTextureAtlas(const std::vector<Texture>& textures, const Textu
     std::vector<bool> isScaled(textures.size(), false);
     std::vector<std::string> reason(textures.size());
     auto current = [&](size_t i) -> const Texture& { return isScaled[i] ? scaled[i] : textures[i]; };
+    // The rectangle texture i takes: level 0, and its mipmap levels where it has them.
+    auto levels = [&](size_t i) {
+        const bool chain = i < mipmapped.size() && mipmapped[i];
+        return chain ? gpu::mipLevelCount(current(i).width, current(i).height) : 1u;
+    };
+    auto rectWidth = [&](size_t i) { return gpu::mipRectWidth(current(i).width, levels(i)); };
+    auto rectHeight = [&](size_t i) { return gpu::mipRectHeight(current(i).height, levels(i)); };
     auto halve = [&](size_t i, const std::string& why) {
         scaled[i] = halveTexture(current(i));
         isScaled[i] = true;
@@ -115,7 +141,8 @@ TextureAtlas buildTextureAtlas(const std::vector<Texture>& textures, const Textu
         while (userMax > 0 && std::max(current(i).width, current(i).height) > userMax &&
                std::max(current(i).width, current(i).height) > 1)
             halve(i, fmt::format("--max-texture-size {}", userMax));
-        while (std::max(current(i).width, current(i).height) > limits.maxLayerSize)
+        while (std::max(rectWidth(i), rectHeight(i)) > limits.maxLayerSize &&
+               std::max(current(i).width, current(i).height) > 1)
             halve(i, fmt::format("the device's largest image is {0}x{0}", limits.maxLayerSize));
     }
     const std::string budget = limits.maxBytes >= (uint64_t(1) << 20) ? fmt::format("{} MiB", limits.maxBytes >> 20)
@@ -126,8 +153,8 @@ TextureAtlas buildTextureAtlas(const std::vector<Texture>& textures, const Textu
         std::vector<TextureAtlasEntry> sizes(textures.size());
         uint32_t width = 1, height = 1;
         for (size_t i = 0; i < textures.size(); ++i) {
-            sizes[i].width = current(i).width;
-            sizes[i].height = current(i).height;
+            sizes[i].width = rectWidth(i);
+            sizes[i].height = rectHeight(i);
             width = std::max(width, sizes[i].width);
             height = std::max(height, sizes[i].height);
         }
@@ -152,8 +179,7 @@ TextureAtlas buildTextureAtlas(const std::vector<Texture>& textures, const Textu
         // The largest texture (by area) loses half its width and height.
         size_t largest = 0;
         for (size_t i = 1; i < textures.size(); ++i)
-            if (uint64_t(current(i).width) * current(i).height >
-                uint64_t(current(largest).width) * current(largest).height)
+            if (uint64_t(rectWidth(i)) * rectHeight(i) > uint64_t(rectWidth(largest)) * rectHeight(largest))
                 largest = i;
         if (current(largest).width <= 1 && current(largest).height <= 1)
             throw RuntimeError(fmt::format("{} textures do not fit: {}", textures.size(), deviceReason));
@@ -162,10 +188,17 @@ TextureAtlas buildTextureAtlas(const std::vector<Texture>& textures, const Textu
     atlas.texels.assign(atlas.bytes() / 4, 0u);
     for (size_t i = 0; i < textures.size(); ++i) {
         const Texture& t = current(i);
-        const TextureAtlasEntry& e = atlas.entries[i];
+        TextureAtlasEntry& e = atlas.entries[i];
+        e.width = t.width;  // level 0 (pack() sized the entry as the whole rectangle)
+        e.height = t.height;
+        e.levels = levels(i);
         uint32_t* layer = atlas.texels.data() + size_t(e.layer) * atlas.width * atlas.height;
-        for (uint32_t y = 0; y < t.height; ++y)
-            std::copy_n(t.rgba8.data() + size_t(y) * t.width, t.width, layer + size_t(e.y + y) * atlas.width + e.x);
+        copyTexels(t, layer, atlas.width, e.x, e.y);
+        Texture level;
+        for (uint32_t l = 1; l < e.levels; ++l) {
+            level = halveTexture(l == 1 ? t : level);
+            copyTexels(level, layer, atlas.width, e.x + gpu::mipLevelColumn(t.width, l), e.y + gpu::mipLevelRow(t.height, l));
+        }
         if (isScaled[i])
             atlas.downscaled.push_back(fmt::format("{}: {}x{} -> {}x{} ({})", textures[i].name, textures[i].width,
                                                    textures[i].height, t.width, t.height, reason[i]));

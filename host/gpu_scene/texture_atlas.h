@@ -5,7 +5,9 @@
 // and is not bound by maxStorageBufferRange as the former texel buffer was. The shader reads texels
 // with texelFetch and applies the glTF sampler's wrap and filter itself (shaders/scene_access.glsl).
 // Textures the device cannot hold, or larger than --max-texture-size, are halved (2x2 box filter,
-// in linear light for sRGB textures) with a warning.
+// in linear light for sRGB textures) with a warning. A texture some view samples with mipmaps
+// (glTF minFilter) gets its chain of levels, made by the same filter, beside it in its rectangle
+// (shared/texture_levels.glsl).
 #pragma once
 
 #include <cstdint>
@@ -27,7 +29,8 @@ struct TextureLimits {
 
 struct TextureAtlasEntry {
     uint32_t x = 0, y = 0, layer = 0;    // the texture's top-left texel in the atlas
-    uint32_t width = 0, height = 0;      // after any downscaling
+    uint32_t width = 0, height = 0;      // level 0's, after any downscaling
+    uint32_t levels = 1;                 // mipmap levels in the rectangle (1: level 0 alone)
 };
 
 struct TextureAtlas {
@@ -39,12 +42,18 @@ struct TextureAtlas {
 };
 
 // Packs `textures` (shelves, tallest first) within `limits`, halving the largest texture until
-// all fit. Throws RuntimeError only if even 1x1 textures cannot fit (a device limit).
-TextureAtlas buildTextureAtlas(const std::vector<Texture>& textures, const TextureLimits& limits);
+// all fit; textures i with mipmapped[i] with their full chain of mipmap levels (a missing entry:
+// none). Throws RuntimeError only if even 1x1 textures cannot fit (a device limit).
+TextureAtlas buildTextureAtlas(const std::vector<Texture>& textures, const TextureLimits& limits,
+                               const std::vector<bool>& mipmapped = {});
 
 // --max-texture-size: halves every texture whose width or height exceeds maxSize (> 0) until it
 // fits; returns "name: WxH -> wxh", one per downscaled texture.
 std::vector<std::string> limitTextureSize(std::vector<Texture>& textures, uint32_t maxSize);
+
+// --no-mipmaps: every texture view reads level 0 only, minified or not, with its magFilter (what
+// vkphoton did before mipmaps: the many-spp reference, noisier at few).
+void disableMipmaps(Scene& scene);
 
 // One 2x2 box-filter halving (odd sizes: the last row/column repeats; sRGB textures averaged in
 // linear light).

@@ -59,7 +59,8 @@ uint8_t channel(const std::vector<unsigned char>& data, size_t at, bool sixteenB
 bool TextureView::operator<(const TextureView& o) const {
     const auto key = [](const TextureView& v) {
         return std::make_tuple(v.image, v.texCoord, v.uvRow0.x, v.uvRow0.y, v.uvRow0.z, v.uvRow1.x, v.uvRow1.y,
-                               v.uvRow1.z, uint32_t(v.wrapS), uint32_t(v.wrapT), v.nearest);
+                               v.uvRow1.z, uint32_t(v.wrapS), uint32_t(v.wrapT), v.nearest, v.minNearest,
+                               uint32_t(v.mipmaps));
     };
     return key(*this) < key(o);
 }
@@ -270,7 +271,9 @@ int GltfMaterials::texture(int gltfTexture, int texCoord, const tinygltf::Extens
 }
 
 // glTF samplers: wrapS/wrapT 33071 (clamp), 33648 (mirrored repeat), 10497 (repeat, the
-// default); magFilter 9728 NEAREST, else bilinear. Minification filters (mipmaps) are not read.
+// default); magFilter 9728 NEAREST, else bilinear; minFilter: the filter within a mipmap level
+// (NEAREST*: nearest texel, LINEAR*: bilinear) and between levels (none for NEAREST/LINEAR); left
+// out, LINEAR_MIPMAP_LINEAR (trilinear), the spec leaving the choice to the renderer.
 void GltfMaterials::readSampler(int gltfTexture, TextureView& view) {
     const int index = m_model.textures[gltfTexture].sampler;
     if (index < 0) return;
@@ -292,6 +295,18 @@ void GltfMaterials::readSampler(int gltfTexture, TextureView& view) {
         sampler.magFilter != TINYGLTF_TEXTURE_FILTER_LINEAR)
         fail(element + ".magFilter", fmt::format("{} is not 9728 (NEAREST) or 9729 (LINEAR)", sampler.magFilter));
     view.nearest = sampler.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST;
+    switch (sampler.minFilter) {
+    case -1:
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR: view.minNearest = false; view.mipmaps = MipmapMode::Linear; break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST: view.minNearest = true; view.mipmaps = MipmapMode::None; break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR: view.minNearest = false; view.mipmaps = MipmapMode::None; break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST: view.minNearest = true; view.mipmaps = MipmapMode::Nearest; break;
+    case TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_NEAREST: view.minNearest = false; view.mipmaps = MipmapMode::Nearest; break;
+    case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: view.minNearest = true; view.mipmaps = MipmapMode::Linear; break;
+    default:
+        fail(element + ".minFilter",
+             fmt::format("{} is not 9728, 9729, 9984, 9985, 9986 or 9987 (NEAREST, LINEAR, *_MIPMAP_*)", sampler.minFilter));
+    }
 }
 
 // KHR_texture_transform: uv' = T(offset) R(rotation) S(scale) (u, v, 1) with R's rows (cos, sin)

@@ -33,9 +33,13 @@ struct Texture {
 };
 
 // How a material's texture reference samples its image: glTF's texture info (texCoord set),
-// sampler (wrap modes, magnification filter) and KHR_texture_transform. Materials index these
+// sampler (wrap modes, filters, mipmaps) and KHR_texture_transform. Materials index these
 // views (Scene::textureViews); several views may share one image.
 enum class TextureWrap : uint32_t { Repeat = 0, ClampToEdge = 1, MirroredRepeat = 2 };  // = kTextureWrap* in GLSL
+// glTF minFilter's choice between mipmap levels (docs/scene-format.md "Samplers"): none (level 0
+// only: NEAREST, LINEAR), the nearest level (*_MIPMAP_NEAREST) or a blend of the two nearest
+// (*_MIPMAP_LINEAR, also what vkphoton does when a sampler leaves minFilter out).
+enum class MipmapMode : uint32_t { None = 0, Nearest = 1, Linear = 2 };  // = kTextureMipmap* in GLSL
 
 struct TextureView {
     int image = -1;                  // index into Scene::textures
@@ -45,6 +49,8 @@ struct TextureView {
     TextureWrap wrapS = TextureWrap::Repeat;
     TextureWrap wrapT = TextureWrap::Repeat;
     bool nearest = false;            // magFilter NEAREST (9728); otherwise bilinear
+    bool minNearest = false;         // minFilter NEAREST or NEAREST_MIPMAP_*: the nearest texel of a level
+    MipmapMode mipmaps = MipmapMode::Linear;  // minFilter's mipmap mode
     bool operator<(const TextureView& o) const;  // for de-duplication
 };
 

@@ -165,6 +165,9 @@ const uint kTextureWrapClamp = 1u;
 const uint kTextureWrapMirrored = 2u;
 const uint kTextureFilterLinear = 0u;
 const uint kTextureFilterNearest = 1u;
+const uint kTextureMipmapNone = 0u;     // = MipmapMode (scene.h)
+const uint kTextureMipmapNearest = 1u;
+const uint kTextureMipmapLinear = 2u;
 
 // Texture views (scene.h TextureView): a rectangle of the texture atlas (the array image of
 // shared/kernels/scene.glsl, host/gpu_scene/texture_atlas.h), the TEXCOORD set, the
@@ -181,9 +184,9 @@ struct GpuTexture {
     uint wrapT;
     uint magFilter;         // kTextureFilter* (magnification)
     uint layer;             // the atlas layer
-    uint pad0;
-    uint pad1;
-    uint pad2;
+    uint levels;            // mipmap levels in the atlas rectangle (shared/texture_levels.glsl); 1: none
+    uint minFilter;         // kTextureFilter* within a level when minifying (glTF minFilter)
+    uint mipmapMode;        // kTextureMipmap*: between levels (glTF minFilter)
 };
 STATIC_ASSERT_SIZE(GpuTexture, 80)
 

@@ -21,7 +21,7 @@ struct GpuVisiblePoint {
     uint flags;
     uint pixel;
     uint triangle;          // hit id (docs/bvh.md)
-    uint pad1;
+    float coneWidth;        // the camera ray's cone there (textures' mipmap levels, PathVertex.coneWidth)
 };
 STATIC_ASSERT_SIZE(GpuVisiblePoint, 64)
 

@@ -34,7 +34,7 @@ void main() {
     uint relevant = 0u;
     uint visibleTriangle = 0xffffffffu;
     if (traceClosest(params.camera.position, dir, kInfinity, false, tHit, tri, b1, b2)) {
-        SurfaceHit hit = surfaceAt(tri, b1, b2, dir);
+        SurfaceHit hit = surfaceAt(tri, b1, b2, dir, 0.0f);
         visibleTriangle = tri;
         vec3 sideNormal = hit.frontFace ? hit.geometricNormal : -hit.geometricNormal;
         for (uint k = 0u; k < params.lightCount; ++k) {
