@@ -48,11 +48,15 @@ void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_
     settings.paths = paths;
     settings.cellSize = 0.03f;
     PhotonMap map(context, scene, arrays, buffers, settings);
-    std::vector<double> grid, trace;
+    std::vector<double> grid, gridCpu, trace;
     PhotonMapStats stats;
     for (uint32_t r = 0; r <= repeat; ++r) {
         stats = map.build(r * paths);
-        if (r > 0) { grid.push_back(stats.gridSeconds); trace.push_back(stats.traceSeconds); }
+        if (r > 0) {
+            grid.push_back(stats.gridSeconds);
+            gridCpu.push_back(stats.gridCpuSeconds);
+            trace.push_back(stats.traceSeconds);
+        }
     }
     const double millions = stats.stored / 1e6;
     fmt::print("\n### Photon map build ({} paths, {} photons stored, {} chunk(s))\n\n", paths, stats.stored,
@@ -61,6 +65,8 @@ void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_
     fmt::print("| tracing + compaction | {:.3f} s ({:.2f} M paths/s) |\n", bench::median(trace), paths / bench::median(trace) / 1e6);
     fmt::print("| grid build (count, scan, scatter, sort, copy) | {:.3f} s per million photons |\n",
                bench::median(grid) / millions);
+    fmt::print("| grid build, CPU time of every thread | {:.3f} CPU s per million photons |\n",
+               bench::median(gridCpu) / millions);
 
     // Gathers at every 8th photon of the map: where the scene's surfaces are.
     const uint32_t stride = 8;
@@ -71,19 +77,24 @@ void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_
     kernel.bind(gpu::kGatherBenchGridBinding + 1, map.grid().photons());
     kernel.bind(gpu::kGatherBenchResultBinding, results);
     fmt::print("\n### Gathers ({} queries at photon positions, cell size {} m)\n\n", queries, settings.cellSize);
-    fmt::print("| query | queries/s |\n|---|---|\n");
+    fmt::print("| query | queries/s | queries per CPU second |\n|---|---|---|\n");
     struct Mode { const char* name; uint32_t mode, k; float radius; };
     for (const Mode& m : {Mode{"fixed radius 0.03 m, cone filter", 0, 0, 0.03f},
                           Mode{"32 nearest within 0.06 m", 1, 32, 0.06f},
                           Mode{"nearest within 0.03 m", 2, 1, 0.03f}}) {
         gpu::GatherBenchParams push{map.grid().view(map.photonPower()), queries, stride, m.mode, m.k, m.radius};
-        std::vector<double> times;
+        std::vector<double> times, cpuTimes;
         for (uint32_t r = 0; r <= repeat; ++r) {
             const auto start = Clock::now();
+            const double cpuStart = processCpuSeconds();
             context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, queries, push); });
-            if (r > 0) times.push_back(secondsSince(start));
+            if (r > 0) {
+                times.push_back(secondsSince(start));
+                cpuTimes.push_back(processCpuSeconds() - cpuStart);
+            }
         }
-        fmt::print("| {} | {:.2f} M |\n", m.name, queries / bench::median(times) / 1e6);
+        fmt::print("| {} | {:.3f} M | {:.3f} M |\n", m.name, queries / bench::median(times) / 1e6,
+                   queries / bench::median(cpuTimes) / 1e6);
     }
 }
 

@@ -211,6 +211,7 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
     stats.traceSeconds = secondsSince(start);
 
     start = Clock::now();
+    const double cpuStart = processCpuSeconds();
     if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
     stats.cellSize = m_grid->settings().cellSize;
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
@@ -219,6 +220,7 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
         vk::computeToHostBarrier(cmd);
     });
     stats.gridSeconds = secondsSince(start);
+    stats.gridCpuSeconds = processCpuSeconds() - cpuStart;
     stats.bytes = bytes();
     return stats;
 }
@@ -284,6 +286,7 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t first
     stats.chunks = 1;
     stats.traceSeconds = secondsSince(start);
     start = Clock::now();
+    const double cpuStart = processCpuSeconds();
     if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
     stats.cellSize = m_grid->settings().cellSize;
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
@@ -292,6 +295,7 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t first
         vk::computeToHostBarrier(cmd);
     });
     stats.gridSeconds = secondsSince(start);
+    stats.gridCpuSeconds = processCpuSeconds() - cpuStart;
     stats.bytes = bytes();
     return stats;
 }
