@@ -6,9 +6,9 @@
 // that name i twice, so i must be free of side effects (no atomicAdd in it).
 // Kernels are compiled twice (host/vk/compute_kernel.h): with kSingleSegment true, used by the
 // dispatches whose bound arrays all have one segment (the common case: maps up to 4 M photons),
-// the macros index segment 0 and read nothing of the table's header; the shift and mask per
-// access made grid builds and gathers of one-segment maps 1.4-1.5x slower (docs/benchmarks.md,
-// "One-segment maps").
+// the macros index segment 0, whose address is read once per invocation (SEGMENTED_ARRAY), and
+// nothing of the table's header: the table read per access had made one-segment maps' grid
+// builds 2-2.7x and nearest-photon lookups 1.3-1.7x slower (docs/benchmarks.md, "One-segment maps").
 // Addresses are uvec2 (GL_EXT_buffer_reference_uvec2): an array of reference types in a block
 // makes glslang declare RuntimeDescriptorArray, which the validation layer rejects.
 #ifndef VKP_SEGMENTED_GLSL
