@@ -4,7 +4,7 @@
 // integrator (two-pass and progressive) on one scene. Usage:
 //   build/bench/photon_map_bench [SCENE] [--size N --reference-spp N --reference FILE.exr
 //                                 --max-seconds S --repeat R --device D --map-photons 4,16,64
-//                                 --skip-grid --skip-convergence]
+//                                 --skip-grid --skip-convergence --segment-shift N]
 // Prints Markdown tables for docs/benchmarks.md. The reference (path tracer, --reference-spp) is
 // written to --reference when that file does not exist and read from it when it does.
 #include <algorithm>
@@ -41,12 +41,13 @@ using namespace vkp;
 
 
 
-void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_t repeat) {
+void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_t repeat, uint32_t segmentShift) {
     const SceneArrays arrays = buildSceneArrays(scene);
     const SceneBuffers buffers(context, arrays);
     PhotonMapSettings settings;
     settings.paths = paths;
     settings.cellSize = 0.03f;
+    settings.segmentShift = segmentShift;
     PhotonMap map(context, scene, arrays, buffers, settings);
     std::vector<double> grid, gridCpu, trace;
     PhotonMapStats stats;
@@ -59,8 +60,8 @@ void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_
         }
     }
     const double millions = stats.stored / 1e6;
-    fmt::print("\n### Photon map build ({} paths, {} photons stored, {} chunk(s))\n\n", paths, stats.stored,
-               stats.chunks);
+    fmt::print("\n### Photon map build ({} paths, {} photons stored, {} chunk(s), segments of {} photons)\n\n", paths,
+               stats.stored, stats.chunks, map.segmentPhotons());
     fmt::print("| measure | value |\n|---|---|\n");
     fmt::print("| tracing + compaction | {:.3f} s ({:.2f} M paths/s) |\n", bench::median(trace), paths / bench::median(trace) / 1e6);
     fmt::print("| grid build (count, scan, scatter, sort, copy) | {:.3f} s per million photons |\n",
@@ -187,13 +188,16 @@ void benchConvergence(vk::Context& context, const Scene& scene, uint32_t size, u
 int main(int argc, char** argv) {
     CLI::App app{"vkphoton photon map benchmark"};
     std::string scenePath = std::string(VKPHOTON_SOURCE_DIR) + "/scenes/cornell-glass.gltf";
-    uint32_t paths = 1000000, repeat = 3, size = 128, referenceSpp = 2048;
+    uint32_t paths = 1000000, repeat = 3, size = 128, referenceSpp = 2048, segmentShift = 0;
     double maxSeconds = 60.0;
     std::string device, referencePath;
     bool skipConvergence = false, skipGrid = false;
     std::vector<uint32_t> mapMillions;
     app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
     app.add_option("--paths", paths, "photon paths for the build and gather measurements")->capture_default_str();
+    app.add_option("--segment-shift", segmentShift,
+                   "segments of 2^N photons for the --paths map (0: the default, 4 M): the general form of the "
+                   "segmented kernels on a map of several segments")->capture_default_str();
     app.add_option("--repeat", repeat, "runs after a warm-up (the median is reported)")->capture_default_str();
     app.add_option("--size", size, "image size of the error-against-time runs")->capture_default_str();
     app.add_option("--reference-spp", referenceSpp, "path-traced reference samples per pixel")->capture_default_str();
@@ -210,7 +214,7 @@ int main(int argc, char** argv) {
         const Scene scene = loadGltf(scenePath);
         vk::Context context({false, device});
         fmt::print("scene: {} ({} triangles), device: {}\n", scenePath, scene.triangles.size(), context.deviceName());
-        if (!skipGrid) benchGrid(context, scene, paths, repeat);
+        if (!skipGrid) benchGrid(context, scene, paths, repeat, segmentShift);
         if (!mapMillions.empty()) benchMapSizes(context, scene, mapMillions);
         if (!skipConvergence) benchConvergence(context, scene, size, referenceSpp, referencePath, maxSeconds);
         return 0;
