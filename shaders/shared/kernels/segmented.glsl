@@ -8,7 +8,7 @@
 #include "shared/compat.glsl"
 SHARED_BEGIN
 
-const uint kSingleSegmentId = 4u;  // bool, default false: any number of segments
+const uint kSingleSegmentId = 5u;  // bool, default false: any number of segments (4 is main's kSceneBvhTexelsId)
 
 SHARED_END
 #endif
