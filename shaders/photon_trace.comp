@@ -145,10 +145,6 @@ void main() {
         power *= v.transmittance;
 
         if (storesPhotons(v.bsdf)) {
-            if (stored == params.maxDeposits) {
-                outcome = kPhotonCounterTruncated;
-                break;
-            }
             uint flags = kPhotonValid;
             uint counter = kPhotonCounterStoredGlobal;
             if (depth == 0u) {
@@ -158,9 +154,15 @@ void main() {
                 flags |= kPhotonCaustic;
                 counter = kPhotonCounterStoredCaustic;
             }
-            photons[slot + stored] = makePhoton(v.hit.position, power, -ray.dir, v.n, flags, lightIndex);
-            stored += 1u;
-            atomicAdd(counters[counter], 1u);
+            if ((flags & params.requiredFlags) == params.requiredFlags) {
+                if (stored == params.maxDeposits) {
+                    outcome = kPhotonCounterTruncated;
+                    break;
+                }
+                photons[slot + stored] = makePhoton(v.hit.position, power, -ray.dir, v.n, flags, lightIndex);
+                stored += 1u;
+                atomicAdd(counters[counter], 1u);
+            }
         }
 
         vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
@@ -179,6 +181,12 @@ void main() {
         }
         power *= bs.weight / survive;
         onlySpecularSoFar = onlySpecularSoFar && ((bs.lobe & kLobeDelta) != 0u || !storesPhotons(v.bsdf));
+        // A map of primary or caustic photons only: the path can make no more of them.
+        if ((params.requiredFlags & kPhotonPrimary) != 0u ||
+            ((params.requiredFlags & kPhotonCaustic) != 0u && !onlySpecularSoFar)) {
+            outcome = kPhotonCounterTruncated;
+            break;
+        }
         spawnRay(v, bs, ray);
     }
     if (outcome == kPhotonCounterCount) {

@@ -270,6 +270,7 @@ bool alphaPasses(uint tri, float b1, float b2, vec3 org, vec3 dir) {
 // Called by traceClosest/traceAny (shared/bvh_traverse.glsl) only for hits on triangles with v0.w != 0.
 #define BVH_ALPHA_TEST(triangle, tri, b1, b2, org, dir) alphaPasses(tri, b1, b2, org, dir)
 
+#include "scene_geometry.glsl"  // the traversal's node and triangle reads (texel buffers)
 #include "shared/intersect.glsl"
 #include "shared/bvh_traverse.glsl"
 

@@ -18,6 +18,7 @@
 #include "shaders/test_kernels.glsl"
 #include "test_scenes.h"
 #include "vk/buffer.h"
+#include "vk/buffer_view.h"
 #include "vk/kernel.h"
 
 namespace vkp {
@@ -38,7 +39,8 @@ static_assert(sizeof(TestHit) == 20);
 constexpr uint32_t kNoTriangle = 0xffffffffu;
 
 // Traces `rays` through the arrays on the GPU (instances too, when the arrays have them), with the
-// generic traversal or, given `specialization`, the one compiled for such a scene.
+// generic traversal or, given `specialization`, the one compiled for such a scene (reading nodes
+// and triangles through texel buffers when its bvhTexels says so).
 std::vector<TestHit> traceOnGpu(const gpu::BvhArrays& arrays, const std::vector<TestRay>& rays,
                                 std::optional<vk::SceneSpecialization> specialization = std::nullopt) {
     vk::Context& context = test::gpu();
@@ -50,8 +52,9 @@ std::vector<TestHit> traceOnGpu(const gpu::BvhArrays& arrays, const std::vector<
         std::memcpy(instanceBytes.data() + sizeof(gpu::GpuInstanceHeader), arrays.instances.data(),
                     arrays.instances.size_bytes());
     vk::Buffer rayBuffer = vk::makeStorageBuffer(context, "rays", rays);
-    vk::Buffer nodeBuffer = vk::makeStorageBuffer(context, "nodes", nodes);
-    vk::Buffer triBuffer = vk::makeStorageBuffer(context, "triangles", tris);
+    vk::Buffer nodeBuffer = vk::makeTexelReadBuffer(context, "nodes", nodes);
+    vk::Buffer triBuffer = vk::makeTexelReadBuffer(context, "triangles", tris);
+    const vk::BvhTexelViews texels(context, nodeBuffer, nodes.size(), triBuffer, tris.size());
     vk::Buffer instanceBuffer = vk::makeStorageBuffer(context, "instances", instanceBytes);
     vk::Buffer hitBuffer(context, "hits", rays.size() * sizeof(TestHit), vk::kStorageUsage);
     vk::Kernel<gpu::BvhTestKernel> kernel(context);
@@ -60,7 +63,7 @@ std::vector<TestHit> traceOnGpu(const gpu::BvhArrays& arrays, const std::vector<
     kernel.bind(gpu::kBvhTestTriangleBinding, triBuffer);
     kernel.bind(gpu::kBvhTestHitBinding, hitBuffer);
     kernel.bind(gpu::kBvhTestInstanceBinding, instanceBuffer);
-    if (specialization) kernel.bind(vk::KernelBindings{{}, nullptr, specialization});
+    kernel.bind(vk::KernelBindings{{}, nullptr, specialization, &texels.views()});
     const auto count = static_cast<uint32_t>(rays.size());
     context.submitAndWait([&](VkCommandBuffer cmd) {
         kernel.record(cmd, count, count);
@@ -240,6 +243,30 @@ TEST_F(BvhGpu, SpecializedTraversalsHitWhatTheGenericOneHits) {
 
     arrays.triangles[0].v0.w = 1.0f;  // one alpha-tested triangle
     EXPECT_TRUE(sceneSpecialization(arrays).alphaTest);
+}
+
+// Reading nodes and triangles through the texel-buffer views (shaders/scene_geometry.glsl, what
+// SceneBuffers selects on lavapipe) gives the same hits, bit for bit, as the storage buffers, on a
+// single tree and on a two-level scene.
+TEST_F(BvhGpu, TexelBufferReadsHitWhatStorageBufferReadsHit) {
+    const Scene glass = loadGltf(std::string(VKPHOTON_SCENES) + "/cornell-glass.gltf");
+    const SceneArrays glassArrays = buildSceneArrays(glass);
+    vk::SceneSpecialization buffers = sceneSpecialization(glassArrays);
+    EXPECT_FALSE(buffers.bvhTexels);  // device-independent: the storage buffers
+    vk::SceneSpecialization texels = buffers;
+    texels.bvhTexels = true;
+    const std::vector<TestRay> glassRays = raysThrough(glass, 8000, 11);
+    EXPECT_TRUE(sameHits(traceOnGpu(glassArrays.bvhArrays(), glassRays, texels),
+                         traceOnGpu(glassArrays.bvhArrays(), glassRays, buffers)));
+    EXPECT_TRUE(SceneBuffers(test::gpu(), glassArrays).bindings().scene->bvhTexels);  // lavapipe's views cover it
+
+    const Scene instanced = test::instancedCornell(50, 21);
+    const SceneArrays arrays = buildSceneArrays(instanced);
+    buffers = sceneSpecialization(arrays);
+    texels = buffers;
+    texels.bvhTexels = true;
+    const std::vector<TestRay> rays = raysThrough(instanced, 8000, 12);
+    EXPECT_TRUE(sameHits(traceOnGpu(arrays.bvhArrays(), rays, texels), traceOnGpu(arrays.bvhArrays(), rays, buffers)));
 }
 
 // The light sampler a scene's kernels are compiled for is the one its selection data names, and

@@ -450,7 +450,7 @@ const std::map<std::string, std::vector<std::string>> kNumericFlags = {
     {"render", {"--spp", "--width", "--height", "--seed", "--max-depth", "--time-limit", "--camera",
                 "--area-light-samples", "--max-memory", "--max-texture-size", "--exposure", "--fov", "--env-strength", "--env-rotation", "--scene",
                 "--light-photons", "--light-cell-k", "--light-cell-floor", "--light-cell-size"}},
-    {"render --integrator photon", {"--photons", "--caustic-photons", "--gather-rays", "--gather-k", "--radiance-photons",
+    {"render --integrator photon", {"--photons", "--caustic-photons", "--gather-rays", "--max-deposits", "--gather-k", "--radiance-photons",
                                     "--radius", "--alpha", "--q", "--importons", "--deposit-epsilon", "--density-accuracy",
                                     "--density-rounds"}},
     {"render --integrator guided", {"--guide-photons", "--guide-k", "--guide-adapt", "--guide-mix"}},

@@ -18,6 +18,7 @@
 #include "shared/bvh_traverse.glsl"
 #include "test_scenes.h"
 #include "vk/buffer.h"
+#include "vk/buffer_view.h"
 #include "vk/kernel.h"
 
 namespace vkp {
@@ -93,8 +94,9 @@ uint32_t gpuStackOverflows(const Comb& c, uint32_t rayCount) {
     vk::Context& context = test::gpu();
     const std::vector<TestRay> rays(rayCount, TestRay{glm::vec4(-1, 0, 0, 1e30f), glm::vec4(1, 0, 0, 0)});
     vk::Buffer rayBuffer = vk::makeStorageBuffer(context, "rays", rays);
-    vk::Buffer nodeBuffer = vk::makeStorageBuffer(context, "nodes", c.nodes);
-    vk::Buffer triBuffer = vk::makeStorageBuffer(context, "triangles", c.triangles);
+    vk::Buffer nodeBuffer = vk::makeTexelReadBuffer(context, "nodes", c.nodes);
+    vk::Buffer triBuffer = vk::makeTexelReadBuffer(context, "triangles", c.triangles);
+    const vk::BvhTexelViews texels(context, nodeBuffer, c.nodes.size(), triBuffer, c.triangles.size());
     vk::Buffer hitBuffer(context, "hits", rays.size() * 20, vk::kStorageUsage);
     vk::Kernel<gpu::BvhTestKernel> kernel(context);
     kernel.bind(gpu::kBvhTestRayBinding, rayBuffer);
@@ -104,6 +106,7 @@ uint32_t gpuStackOverflows(const Comb& c, uint32_t rayCount) {
     const std::vector<gpu::GpuInstanceHeader> noInstances(1);  // one tree, no top level
     vk::Buffer instanceBuffer = vk::makeStorageBuffer(context, "instances", noInstances);
     kernel.bind(gpu::kBvhTestInstanceBinding, instanceBuffer);
+    kernel.bind(vk::KernelBindings{{}, nullptr, std::nullopt, &texels.views()});
     clearTerminations(context);
     context.submitAndWait([&](VkCommandBuffer cmd) {
         kernel.record(cmd, rayCount, rayCount);

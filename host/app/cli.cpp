@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/compare_command.h"
 #include "app/commands.h"
 #include "app/info_command.h"
 #include "app/merge_command.h"
@@ -341,6 +342,13 @@ int runCommandLine(int argc, const char* const* argv) {
     mergeCmd->add_option("-o,--output", merge.output, "Output EXR path; a PNG is written beside it")->required();
     mergeCmd->add_flag("--quiet", merge.quiet, "No summary output");
 
+    CompareCommandOptions compare;
+    CLI::App* compareCmd = app.add_subcommand(
+        "compare", "Are two EXRs' pixels identical, bit for bit (every channel)? Exit 0 if so, 3 if not");
+    compareCmd->add_option("a", compare.a, "First EXR")->required();
+    compareCmd->add_option("b", compare.b, "Second EXR")->required();
+    compareCmd->add_flag("--quiet", compare.quiet, "No output, only the exit code");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -402,6 +410,7 @@ int runCommandLine(int argc, const char* const* argv) {
             requireNonEmpty(*mergeCmd, "--output", merge.output);
             return runMerge(merge);
         }
+        if (compareCmd->parsed()) return runCompare(compare);
         return runDevices();
     } catch (const InputError& e) {
         fmt::print(stderr, "error: {}\n", printable(e.what()));

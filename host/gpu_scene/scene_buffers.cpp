@@ -296,8 +296,8 @@ vk::Buffer makeBsdfTablesBuffer(vk::Context& context) {
 }
 
 SceneBuffers::SceneBuffers(vk::Context& context, const SceneArrays& a)
-    : m_triangles(vk::makeStorageBuffer(context, "triangles", a.triangles)),
-      m_nodes(vk::makeStorageBuffer(context, "BVH nodes", a.nodes)),
+    : m_triangles(vk::makeTexelReadBuffer(context, "triangles", a.triangles)),
+      m_nodes(vk::makeTexelReadBuffer(context, "BVH nodes", a.nodes)),
       m_shading(vk::makeStorageBuffer(context, "triangle shading", a.shading)),
       m_materials(vk::makeStorageBuffer(context, "materials", a.materials)),
       m_lights(vk::makeStorageBuffer(context, "lights", a.lights)),
@@ -309,7 +309,10 @@ SceneBuffers::SceneBuffers(vk::Context& context, const SceneArrays& a)
       m_textureArray(std::make_unique<vk::TextureArray>(context, "texture atlas", a.textureAtlas.width,
                                                         a.textureAtlas.height, a.textureAtlas.layers,
                                                         a.textureAtlas.texels)),
-      m_lightCount(static_cast<uint32_t>(a.lights.size())), m_specialization(sceneSpecialization(a)) {}
+      m_bvhTexels(context, m_nodes, a.nodes.size(), m_triangles, a.triangles.size()),
+      m_lightCount(static_cast<uint32_t>(a.lights.size())), m_specialization(sceneSpecialization(a)) {
+    m_specialization.bvhTexels = m_bvhTexels.covers();  // else the traversal reads the storage buffers
+}
 
 namespace {
 // The mode word of light-selection data (shared/light_selection.glsl), kLightSamplerAny when there
@@ -357,7 +360,7 @@ vk::KernelBindings SceneBuffers::bindings() const {
     b[gpu::kSceneTexelsBinding] = &m_texels;
     b[gpu::kSceneTablesBinding] = &m_tables;
     b[gpu::kSceneInstancesBinding] = &m_instances;
-    return {b, m_textureArray.get(), m_specialization};
+    return {b, m_textureArray.get(), m_specialization, &m_bvhTexels.views()};
 }
 
 void SceneBuffers::updateInstances(const SceneArrays& a) {

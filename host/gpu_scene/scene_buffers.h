@@ -16,6 +16,7 @@
 #include "shared/gpu_types.glsl"
 #include "shared/kernels/scene.glsl"
 #include "vk/buffer.h"
+#include "vk/buffer_view.h"
 #include "vk/compute_kernel.h"
 #include "vk/texture_array.h"
 
@@ -86,8 +87,9 @@ public:
     SceneBuffers(vk::Context& context, const SceneArrays& arrays);
 
     // The scene buffers in binding order (kSceneBindingCount of them, from binding 0), the
-    // texture array (set gpu::kSceneTextureSet) and the scene's specialization (kernels that trace
-    // rays switch to the pipeline compiled for it).
+    // texture array (set gpu::kSceneTextureSet), the BVH's texel-buffer views (set
+    // gpu::kSceneGeometrySet) and the scene's specialization (kernels that trace rays switch to
+    // the pipeline compiled for it; bvhTexels when the device's views cover the whole BVH).
     vk::KernelBindings bindings() const;
     uint32_t lightCount() const { return m_lightCount; }
     // Uploads new light-selection data (the CDF, then shared/light_selection.glsl's layout): into
@@ -116,6 +118,7 @@ private:
     vk::Buffer m_tables;  // the BSDF's albedo tables (shared/bsdf_tables.glsl kBsdfTables), binding kSceneTablesBinding
     vk::Buffer m_instances;                          // GpuInstanceHeader + GpuInstance[] (docs/bvh.md)
     std::unique_ptr<vk::TextureArray> m_textureArray;
+    vk::BvhTexelViews m_bvhTexels;  // m_nodes and m_triangles as texel buffers (shaders/scene_geometry.glsl)
     // Throws std::logic_error when `selection` names another light sampler than the one the
     // scene's kernels are specialized for.
     void checkLightSampler(const std::vector<float>& selection) const;

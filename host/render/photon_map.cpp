@@ -149,6 +149,7 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
         chunk.firstPath = firstPath + done;
         chunk.maxDeposits = m_settings.maxDeposits;
         chunk.seed = m_settings.seed;
+        chunk.requiredFlags = m_settings.requiredFlags;
         stats.traced += m_tracer.trace(chunk);
         // Room for every photon of the map's kinds traced so far (the most the compaction keeps):
         // the map's segments grow with the photons, not with paths x maxDeposits.

@@ -55,6 +55,7 @@ PhotonCounters PhotonTracer::run(const PhotonSettings& settings, uint32_t paths,
     params.seed = settings.seed;
     params.pathStride = std::max(settings.pathStride, 1u);
     params.pathList = listed ? 1u : 0u;
+    params.requiredFlags = settings.requiredFlags;
     params.lightCount = m_buffers.lightCount();
     params.totalPower = static_cast<float>(m_totalPower);
     // The kernel is made at the first trace (its pipeline is compiled then): a tracer that never

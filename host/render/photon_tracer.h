@@ -21,6 +21,7 @@ struct PhotonSettings {
     uint32_t maxDeposits = 8;     // stored photons per path at most
     uint32_t seed = 0;
     uint32_t pathStride = 1;      // Halton indices firstPath + j * pathStride (a selective-update group)
+    uint32_t requiredFlags = 0;   // gpu::kPhotonPrimary or kPhotonCaustic: store only that kind (PhotonTraceParams)
 };
 
 struct PhotonCounters {

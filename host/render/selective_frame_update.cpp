@@ -35,7 +35,7 @@ SelectiveFrameUpdate::~SelectiveFrameUpdate() = default;
 
 PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t firstPath, const FrameUpdateInfo& info) {
     const PhotonMapSettings& ms = map.settings();
-    const auto key = std::make_tuple(firstPath, ms.paths, ms.maxDeposits, ms.seed);
+    const auto key = std::make_tuple(firstPath, ms.paths, ms.maxDeposits, ms.seed, ms.requiredFlags);
     auto it = m_maps.find(key);
     if (ms.deposit.mode == gpu::kDepositDensity || (it == m_maps.end() && m_maps.size() >= kMaxPersistentMaps))
         return FrameUpdate::buildPhotonMap(map, firstPath, info);
@@ -44,6 +44,7 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
         s.paths = ms.paths;
         s.maxDeposits = ms.maxDeposits;
         s.seed = ms.seed;
+        s.requiredFlags = ms.requiredFlags;
         s.firstPath = firstPath;
         s.groups = groupsFor(m_options.groups, ms.paths);
         s.pilotsPerGroup = m_options.pilotsPerGroup;

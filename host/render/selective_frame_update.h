@@ -31,7 +31,7 @@ private:
     vk::Context& m_context;
     SelectiveUpdateOptions m_options;
     // (firstPath, paths, maxDeposits, seed) -> that map's persistent paths
-    std::map<std::tuple<uint32_t, uint32_t, uint32_t, uint32_t>, std::unique_ptr<SelectivePhotonUpdate>> m_maps;
+    std::map<std::tuple<uint32_t, uint32_t, uint32_t, uint32_t, uint32_t>, std::unique_ptr<SelectivePhotonUpdate>> m_maps;
 };
 
 }  // namespace vkp

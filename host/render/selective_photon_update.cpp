@@ -67,6 +67,7 @@ PhotonSettings SelectivePhotonUpdate::traceSettings() const {
     s.firstPath = m_settings.firstPath;
     s.maxDeposits = m_settings.maxDeposits;
     s.seed = m_settings.seed;
+    s.requiredFlags = m_settings.requiredFlags;
     return s;
 }
 

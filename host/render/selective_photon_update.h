@@ -24,6 +24,7 @@ struct SelectiveSettings {
     uint32_t paths = 200000;       // photon paths of the map (Halton indices 0 .. paths - 1)
     uint32_t maxDeposits = 8;
     uint32_t seed = 0;
+    uint32_t requiredFlags = 0;    // the map's kind of photon (PhotonSettings::requiredFlags)
     uint32_t firstPath = 0;        // path i is Halton index firstPath + i (progressive passes)
     uint32_t groups = 2310;        // 2*3*5*7*11: one digit of each of the first five Halton bases (docs)
     uint32_t pilotsPerGroup = 1;

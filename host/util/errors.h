@@ -1,4 +1,5 @@
-// Error kinds and the exit codes they map to (0 ok, 1 runtime failure, 2 bad usage or bad input).
+// Error kinds and the exit codes they map to (0 ok, 1 runtime failure, 2 bad usage or bad input;
+// 3 from `vkphoton compare`: the images differ).
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -18,5 +19,6 @@ struct RuntimeError : std::runtime_error {
 constexpr int kExitOk = 0;
 constexpr int kExitRuntimeFailure = 1;
 constexpr int kExitBadInput = 2;
+constexpr int kExitImagesDiffer = 3;
 
 }  // namespace vkp

@@ -22,11 +22,14 @@ ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
     const VkDescriptorSetLayout setLayout = m_pipeline->bufferSetLayout();
     const VkDescriptorSetLayout terminationLayout = m_pipeline->terminationSetLayout();
     const VkDescriptorSetLayout textureLayout = m_pipeline->textureSetLayout();
-    const VkDescriptorPoolSize poolSizes[2] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, std::max(1u, bufferCount + 1u)},
-                                               {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2u}};
+    const VkDescriptorSetLayout geometryLayout = m_pipeline->geometrySetLayout();
+    VkDescriptorPoolSize poolSizes[3] = {{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, std::max(1u, bufferCount + 1u)}};
+    uint32_t poolSizeCount = 1;
+    if (textureLayout) poolSizes[poolSizeCount++] = {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2u};
+    if (geometryLayout) poolSizes[poolSizeCount++] = {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 2u};
     VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 3;
-    poolInfo.poolSizeCount = textureLayout ? 2 : 1;
+    poolInfo.maxSets = 4;
+    poolInfo.poolSizeCount = poolSizeCount;
     poolInfo.pPoolSizes = poolSizes;
     check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &m_pool), "creating a descriptor pool");
     VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -49,6 +52,10 @@ ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
     if (textureLayout) {
         allocInfo.pSetLayouts = &textureLayout;
         check(vkAllocateDescriptorSets(device, &allocInfo, &m_textureSet), "allocating a descriptor set");
+    }
+    if (geometryLayout) {
+        allocInfo.pSetLayouts = &geometryLayout;
+        check(vkAllocateDescriptorSets(device, &allocInfo, &m_geometrySet), "allocating a descriptor set");
     }
 }
 
@@ -75,6 +82,7 @@ void ComputeKernel::bind(const std::vector<const Buffer*>& buffers, uint32_t fir
 void ComputeKernel::bind(const KernelBindings& bindings, uint32_t first) {
     bind(bindings.buffers, first);
     if (bindings.textures) bind(*bindings.textures);
+    if (bindings.geometry) bind(*bindings.geometry);
     if (bindings.scene) {
         m_pipeline = &m_context.computePipeline(m_interface, *bindings.scene);
         m_singleSegmentPipeline = &m_context.computePipeline(m_interface, *bindings.scene, true);
@@ -110,6 +118,23 @@ void ComputeKernel::bind(const TextureArray& textures) {
     m_texturesBound = true;
 }
 
+void ComputeKernel::bind(const SceneGeometryViews& views) {
+    if (!m_geometrySet) return;
+    const VkBufferView handles[2] = {views.nodes, views.triangles};
+    static_assert(gpu::kSceneNodeTexelsBinding == 0 && gpu::kSceneTriangleTexelsBinding == 1);
+    VkWriteDescriptorSet writes[2]{};
+    for (uint32_t i = 0; i < 2; ++i) {
+        writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        writes[i].dstSet = m_geometrySet;
+        writes[i].dstBinding = i;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+        writes[i].pTexelBufferView = &handles[i];
+    }
+    vkUpdateDescriptorSets(m_context.device(), 2, writes, 0, nullptr);
+    m_geometryBound = true;
+}
+
 void ComputeKernel::record(VkCommandBuffer cmd, uint64_t groups, const void* push, uint32_t pushBytes,
                            uint32_t firstGroup, bool rows) const {
     const uint32_t maxGroups = m_context.properties().limits.maxComputeWorkGroupCount[0];
@@ -125,6 +150,9 @@ void ComputeKernel::record(VkCommandBuffer cmd, uint64_t groups, const void* pus
     if (m_textureSet && !m_texturesBound)
         throw RuntimeError(fmt::format("{}: the scene textures (set {}) were never bound", m_interface.shader,
                                        gpu::kSceneTextureSet));
+    if (m_geometrySet && !m_geometryBound)
+        throw RuntimeError(fmt::format("{}: the BVH texel buffers (set {}) were never bound", m_interface.shader,
+                                       gpu::kSceneGeometrySet));
     if (pushBytes != m_interface.pushBytes)
         throw RuntimeError(fmt::format("{}: push constants are {} bytes, expected {}", m_interface.shader,
                                        pushBytes, m_interface.pushBytes));
@@ -137,6 +165,9 @@ void ComputeKernel::record(VkCommandBuffer cmd, uint64_t groups, const void* pus
     if (m_textureSet)
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), gpu::kSceneTextureSet, 1,
                                 &m_textureSet, 0, nullptr);
+    if (m_geometrySet)
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), gpu::kSceneGeometrySet, 1,
+                                &m_geometrySet, 0, nullptr);
     if (pushBytes) vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes, push);
     if (wide) vkCmdDispatch(cmd, kRowGroups, static_cast<uint32_t>(rowCount), 1);
     else if (groups && firstGroup) vkCmdDispatchBase(cmd, firstGroup, 0, 0, static_cast<uint32_t>(groups), 1, 1);

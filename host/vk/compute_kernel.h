@@ -21,15 +21,24 @@ class Buffer;
 class Context;
 class TextureArray;
 
+// The scene's BVH nodes and triangles as uniform texel buffers (R32G32B32A32_UINT views of the
+// storage buffers), set gpu::kSceneGeometrySet (shaders/scene_geometry.glsl).
+struct SceneGeometryViews {
+    VkBufferView nodes = VK_NULL_HANDLE;
+    VkBufferView triangles = VK_NULL_HANDLE;
+};
+
 // What a resource owner binds to a kernel at once (SceneBuffers::bindings()): storage buffers at
 // bindings first, first + 1, ... of set 0 and, for kernels that declare it, the texture array of
-// set gpu::kSceneTextureSet (kernels that do not read textures ignore it).
+// set gpu::kSceneTextureSet and the BVH's texel-buffer views of set gpu::kSceneGeometrySet
+// (kernels that declare neither ignore them).
 // A scene's bindings also say what the scene lets the traversal leave out (`scene`): binding them
 // switches a ray-tracing kernel to the pipeline specialized for it (compute_pipeline.h).
 struct KernelBindings {
     std::vector<const Buffer*> buffers;
     const TextureArray* textures = nullptr;
     std::optional<SceneSpecialization> scene;
+    const SceneGeometryViews* geometry = nullptr;
 };
 
 // Items first .. first + count - 1 of a dispatch (a window of pixels: --tile, --crop). Recorded
@@ -64,6 +73,8 @@ public:
     void bind(const KernelBindings& bindings, uint32_t first = 0);
     // Points set gpu::kSceneTextureSet at `textures` (ignored when the shader declares no textures).
     void bind(const TextureArray& textures);
+    // Points set gpu::kSceneGeometrySet at `views` (ignored when the shader declares none).
+    void bind(const SceneGeometryViews& views);
 
     // Dispatches `groups` 1-D workgroups, from workgroup `firstGroup` on, after pushing
     // `pushBytes` of push constants. Past maxComputeWorkGroupCount[0] workgroups, a kernel whose
@@ -108,6 +119,9 @@ private:
     // The scene textures (set gpu::kSceneTextureSet), when the shader declares them.
     VkDescriptorSet m_textureSet = VK_NULL_HANDLE;
     bool m_texturesBound = false;
+    // The BVH's texel-buffer views (set gpu::kSceneGeometrySet), when the shader declares them.
+    VkDescriptorSet m_geometrySet = VK_NULL_HANDLE;
+    bool m_geometryBound = false;
 };
 
 // Makes compute-shader writes visible to later compute reads and transfers.

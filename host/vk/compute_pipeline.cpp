@@ -45,7 +45,7 @@ bool declaresSpecId(std::span<const uint32_t> spirv, std::initializer_list<uint3
 
 bool usesSceneSpecialization(std::span<const uint32_t> spirv) {
     return declaresSpecId(spirv, {gpu::kSceneHasInstancesId, gpu::kSceneHasAlphaTestId, gpu::kSceneHasTexturesId,
-                                  gpu::kSceneLightSamplerId});
+                                  gpu::kSceneLightSamplerId, gpu::kSceneBvhTexelsId});
 }
 
 bool usesSingleSegmentSpecialization(std::span<const uint32_t> spirv) {
@@ -75,18 +75,32 @@ ComputePipeline::ComputePipeline(const Context& context, const KernelInterface& 
             createSetLayout(m_device, {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}});
         setLayouts.push_back(m_terminationLayout);
     }
+    // Sets a shader leaves out below one it declares get an empty layout.
+    const auto padTo = [&](uint32_t set) {
+        while (setLayouts.size() < set) {
+            if (!m_emptyLayout) m_emptyLayout = createSetLayout(m_device, {});
+            setLayouts.push_back(m_emptyLayout);
+        }
+    };
     if (declared.sceneTextures) {  // set gpu::kSceneTextureSet == 2: the scene's texture array (two views)
         static_assert(gpu::kSceneTextureSet == 2 && gpu::kSceneTextureUnormBinding == 0 &&
                       gpu::kSceneTextureSrgbBinding == 1);
-        if (!declared.terminationCounters) {
-            m_emptyLayout = createSetLayout(m_device, {});
-            setLayouts.push_back(m_emptyLayout);
-        }
+        padTo(gpu::kSceneTextureSet);
         std::vector<VkDescriptorSetLayoutBinding> views(2);
         for (uint32_t i = 0; i < 2; ++i)
             views[i] = {i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
         m_textureLayout = createSetLayout(m_device, views);
         setLayouts.push_back(m_textureLayout);
+    }
+    if (declared.sceneGeometry) {  // set gpu::kSceneGeometrySet == 3: the BVH's texel-buffer views
+        static_assert(gpu::kSceneGeometrySet == 3 && gpu::kSceneNodeTexelsBinding == 0 &&
+                      gpu::kSceneTriangleTexelsBinding == 1);
+        padTo(gpu::kSceneGeometrySet);
+        std::vector<VkDescriptorSetLayoutBinding> views(2);
+        for (uint32_t i = 0; i < 2; ++i)
+            views[i] = {i, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+        m_geometryLayout = createSetLayout(m_device, views);
+        setLayouts.push_back(m_geometryLayout);
     }
 
     VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, interface.pushBytes};
@@ -101,15 +115,16 @@ ComputePipeline::ComputePipeline(const Context& context, const KernelInterface& 
 VkPipeline ComputePipeline::pipeline() const {
     std::call_once(m_compiled, [&] {
         // Entries for constants a shader does not declare are ignored (shaders without a traversal).
-        const uint32_t values[5] = {m_scene.instances ? VK_TRUE : VK_FALSE, m_scene.alphaTest ? VK_TRUE : VK_FALSE,
+        const uint32_t values[6] = {m_scene.instances ? VK_TRUE : VK_FALSE, m_scene.alphaTest ? VK_TRUE : VK_FALSE,
                                     m_scene.textures ? VK_TRUE : VK_FALSE, m_scene.lightSampler,
-                                    m_singleSegment ? VK_TRUE : VK_FALSE};
-        const VkSpecializationMapEntry entries[5] = {{gpu::kSceneHasInstancesId, 0, sizeof(VkBool32)},
+                                    m_scene.bvhTexels ? VK_TRUE : VK_FALSE, m_singleSegment ? VK_TRUE : VK_FALSE};
+        const VkSpecializationMapEntry entries[6] = {{gpu::kSceneHasInstancesId, 0, sizeof(VkBool32)},
                                                      {gpu::kSceneHasAlphaTestId, 4, sizeof(VkBool32)},
                                                      {gpu::kSceneHasTexturesId, 8, sizeof(VkBool32)},
                                                      {gpu::kSceneLightSamplerId, 12, sizeof(uint32_t)},
-                                                     {gpu::kSingleSegmentId, 16, sizeof(VkBool32)}};
-        const VkSpecializationInfo specialization{5, entries, sizeof(values), values};
+                                                     {gpu::kSceneBvhTexelsId, 16, sizeof(VkBool32)},
+                                                     {gpu::kSingleSegmentId, 20, sizeof(VkBool32)}};
+        const VkSpecializationInfo specialization{6, entries, sizeof(values), values};
         VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
         pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
         pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -127,7 +142,7 @@ VkPipeline ComputePipeline::pipeline() const {
 ComputePipeline::~ComputePipeline() {
     if (m_pipeline) vkDestroyPipeline(m_device, m_pipeline, nullptr);
     vkDestroyPipelineLayout(m_device, m_pipelineLayout, nullptr);
-    for (VkDescriptorSetLayout layout : {m_setLayout, m_terminationLayout, m_emptyLayout, m_textureLayout})
+    for (VkDescriptorSetLayout layout : {m_setLayout, m_terminationLayout, m_emptyLayout, m_textureLayout, m_geometryLayout})
         if (layout) vkDestroyDescriptorSetLayout(m_device, layout, nullptr);
     vkDestroyShaderModule(m_device, m_module, nullptr);
 }
@@ -136,10 +151,10 @@ const ComputePipeline& ComputePipelineCache::get(const Context& context, const K
                                                  SceneSpecialization scene, bool singleSegment) {
     if (!usesSceneSpecialization(shaderCode(interface.shader))) scene = {};  // one pipeline for any scene
     if (!usesSingleSegmentSpecialization(shaderCode(interface.shader))) singleSegment = false;
-    const std::string key = fmt::format("{}|{}|{}|{}|{}{}{}|{}|{}", interface.shader, interface.bindingCount,
+    const std::string key = fmt::format("{}|{}|{}|{}|{}{}{}{}|{}|{}", interface.shader, interface.bindingCount,
                                         interface.pushBytes, interface.groupSize, int(scene.instances),
-                                        int(scene.alphaTest), int(scene.textures), scene.lightSampler,
-                                        int(singleSegment));
+                                        int(scene.alphaTest), int(scene.textures), int(scene.bvhTexels),
+                                        scene.lightSampler, int(singleSegment));
     std::lock_guard lock(m_mutex);
     auto& slot = m_pipelines[key];
     if (!slot) {

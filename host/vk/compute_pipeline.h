@@ -21,7 +21,7 @@ namespace vkp::vk {
 class Context;
 
 // Whether SPIR-V declares the scene's specialization constants (gpu::kSceneHasInstancesId,
-// kSceneHasAlphaTestId, kSceneHasTexturesId, kSceneLightSamplerId): kernels that trace rays
+// kSceneHasAlphaTestId, kSceneHasTexturesId, kSceneLightSamplerId, kSceneBvhTexelsId): kernels that trace rays
 // (shared/bvh_traverse.glsl), read the scene's textures or select lights (scene_access.glsl).
 bool usesSceneSpecialization(std::span<const uint32_t> spirv);
 // Whether SPIR-V declares gpu::kSingleSegmentId: kernels that bind segmented arrays
@@ -49,14 +49,17 @@ public:
     VkDescriptorSetLayout terminationSetLayout() const { return m_terminationLayout; }
     // Set gpu::kSceneTextureSet, or VK_NULL_HANDLE when the shader reads no scene textures.
     VkDescriptorSetLayout textureSetLayout() const { return m_textureLayout; }
+    // Set gpu::kSceneGeometrySet, or VK_NULL_HANDLE when the shader declares no BVH texel buffers.
+    VkDescriptorSetLayout geometrySetLayout() const { return m_geometryLayout; }
 
 private:
     VkDevice m_device = VK_NULL_HANDLE;
     VkShaderModule m_module = VK_NULL_HANDLE;
     VkDescriptorSetLayout m_setLayout = VK_NULL_HANDLE;
     VkDescriptorSetLayout m_terminationLayout = VK_NULL_HANDLE;
-    VkDescriptorSetLayout m_emptyLayout = VK_NULL_HANDLE;  // set 1 when textures come without counters
+    VkDescriptorSetLayout m_emptyLayout = VK_NULL_HANDLE;  // sets left out below a declared one
     VkDescriptorSetLayout m_textureLayout = VK_NULL_HANDLE;
+    VkDescriptorSetLayout m_geometryLayout = VK_NULL_HANDLE;
     VkPipelineLayout m_pipelineLayout = VK_NULL_HANDLE;
     std::string m_name;
     SceneSpecialization m_scene;

@@ -32,6 +32,9 @@ struct SceneSpecialization {
     bool alphaTest = true;   // some triangle is alpha-tested (GpuTriangle v0.w != 0)
     bool textures = true;    // some material has a texture (the scene's GpuTexture views)
     uint32_t lightSampler = 0xffffffffu;  // gpu::kLightSamplerPower/Bvh/Photon, or kLightSamplerAny (read the data)
+    // The traversal reads nodes and triangles through the texel-buffer views of set
+    // gpu::kSceneGeometrySet (shaders/scene_geometry.glsl); false: through the storage buffers.
+    bool bvhTexels = false;
     bool operator==(const SceneSpecialization&) const = default;
 };
 

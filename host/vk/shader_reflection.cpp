@@ -96,6 +96,11 @@ ShaderInterface reflectComputeShader(std::string_view name, std::span<const uint
             if (other.type == SPVC_RESOURCE_TYPE_SAMPLED_IMAGE && set == gpu::kSceneTextureSet &&
                 (binding == gpu::kSceneTextureUnormBinding || binding == gpu::kSceneTextureSrgbBinding))
                 out.sceneTextures = true;
+            else if ((other.type == SPVC_RESOURCE_TYPE_SAMPLED_IMAGE ||  // SPIRV-Cross lists a samplerBuffer
+                      other.type == SPVC_RESOURCE_TYPE_SEPARATE_IMAGE) &&    // as a separate image
+                     set == gpu::kSceneGeometrySet &&
+                     (binding == gpu::kSceneNodeTexelsBinding || binding == gpu::kSceneTriangleTexelsBinding))
+                out.sceneGeometry = true;
             else
                 out.unbindable.push_back(fmt::format("{} '{}' (binding {})", other.what, list[i].name, binding));
         }

@@ -30,6 +30,10 @@ struct ShaderInterface {
     // kSceneTextureUnormBinding and kSceneTextureSrgbBinding: combined image samplers), which
     // vk::ComputeKernel binds from a vk::TextureArray.
     bool sceneTextures = false;
+    // Declares the BVH's texel-buffer views (set gpu::kSceneGeometrySet, bindings
+    // kSceneNodeTexelsBinding and kSceneTriangleTexelsBinding: uniform texel buffers), which
+    // vk::ComputeKernel binds from a vk::SceneGeometryViews.
+    bool sceneGeometry = false;
 };
 
 // Reflects `spirv` (a compute shader); throws RuntimeError naming `name` if it cannot be parsed.

@@ -8,6 +8,9 @@
 //      readonly buffer BvhNodes { GpuBvhNode bvhNodes[]; };   // static tree at 0, meshes', top level
 //      readonly buffer Triangles { GpuTriangle triangles[]; }; // static (BVH order), then meshes'
 //      readonly buffer Instances { GpuInstanceHeader instanceHeader; GpuInstance instances[]; };
+//    A shader that defines BVH_NODE_AT(i) and BVH_TRIANGLE_AT(i) first reads nodes and triangles
+//    through them instead (scene_geometry.glsl: the same buffers as uniform texel buffers, which
+//    lavapipe reads with vector gathers; docs/bvh.md "Texel-buffer reads").
 //  - C++: every function takes a BvhArrays (spans of the same arrays) as its first argument
 //    (BVH_ARRAYS_PARAM; nothing in GLSL).
 // docs/bvh.md describes the two levels and the hit ids.
@@ -51,8 +54,13 @@ struct BvhArrays {
 #else
 #define BVH_ARRAYS_PARAM
 #define BVH_ARRAYS_ARG
+#ifdef BVH_NODE_AT  // the including shader reads them its own way (scene_geometry.glsl: texel buffers)
+#define BVH_NODE(i) BVH_NODE_AT(i)
+#define BVH_TRIANGLE(i) BVH_TRIANGLE_AT(i)
+#else
 #define BVH_NODE(i) bvhNodes[i]
 #define BVH_TRIANGLE(i) triangles[i]
+#endif
 #define BVH_INSTANCE(i) instances[i]
 #define BVH_INSTANCE_HEADER instanceHeader
 #endif

@@ -91,8 +91,14 @@ struct PhotonTraceParams {
                           // selective-update group, docs/photon-mapping.md); slots stay local * maxDeposits + k
     uint pathList;        // 1: path `local` is firstPath + pathList[local] (the path-list binding: a
                           // selective update's marked groups in one dispatch), pathStride ignored; 0: off
+    uint requiredFlags;   // kPhotonPrimary / kPhotonCaustic: the only kind the map keeps. Other deposits
+                          // take no slot, and a path ends once it can make no more of that kind (the
+                          // caustic map's paths pass photon-storing surfaces they leave by a delta lobe)
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
-STATIC_ASSERT_SIZE(PhotonTraceParams, 48)
+STATIC_ASSERT_SIZE(PhotonTraceParams, 64)
 
 SHARED_END
 #endif

@@ -44,6 +44,7 @@ layout(std430, set = 0, binding = kBvhTestInstanceBinding) readonly buffer Insta
 };
 layout(push_constant) uniform Push { uint rayCount; } push;
 
+#include "scene_geometry.glsl"  // texel-buffer reads when specialized for them (bvhTexels)
 #include "shared/bvh_traverse.glsl"
 #include "termination_counters.glsl"
 

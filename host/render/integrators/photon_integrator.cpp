@@ -92,6 +92,15 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
     m_globalCellSize = globalStats.cellSize;
     reportMapBuild(m_stats, globalStats);
     m_stats.set("photons.globalStored", globalStats.stored);
+    m_stats.set("photons.globalTruncated", globalStats.traced.truncated);
+    // Paths cut short by --max-deposits lose the light they would still carry: in bright closed
+    // scenes (albedos near 1) that darkens the image (docs/photon-mapping.md "Limits left").
+    if (globalStats.traced.emitted > 0 &&
+        double(globalStats.traced.truncated) > 0.01 * double(globalStats.traced.emitted))
+        m_stats.note(fmt::format("{:.1f} % of the global map's photon paths reached --max-deposits {}; the light they "
+                                 "would still carry is lost (raise --max-deposits)",
+                                 100.0 * double(globalStats.traced.truncated) / double(globalStats.traced.emitted),
+                                 p.maxDeposits));
     m_stats.set("photons.globalDeposits", globalStats.candidates);
     m_stats.add("photons.mapBytes", m_globalMap->bytes());
 
@@ -99,7 +108,7 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
     if (causticPaths > 0) {
         PhotonMapSettings causticSettings;
         causticSettings.paths = causticPaths;
-        causticSettings.maxDeposits = 1;  // a caustic photon is its path's first deposit
+        causticSettings.maxDeposits = 1;  // a path's first caustic photon (PhotonSettings::requiredFlags)
         causticSettings.seed = frame.seed;
         causticSettings.requiredFlags = gpu::kPhotonCaustic;
         causticSettings.cellSize = 2.0f * m_radius;

@@ -62,6 +62,10 @@ void PhotonIntegratorSettings::addOptions(CLI::App& group) {
     group.add_option("--gather-rays", gatherRays,
                      "Final gather rays per sample (0: read the global map at the visible point)")
         ->capture_default_str();
+    group.add_option("--max-deposits", maxDeposits,
+                     "Stored photons per global-map path at most: a path that reaches it ends, and the light it "
+                     "would still have carried is lost (a note says how many did)")
+        ->capture_default_str();
     group.add_option("--gather-k", gatherK, "Nearest photons per global-map estimate")->capture_default_str();
     group.add_option("--radiance-photons", radiancePhotonStride,
                      "About every n-th global photon carries a precomputed irradiance estimate that final gathers read "

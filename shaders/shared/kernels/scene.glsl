@@ -26,12 +26,24 @@ const uint kSceneHasInstancesId = 0u;
 const uint kSceneHasAlphaTestId = 1u;
 const uint kSceneHasTexturesId = 2u;
 const uint kSceneLightSamplerId = 3u;  // uint: kLightSamplerPower/Bvh/Photon, or kLightSamplerAny
+// bool, default false: the traversal reads nodes and triangles through the texel-buffer views of
+// set kSceneGeometrySet instead of the storage buffers (shaders/scene_geometry.glsl, issue 17).
+const uint kSceneBvhTexelsId = 4u;
 
 // The textures: one RGBA8 2-D array image (host/gpu_scene/texture_atlas.h), read with texelFetch
 // through two views, in a descriptor set of their own (set 1 holds the termination counters).
 const uint kSceneTextureSet = 2u;
 const uint kSceneTextureUnormBinding = 0u;  // sampler2DArray, R8G8B8A8_UNORM view
 const uint kSceneTextureSrgbBinding = 1u;   // sampler2DArray, R8G8B8A8_SRGB view (decoded on read)
+
+// The BVH nodes and triangles again (the same buffers as bindings kSceneBvhNodesBinding and
+// kSceneTrianglesBinding), as R32G32B32A32_UINT uniform texel buffers: two texels per GpuBvhNode,
+// three per GpuTriangle. lavapipe reads a storage buffer at a per-lane address one lane and one
+// 32-bit word at a time (a scalar loop with a bounds check per word); a texel fetch is a vector
+// gather (docs/bvh.md "Texel-buffer reads").
+const uint kSceneGeometrySet = 3u;
+const uint kSceneNodeTexelsBinding = 0u;      // usamplerBuffer over the GpuBvhNode buffer
+const uint kSceneTriangleTexelsBinding = 1u;  // usamplerBuffer over the GpuTriangle buffer
 
 SHARED_END
 #endif
