@@ -4,7 +4,7 @@
 // integrator (two-pass and progressive) on one scene. Usage:
 //   build/bench/photon_map_bench [SCENE] [--size N --reference-spp N --reference FILE.exr
 //                                 --max-seconds S --repeat R --device D --map-photons 4,16,64
-//                                 --skip-grid --skip-convergence]
+//                                 --skip-grid --skip-convergence --segment-shift N]
 // Prints Markdown tables for docs/benchmarks.md. The reference (path tracer, --reference-spp) is
 // written to --reference when that file does not exist and read from it when it does.
 #include <algorithm>
@@ -41,26 +41,33 @@ using namespace vkp;
 
 
 
-void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_t repeat) {
+void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_t repeat, uint32_t segmentShift) {
     const SceneArrays arrays = buildSceneArrays(scene);
     const SceneBuffers buffers(context, arrays);
     PhotonMapSettings settings;
     settings.paths = paths;
     settings.cellSize = 0.03f;
+    settings.segmentShift = segmentShift;
     PhotonMap map(context, scene, arrays, buffers, settings);
-    std::vector<double> grid, trace;
+    std::vector<double> grid, gridCpu, trace;
     PhotonMapStats stats;
     for (uint32_t r = 0; r <= repeat; ++r) {
         stats = map.build(r * paths);
-        if (r > 0) { grid.push_back(stats.gridSeconds); trace.push_back(stats.traceSeconds); }
+        if (r > 0) {
+            grid.push_back(stats.gridSeconds);
+            gridCpu.push_back(stats.gridCpuSeconds);
+            trace.push_back(stats.traceSeconds);
+        }
     }
     const double millions = stats.stored / 1e6;
-    fmt::print("\n### Photon map build ({} paths, {} photons stored, {} chunk(s))\n\n", paths, stats.stored,
-               stats.chunks);
+    fmt::print("\n### Photon map build ({} paths, {} photons stored, {} chunk(s), segments of {} photons)\n\n", paths,
+               stats.stored, stats.chunks, map.segmentPhotons());
     fmt::print("| measure | value |\n|---|---|\n");
     fmt::print("| tracing + compaction | {:.3f} s ({:.2f} M paths/s) |\n", bench::median(trace), paths / bench::median(trace) / 1e6);
     fmt::print("| grid build (count, scan, scatter, sort, copy) | {:.3f} s per million photons |\n",
                bench::median(grid) / millions);
+    fmt::print("| grid build, CPU time of every thread | {:.3f} CPU s per million photons |\n",
+               bench::median(gridCpu) / millions);
 
     // Gathers at every 8th photon of the map: where the scene's surfaces are.
     const uint32_t stride = 8;
@@ -71,19 +78,24 @@ void benchGrid(vk::Context& context, const Scene& scene, uint32_t paths, uint32_
     kernel.bind(gpu::kGatherBenchGridBinding + 1, map.grid().photons());
     kernel.bind(gpu::kGatherBenchResultBinding, results);
     fmt::print("\n### Gathers ({} queries at photon positions, cell size {} m)\n\n", queries, settings.cellSize);
-    fmt::print("| query | queries/s |\n|---|---|\n");
+    fmt::print("| query | queries/s | queries per CPU second |\n|---|---|---|\n");
     struct Mode { const char* name; uint32_t mode, k; float radius; };
     for (const Mode& m : {Mode{"fixed radius 0.03 m, cone filter", 0, 0, 0.03f},
                           Mode{"32 nearest within 0.06 m", 1, 32, 0.06f},
                           Mode{"nearest within 0.03 m", 2, 1, 0.03f}}) {
         gpu::GatherBenchParams push{map.grid().view(map.photonPower()), queries, stride, m.mode, m.k, m.radius};
-        std::vector<double> times;
+        std::vector<double> times, cpuTimes;
         for (uint32_t r = 0; r <= repeat; ++r) {
             const auto start = Clock::now();
+            const double cpuStart = processCpuSeconds();
             context.submitAndWait([&](VkCommandBuffer cmd) { kernel.record(cmd, queries, push); });
-            if (r > 0) times.push_back(secondsSince(start));
+            if (r > 0) {
+                times.push_back(secondsSince(start));
+                cpuTimes.push_back(processCpuSeconds() - cpuStart);
+            }
         }
-        fmt::print("| {} | {:.2f} M |\n", m.name, queries / bench::median(times) / 1e6);
+        fmt::print("| {} | {:.3f} M | {:.3f} M |\n", m.name, queries / bench::median(times) / 1e6,
+                   queries / bench::median(cpuTimes) / 1e6);
     }
 }
 
@@ -176,13 +188,16 @@ void benchConvergence(vk::Context& context, const Scene& scene, uint32_t size, u
 int main(int argc, char** argv) {
     CLI::App app{"vkphoton photon map benchmark"};
     std::string scenePath = std::string(VKPHOTON_SOURCE_DIR) + "/scenes/cornell-glass.gltf";
-    uint32_t paths = 1000000, repeat = 3, size = 128, referenceSpp = 2048;
+    uint32_t paths = 1000000, repeat = 3, size = 128, referenceSpp = 2048, segmentShift = 0;
     double maxSeconds = 60.0;
     std::string device, referencePath;
     bool skipConvergence = false, skipGrid = false;
     std::vector<uint32_t> mapMillions;
     app.add_option("scene", scenePath, "glTF scene")->capture_default_str();
     app.add_option("--paths", paths, "photon paths for the build and gather measurements")->capture_default_str();
+    app.add_option("--segment-shift", segmentShift,
+                   "segments of 2^N photons for the --paths map (0: the default, 4 M): the general form of the "
+                   "segmented kernels on a map of several segments")->capture_default_str();
     app.add_option("--repeat", repeat, "runs after a warm-up (the median is reported)")->capture_default_str();
     app.add_option("--size", size, "image size of the error-against-time runs")->capture_default_str();
     app.add_option("--reference-spp", referenceSpp, "path-traced reference samples per pixel")->capture_default_str();
@@ -199,7 +214,7 @@ int main(int argc, char** argv) {
         const Scene scene = loadGltf(scenePath);
         vk::Context context({false, device});
         fmt::print("scene: {} ({} triangles), device: {}\n", scenePath, scene.triangles.size(), context.deviceName());
-        if (!skipGrid) benchGrid(context, scene, paths, repeat);
+        if (!skipGrid) benchGrid(context, scene, paths, repeat, segmentShift);
         if (!mapMillions.empty()) benchMapSizes(context, scene, mapMillions);
         if (!skipConvergence) benchConvergence(context, scene, size, referenceSpp, referencePath, maxSeconds);
         return 0;

@@ -14,7 +14,7 @@ layout(std430, set = 0, binding = kCompactRankBinding) buffer Ranks { uint ranks
 #include "segmented.glsl"
 
 // The dense map: a segmented array (segmented.glsl), so it may outgrow one buffer.
-layout(std430, set = 0, binding = kCompactMapBinding) readonly buffer Map { SEGMENT_TABLE } mapTable;
+SEGMENTED_ARRAY(kCompactMapBinding, Map, mapTable);
 layout(std430, set = 0, binding = kCompactStateBinding) buffer MapState { uint mapState[]; };  // kPhotonMapState*
 
 layout(push_constant) uniform Push { PhotonCompactParams params; };

@@ -14,8 +14,8 @@ layout(local_size_x = kDepositGroupSize) in;
 #include "segmented.glsl"
 
 // The map and the grid's sorted slots: segmented arrays (segmented.glsl).
-layout(std430, set = 0, binding = kRedistributeMapBinding) readonly buffer Map { SEGMENT_TABLE } mapTable;
-layout(std430, set = 0, binding = kRedistributeSortedSlotBinding) readonly buffer SortedSlots { SEGMENT_TABLE } sortedSlotTable;
+SEGMENTED_ARRAY(kRedistributeMapBinding, Map, mapTable);
+SEGMENTED_ARRAY(kRedistributeSortedSlotBinding, SortedSlots, sortedSlotTable);
 layout(std430, set = 0, binding = kRedistributeRedistributedBinding) buffer Redistributed { uint redistributed[]; };
 
 layout(push_constant) uniform Push { RedistributeParams params; };

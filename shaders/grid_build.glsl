@@ -11,13 +11,13 @@
 #include "segmented.glsl"
 
 // The input, the sorted slots and the output are segmented arrays (segmented.glsl): a map of any size.
-layout(std430, set = 0, binding = kGridSlotBinding) readonly buffer Photons { SEGMENT_TABLE } photonTable;  // fixed slots
+SEGMENTED_ARRAY(kGridSlotBinding, Photons, photonTable);  // fixed slots
 // tableSize + 1 entries: counts per bucket, then (scanned) the first sorted index of each bucket;
 // the last entry ends as the number of photons in the grid.
 layout(std430, set = 0, binding = kGridCellStartBinding) buffer CellStart { uint cellStart[]; };
 layout(std430, set = 0, binding = kGridCursorBinding) buffer Cursor { uint cursor[]; };            // scatter positions
-layout(std430, set = 0, binding = kGridSortedSlotBinding) readonly buffer SortedSlots { SEGMENT_TABLE } sortedSlotTable;  // slot per sorted photon
-layout(std430, set = 0, binding = kGridPhotonBinding) readonly buffer GridPhotons { SEGMENT_TABLE } gridPhotonTable;
+SEGMENTED_ARRAY(kGridSortedSlotBinding, SortedSlots, sortedSlotTable);  // slot per sorted photon
+SEGMENTED_ARRAY(kGridPhotonBinding, GridPhotons, gridPhotonTable);
 #define PHOTON(i) PHOTON_AT(photonTable, i)
 #define SORTED_SLOT(i) UINT_AT(sortedSlotTable, i)
 #define GRID_PHOTON(i) PHOTON_AT(gridPhotonTable, i)

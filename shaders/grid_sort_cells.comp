@@ -16,16 +16,17 @@ const uint kGaps[8] = uint[8](701u, 301u, 132u, 57u, 23u, 10u, 4u, 1u);
 // A bucket's slots almost always lie in one segment of the sorted slots (buckets hold a few
 // photons, segments millions): its reference and mask stay in registers instead of being read
 // from the segment table at every access of the sort. A bucket across two segments goes
-// through the table.
+// through the table. In the one-segment form (kSingleSegment, segmented.glsl) SORTED_SLOT is a
+// direct index already, and the constant leaves only it (lavapipe runs both sides of a branch).
 UintSegment bucketSegment;
 uint bucketMask;
 bool bucketInOneSegment;
 
-uint slotAt(uint k) { return bucketInOneSegment ? bucketSegment.items[k & bucketMask] : SORTED_SLOT(k); }
+uint slotAt(uint k) { return kSingleSegment || !bucketInOneSegment ? SORTED_SLOT(k) : bucketSegment.items[k & bucketMask]; }
 
 void setSlot(uint k, uint value) {
-    if (bucketInOneSegment) bucketSegment.items[k & bucketMask] = value;
-    else SORTED_SLOT(k) = value;
+    if (kSingleSegment || !bucketInOneSegment) SORTED_SLOT(k) = value;
+    else bucketSegment.items[k & bucketMask] = value;
 }
 
 void sortBucket() {

@@ -20,7 +20,7 @@ layout(local_size_x = kGuideCacheGroupSize) in;
 
 layout(std430, set = 0, binding = kGuideCacheCellStartBinding) readonly buffer CellStart { uint cellStart[]; };
 #include "segmented.glsl"
-layout(std430, set = 0, binding = kGuideCachePhotonBinding) readonly buffer GridPhotons { SEGMENT_TABLE } gridPhotonTable;
+SEGMENTED_ARRAY(kGuideCachePhotonBinding, GridPhotons, gridPhotonTable);
 layout(std430, set = 0, binding = kGuideCacheCellsBinding) writeonly buffer CacheCells { ivec4 cacheCells[]; };  // xyz cell, w 1: used
 layout(std430, set = 0, binding = kGuideCacheCdfsBinding) writeonly buffer CacheCdfs { float cacheCdfs[]; };    // kMaxGuideCells each
 layout(std430, set = 0, binding = kGuideCacheIrradianceBinding) writeonly buffer CacheIrradiance { vec4 cacheIrradiance[]; };  // rgb W/m^2, w photons

@@ -22,7 +22,7 @@
 
 layout(std430, set = 0, binding = PHOTON_GRID_BINDING) readonly buffer GridCellStart { uint gridCellStart[]; };
 // The grid's photons: a segmented array (segmented.glsl), so a map may outgrow one buffer.
-layout(std430, set = 0, binding = PHOTON_GRID_BINDING + 1) readonly buffer GridPhotons { SEGMENT_TABLE } gridPhotonTable;
+SEGMENTED_ARRAY(PHOTON_GRID_BINDING + 1, GridPhotons, gridPhotonTable);
 
 // The grid's i-th photon (bucket order).
 GpuPhoton gridPhoton(uint i) { return PHOTON_AT(gridPhotonTable, i); }

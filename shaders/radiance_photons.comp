@@ -19,7 +19,7 @@
 
 layout(local_size_x = kPhotonEstimateGroupSize) in;
 
-layout(std430, set = 0, binding = kRadiancePhotonsOutputBinding) readonly buffer RadiancePhotons { SEGMENT_TABLE } radiancePhotonTable;
+SEGMENTED_ARRAY(kRadiancePhotonsOutputBinding, RadiancePhotons, radiancePhotonTable);
 
 layout(push_constant) uniform Push { RadiancePhotonParams params; };
 

@@ -18,8 +18,10 @@
 #include "render/renderer.h"
 #include "shared/photon.glsl"
 #include "shared/photon_grid.glsl"
+#include "shaders/test_kernels.glsl"
 #include "test_scenes.h"
 #include "util/errors.h"
+#include "vk/kernel.h"
 #include "vk/segmented_buffer.h"
 
 namespace vkp {
@@ -131,6 +133,40 @@ TEST_F(PhotonMapSegmentsTest, MapPastFourMillionPhotonsKeepsThemAll) {
     std::sort(inMap.begin(), inMap.end());
     std::sort(inGrid.begin(), inGrid.end());
     EXPECT_TRUE(inMap == inGrid);
+}
+
+// Kernels are compiled twice (shaders/segmented.glsl): a dispatch whose segmented arrays all have
+// one segment runs the form that indexes segment 0 directly, any other the form that reads the
+// table; the choice follows the array as it grows, and both read and write the same elements.
+TEST_F(PhotonMapSegmentsTest, KernelsOfOneSegmentArraysIndexItDirectly) {
+    vk::Context& context = test::gpu();
+    constexpr uint32_t kCount = 3000;
+    vk::SegmentedBuffer array(context, "segmented test array", sizeof(uint32_t), kCount, kSmallSegmentShift);
+    vk::Buffer out(context, "segmented test outputs", (kCount + 1) * sizeof(uint32_t), vk::kStorageUsage);
+    vk::Kernel<gpu::SegmentedTestKernel> kernel(context);
+    kernel.bind(gpu::kSegmentedTestArrayBinding, array.table());
+    kernel.bind(gpu::kSegmentedTestOutputBinding, out);
+    std::vector<uint32_t> values(kCount);
+    for (uint32_t i = 0; i < kCount; ++i) values[i] = 7 * i + 3;
+    // 1024 elements (one segment), then all 3000 (three): the same kernel, bound once.
+    for (uint32_t count : {1u << kSmallSegmentShift, kCount}) {
+        SCOPED_TRACE(count);
+        array.upload(values.data(), 0, count);
+        const bool oneSegment = array.segmentCount() == 1;
+        EXPECT_EQ(oneSegment, count <= (1u << kSmallSegmentShift));
+        out.upload(std::vector<uint32_t>(kCount + 1, 0xffffffffu));
+        context.submitAndWait([&](VkCommandBuffer cmd) {
+            kernel.record(cmd, count, gpu::SegmentedTestParams{count, 0, 0, 0});
+            vk::computeToHostBarrier(cmd);
+        });
+        const auto outputs = out.download<uint32_t>();
+        EXPECT_EQ(outputs[0], oneSegment ? 1u : 0u);
+        const auto stored = array.download<uint32_t>(count);
+        for (uint32_t i = 0; i < count; ++i) {
+            ASSERT_EQ(outputs[1 + i], values[i]) << "element " << i;
+            ASSERT_EQ(stored[i], values[i] + 1) << "element " << i;
+        }
+    }
 }
 
 TEST_F(PhotonMapSegmentsTest, MoreThanTheDeviceHoldsIsARuntimeError) {

@@ -212,6 +212,7 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
     stats.traceSeconds = secondsSince(start);
 
     start = Clock::now();
+    const double cpuStart = processCpuSeconds();
     if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
     stats.cellSize = m_grid->settings().cellSize;
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
@@ -220,6 +221,7 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
         vk::computeToHostBarrier(cmd);
     });
     stats.gridSeconds = secondsSince(start);
+    stats.gridCpuSeconds = processCpuSeconds() - cpuStart;
     stats.bytes = bytes();
     return stats;
 }
@@ -285,6 +287,7 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t first
     stats.chunks = 1;
     stats.traceSeconds = secondsSince(start);
     start = Clock::now();
+    const double cpuStart = processCpuSeconds();
     if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
     stats.cellSize = m_grid->settings().cellSize;
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
@@ -293,6 +296,7 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t first
         vk::computeToHostBarrier(cmd);
     });
     stats.gridSeconds = secondsSince(start);
+    stats.gridCpuSeconds = processCpuSeconds() - cpuStart;
     stats.bytes = bytes();
     return stats;
 }

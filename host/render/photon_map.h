@@ -65,6 +65,7 @@ struct PhotonMapStats {
     float cellSize = 0.0f;
     double traceSeconds = 0.0;    // tracing and compaction
     double gridSeconds = 0.0;
+    double gridCpuSeconds = 0.0;  // the process's CPU time during the grid build (every thread)
     std::string stopReason;       // non-empty when the control stopped the build early
 };
 

@@ -8,13 +8,15 @@
 #include "vk/buffer.h"
 #include "vk/check.h"
 #include "vk/context.h"
+#include "vk/segmented_buffer.h"
 #include "vk/texture_array.h"
 
 namespace vkp::vk {
 
 ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
-    : m_context(context), m_interface(std::move(interface)), m_bound(m_interface.bindingCount, false),
-      m_pipeline(&context.computePipeline(m_interface)) {
+    : m_context(context), m_interface(std::move(interface)), m_bound(m_interface.bindingCount, VK_NULL_HANDLE),
+      m_pipeline(&context.computePipeline(m_interface)),
+      m_singleSegmentPipeline(&context.computePipeline(m_interface, {}, true)) {
     const VkDevice device = context.device();
     const uint32_t bufferCount = m_interface.bindingCount;
     const VkDescriptorSetLayout setLayout = m_pipeline->bufferSetLayout();
@@ -70,7 +72,7 @@ void ComputeKernel::bind(uint32_t binding, const Buffer& buffer) {
     write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     write.pBufferInfo = &info;
     vkUpdateDescriptorSets(m_context.device(), 1, &write, 0, nullptr);
-    m_bound[binding] = true;
+    m_bound[binding] = buffer.handle();
 }
 
 void ComputeKernel::bind(const std::vector<const Buffer*>& buffers, uint32_t first) {
@@ -81,7 +83,21 @@ void ComputeKernel::bind(const KernelBindings& bindings, uint32_t first) {
     bind(bindings.buffers, first);
     if (bindings.textures) bind(*bindings.textures);
     if (bindings.geometry) bind(*bindings.geometry);
-    if (bindings.scene) m_pipeline = &m_context.computePipeline(m_interface, *bindings.scene);
+    if (bindings.scene) {
+        m_pipeline = &m_context.computePipeline(m_interface, *bindings.scene);
+        m_singleSegmentPipeline = &m_context.computePipeline(m_interface, *bindings.scene, true);
+    }
+}
+
+const ComputePipeline& ComputeKernel::dispatchPipeline() const {
+    if (m_singleSegmentPipeline == m_pipeline) return *m_pipeline;  // the shader binds no segmented array
+    bool segmented = false;
+    for (VkBuffer buffer : m_bound)
+        if (const auto segments = SegmentedBuffer::segmentsAddressedBy(buffer)) {
+            if (*segments > 1) return *m_pipeline;
+            segmented = true;
+        }
+    return segmented ? *m_singleSegmentPipeline : *m_pipeline;
 }
 
 void ComputeKernel::bind(const TextureArray& textures) {
@@ -130,7 +146,7 @@ void ComputeKernel::record(VkCommandBuffer cmd, uint64_t groups, const void* pus
     if (wide && rowCount > m_context.properties().limits.maxComputeWorkGroupCount[1])
         throw RuntimeError(fmt::format("{}: {} workgroups exceed the device's dispatch limits", m_interface.shader, groups));
     for (uint32_t i = 0; i < m_interface.bindingCount; ++i)
-        if (!m_bound[i]) throw RuntimeError(fmt::format("{}: binding {} was never bound", m_interface.shader, i));
+        if (m_bound[i] == VK_NULL_HANDLE) throw RuntimeError(fmt::format("{}: binding {} was never bound", m_interface.shader, i));
     if (m_textureSet && !m_texturesBound)
         throw RuntimeError(fmt::format("{}: the scene textures (set {}) were never bound", m_interface.shader,
                                        gpu::kSceneTextureSet));
@@ -140,18 +156,19 @@ void ComputeKernel::record(VkCommandBuffer cmd, uint64_t groups, const void* pus
     if (pushBytes != m_interface.pushBytes)
         throw RuntimeError(fmt::format("{}: push constants are {} bytes, expected {}", m_interface.shader,
                                        pushBytes, m_interface.pushBytes));
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline->pipeline());
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline->layout(), 0, 1, &m_set, 0, nullptr);
+    const ComputePipeline& pipeline = dispatchPipeline();
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), 0, 1, &m_set, 0, nullptr);
     if (m_terminationSet)
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline->layout(), gpu::kTerminationSet, 1,
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), gpu::kTerminationSet, 1,
                                 &m_terminationSet, 0, nullptr);
     if (m_textureSet)
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline->layout(), gpu::kSceneTextureSet, 1,
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), gpu::kSceneTextureSet, 1,
                                 &m_textureSet, 0, nullptr);
     if (m_geometrySet)
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_pipeline->layout(), gpu::kSceneGeometrySet, 1,
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout(), gpu::kSceneGeometrySet, 1,
                                 &m_geometrySet, 0, nullptr);
-    if (pushBytes) vkCmdPushConstants(cmd, m_pipeline->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes, push);
+    if (pushBytes) vkCmdPushConstants(cmd, pipeline.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes, push);
     if (wide) vkCmdDispatch(cmd, kRowGroups, static_cast<uint32_t>(rowCount), 1);
     else if (groups && firstGroup) vkCmdDispatchBase(cmd, firstGroup, 0, 0, static_cast<uint32_t>(groups), 1, 1);
     else if (groups) vkCmdDispatch(cmd, static_cast<uint32_t>(groups), 1, 1);

@@ -102,10 +102,16 @@ public:
 private:
     Context& m_context;
     KernelInterface m_interface;
-    std::vector<bool> m_bound;
+    std::vector<VkBuffer> m_bound;  // per binding; VK_NULL_HANDLE until bound
     // The context's, shared by every kernel of this interface (and scene specialization); the
     // descriptor sets, allocated with the first one's layouts, fit all of them (identical layouts).
     const ComputePipeline* m_pipeline;
+    // The same compiled for segmented arrays of one segment (gpu::kSingleSegmentId), used by the
+    // dispatches whose bound segmented arrays all have one; null when the shader binds none.
+    const ComputePipeline* m_singleSegmentPipeline = nullptr;
+    // The pipeline for a dispatch now: m_singleSegmentPipeline when every segmented array bound
+    // has at most one segment (vk::SegmentedBuffer::segmentsAddressedBy), else m_pipeline.
+    const ComputePipeline& dispatchPipeline() const;
     VkDescriptorPool m_pool = VK_NULL_HANDLE;
     VkDescriptorSet m_set = VK_NULL_HANDLE;
     // The shared silent-termination counters (set gpu::kTerminationSet), when the shader declares them.

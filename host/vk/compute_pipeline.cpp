@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <initializer_list>
 #include <vector>
 
 #include "shared/kernels/scene.glsl"
+#include "shared/kernels/segmented.glsl"
 #include "shared/kernels/terminations.glsl"
 #include "vk/check.h"
 #include "vk/context.h"
@@ -25,24 +27,34 @@ VkDescriptorSetLayout createSetLayout(VkDevice device, const std::vector<VkDescr
 }
 }  // namespace
 
-bool usesSceneSpecialization(std::span<const uint32_t> spirv) {
+namespace {
+// Whether SPIR-V decorates a specialization constant with one of `ids`.
+bool declaresSpecId(std::span<const uint32_t> spirv, std::initializer_list<uint32_t> ids) {
     constexpr uint32_t kOpDecorate = 71;
     constexpr uint32_t kDecorationSpecId = 1;
     for (size_t i = 5; i < spirv.size();) {  // after the 5-word header: instructions (word count << 16 | opcode)
         const uint32_t words = spirv[i] >> 16u;
         if ((spirv[i] & 0xffffu) == kOpDecorate && words >= 4 && i + 3 < spirv.size() &&
-            spirv[i + 2] == kDecorationSpecId &&
-            (spirv[i + 3] == gpu::kSceneHasInstancesId || spirv[i + 3] == gpu::kSceneHasAlphaTestId ||
-             spirv[i + 3] == gpu::kSceneHasTexturesId || spirv[i + 3] == gpu::kSceneLightSamplerId ||
-             spirv[i + 3] == gpu::kSceneBvhTexelsId))
+            spirv[i + 2] == kDecorationSpecId && std::find(ids.begin(), ids.end(), spirv[i + 3]) != ids.end())
             return true;
         i += std::max(words, 1u);
     }
     return false;
 }
+}  // namespace
 
-ComputePipeline::ComputePipeline(const Context& context, const KernelInterface& interface, SceneSpecialization scene)
-    : m_device(context.device()), m_name(interface.shader), m_scene(scene) {
+bool usesSceneSpecialization(std::span<const uint32_t> spirv) {
+    return declaresSpecId(spirv, {gpu::kSceneHasInstancesId, gpu::kSceneHasAlphaTestId, gpu::kSceneHasTexturesId,
+                                  gpu::kSceneLightSamplerId, gpu::kSceneBvhTexelsId});
+}
+
+bool usesSingleSegmentSpecialization(std::span<const uint32_t> spirv) {
+    return declaresSpecId(spirv, {gpu::kSingleSegmentId});
+}
+
+ComputePipeline::ComputePipeline(const Context& context, const KernelInterface& interface, SceneSpecialization scene,
+                                 bool singleSegment)
+    : m_device(context.device()), m_name(interface.shader), m_scene(scene), m_singleSegment(singleSegment) {
     const std::string& name = interface.shader;
     const auto code = shaderCode(name);
     const ShaderInterface declared = checkKernelInterface(interface, code);
@@ -103,15 +115,16 @@ ComputePipeline::ComputePipeline(const Context& context, const KernelInterface& 
 VkPipeline ComputePipeline::pipeline() const {
     std::call_once(m_compiled, [&] {
         // Entries for constants a shader does not declare are ignored (shaders without a traversal).
-        const uint32_t values[5] = {m_scene.instances ? VK_TRUE : VK_FALSE, m_scene.alphaTest ? VK_TRUE : VK_FALSE,
+        const uint32_t values[6] = {m_scene.instances ? VK_TRUE : VK_FALSE, m_scene.alphaTest ? VK_TRUE : VK_FALSE,
                                     m_scene.textures ? VK_TRUE : VK_FALSE, m_scene.lightSampler,
-                                    m_scene.bvhTexels ? VK_TRUE : VK_FALSE};
-        const VkSpecializationMapEntry entries[5] = {{gpu::kSceneHasInstancesId, 0, sizeof(VkBool32)},
+                                    m_scene.bvhTexels ? VK_TRUE : VK_FALSE, m_singleSegment ? VK_TRUE : VK_FALSE};
+        const VkSpecializationMapEntry entries[6] = {{gpu::kSceneHasInstancesId, 0, sizeof(VkBool32)},
                                                      {gpu::kSceneHasAlphaTestId, 4, sizeof(VkBool32)},
                                                      {gpu::kSceneHasTexturesId, 8, sizeof(VkBool32)},
                                                      {gpu::kSceneLightSamplerId, 12, sizeof(uint32_t)},
-                                                     {gpu::kSceneBvhTexelsId, 16, sizeof(VkBool32)}};
-        const VkSpecializationInfo specialization{5, entries, sizeof(values), values};
+                                                     {gpu::kSceneBvhTexelsId, 16, sizeof(VkBool32)},
+                                                     {gpu::kSingleSegmentId, 20, sizeof(VkBool32)}};
+        const VkSpecializationInfo specialization{6, entries, sizeof(values), values};
         VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
         pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
         pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -135,17 +148,18 @@ ComputePipeline::~ComputePipeline() {
 }
 
 const ComputePipeline& ComputePipelineCache::get(const Context& context, const KernelInterface& interface,
-                                                 SceneSpecialization scene) {
+                                                 SceneSpecialization scene, bool singleSegment) {
     if (!usesSceneSpecialization(shaderCode(interface.shader))) scene = {};  // one pipeline for any scene
-    const std::string key = fmt::format("{}|{}|{}|{}|{}{}{}{}|{}", interface.shader, interface.bindingCount,
+    if (!usesSingleSegmentSpecialization(shaderCode(interface.shader))) singleSegment = false;
+    const std::string key = fmt::format("{}|{}|{}|{}|{}{}{}{}|{}|{}", interface.shader, interface.bindingCount,
                                         interface.pushBytes, interface.groupSize, int(scene.instances),
                                         int(scene.alphaTest), int(scene.textures), int(scene.bvhTexels),
-                                        scene.lightSampler);
+                                        scene.lightSampler, int(singleSegment));
     std::lock_guard lock(m_mutex);
     auto& slot = m_pipelines[key];
     if (!slot) {
         try {
-            slot = std::make_unique<ComputePipeline>(context, interface, scene);
+            slot = std::make_unique<ComputePipeline>(context, interface, scene, singleSegment);
         } catch (...) {
             m_pipelines.erase(key);
             throw;

@@ -24,12 +24,17 @@ class Context;
 // kSceneHasAlphaTestId, kSceneHasTexturesId, kSceneLightSamplerId, kSceneBvhTexelsId): kernels that trace rays
 // (shared/bvh_traverse.glsl), read the scene's textures or select lights (scene_access.glsl).
 bool usesSceneSpecialization(std::span<const uint32_t> spirv);
+// Whether SPIR-V declares gpu::kSingleSegmentId: kernels that bind segmented arrays
+// (shaders/segmented.glsl); vk::ComputeKernel picks that form per dispatch.
+bool usesSingleSegmentSpecialization(std::span<const uint32_t> spirv);
 
 class ComputePipeline {
 public:
     // Throws RuntimeError when the shader's SPIR-V does not declare what `interface` says. The
-    // pipeline is compiled on first use (pipeline()), with `scene`'s specialization constants.
-    ComputePipeline(const Context& context, const KernelInterface& interface, SceneSpecialization scene = {});
+    // pipeline is compiled on first use (pipeline()), with `scene`'s specialization constants and
+    // gpu::kSingleSegmentId = singleSegment (every segmented array it binds has one segment).
+    ComputePipeline(const Context& context, const KernelInterface& interface, SceneSpecialization scene = {},
+                    bool singleSegment = false);
     ~ComputePipeline();
     ComputePipeline(const ComputePipeline&) = delete;
     ComputePipeline& operator=(const ComputePipeline&) = delete;
@@ -58,6 +63,7 @@ private:
     VkPipelineLayout m_pipelineLayout = VK_NULL_HANDLE;
     std::string m_name;
     SceneSpecialization m_scene;
+    bool m_singleSegment = false;
     mutable std::once_flag m_compiled;
     mutable VkPipeline m_pipeline = VK_NULL_HANDLE;
 };
@@ -66,9 +72,10 @@ private:
 // lifetime). Thread-safe.
 class ComputePipelineCache {
 public:
-    // One pipeline per interface and, for shaders that use them, per scene specialization.
+    // One pipeline per interface and, for shaders that use them, per scene specialization and
+    // per segment specialization (one segment or any).
     const ComputePipeline& get(const Context& context, const KernelInterface& interface,
-                               SceneSpecialization scene = {});
+                               SceneSpecialization scene = {}, bool singleSegment = false);
     size_t size() const;
     void clear();
 

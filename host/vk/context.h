@@ -48,9 +48,11 @@ public:
     const Buffer& terminationCounters() const { return *m_terminationCounters; }
     // The compiled pipeline for a kernel interface: made on first use, then shared for the
     // context's lifetime (compiling is the slow part of creating a kernel on lavapipe).
-    // Shaders that trace rays get one per scene specialization (SceneSpecialization).
-    const ComputePipeline& computePipeline(const KernelInterface& interface, SceneSpecialization scene = {}) const {
-        return m_pipelines.get(*this, interface, scene);
+    // Shaders that trace rays get one per scene specialization (SceneSpecialization), shaders that
+    // bind segmented arrays one for arrays of one segment and one for any (singleSegment).
+    const ComputePipeline& computePipeline(const KernelInterface& interface, SceneSpecialization scene = {},
+                                           bool singleSegment = false) const {
+        return m_pipelines.get(*this, interface, scene, singleSegment);
     }
     // How many distinct compute pipelines this context has compiled.
     size_t computePipelineCount() const { return m_pipelines.size(); }

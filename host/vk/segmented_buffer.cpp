@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <mutex>
+#include <unordered_map>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -16,7 +19,42 @@ namespace {
 constexpr VkDeviceSize kSegmentBytes = VkDeviceSize(1) << 27;  // 128 MiB
 constexpr VkDeviceSize kTableHeaderBytes = 16;                 // shift, mask, segments, pad (segmented.glsl)
 
+// The live tables and how many segments each addresses (segmentsAddressedBy), by handle: kernels
+// bind a table as a plain storage buffer, so this is how a kernel learns what it bound.
+std::mutex g_tablesMutex;
+std::unordered_map<VkBuffer, size_t> g_tables;
+
+void forgetTable(VkBuffer table) {
+    if (table == VK_NULL_HANDLE) return;
+    std::lock_guard lock(g_tablesMutex);
+    g_tables.erase(table);
+}
+
 }  // namespace
+
+std::optional<size_t> SegmentedBuffer::segmentsAddressedBy(VkBuffer table) {
+    std::lock_guard lock(g_tablesMutex);
+    const auto it = g_tables.find(table);
+    if (it == g_tables.end()) return std::nullopt;
+    return it->second;
+}
+
+SegmentedBuffer::~SegmentedBuffer() { forgetTable(m_table.handle()); }
+
+SegmentedBuffer& SegmentedBuffer::operator=(SegmentedBuffer&& other) noexcept {
+    if (this != &other) {
+        forgetTable(m_table.handle());  // before the move releases it (its handle may be reused)
+        m_context = std::exchange(other.m_context, nullptr);
+        m_name = std::move(other.m_name);
+        m_elementSize = other.m_elementSize;
+        m_capacity = other.m_capacity;
+        m_shift = other.m_shift;
+        m_allocated = std::exchange(other.m_allocated, 0);
+        m_table = std::move(other.m_table);
+        m_segments = std::move(other.m_segments);
+    }
+    return *this;
+}
 
 uint32_t SegmentedBuffer::defaultSegmentShift(const Context& context, uint32_t elementSize) {
     const VkDeviceSize bytes = std::min(kSegmentBytes, context.maxAllocationSize());
@@ -72,6 +110,8 @@ void SegmentedBuffer::writeTable() {
     std::memcpy(table.data(), header, sizeof(header));
     for (size_t i = 0; i < m_segments.size(); ++i) table[2 + i] = m_segments[i].deviceAddress();
     m_table.upload(table.data(), table.size() * sizeof(uint64_t));
+    std::lock_guard lock(g_tablesMutex);
+    g_tables[m_table.handle()] = m_segments.size();
 }
 
 uint64_t SegmentedBuffer::bytes() const {

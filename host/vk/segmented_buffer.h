@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,9 @@ namespace vkp::vk {
 class SegmentedBuffer {
 public:
     SegmentedBuffer() = default;
+    ~SegmentedBuffer();
+    SegmentedBuffer(SegmentedBuffer&& other) noexcept = default;
+    SegmentedBuffer& operator=(SegmentedBuffer&& other) noexcept;
     // Up to `capacity` elements of `elementSize` bytes in segments of 2^segmentShift elements
     // (0: defaultSegmentShift). Nothing is allocated until reserve().
     SegmentedBuffer(Context& context, std::string name, uint32_t elementSize, uint64_t capacity,
@@ -45,6 +49,12 @@ public:
         download(out.data(), 0, count);
         return out;
     }
+
+    // The segments that `table` addresses when it is a live segmented array's table (bound by a
+    // kernel as its storage buffer), nullopt for any other buffer. vk::ComputeKernel asks this at
+    // each dispatch: kernels whose segmented arrays all have one segment run the pipeline compiled
+    // for that (gpu::kSingleSegmentId), which indexes segment 0 without the table's shift and mask.
+    static std::optional<size_t> segmentsAddressedBy(VkBuffer table);
 
     // The largest power of two of elements whose segment stays within 128 MiB and the device's
     // allocation limits (a segment is also the granularity of growth).

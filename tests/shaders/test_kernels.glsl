@@ -93,6 +93,19 @@ struct ConstantFilmParams {
 };
 STATIC_ASSERT_SIZE(ConstantFilmParams, 32)
 
+// segmented_test.comp: reads elements [0, count) of a segmented array of uints through UINT_AT,
+// writes each to outputs[1 + i] and stores it back plus one; outputs[0] = the kSingleSegment the
+// dispatch was compiled with (shaders/segmented.glsl).
+const uint kSegmentedTestArrayBinding = 0u;
+const uint kSegmentedTestOutputBinding = 1u;
+struct SegmentedTestParams {
+    uint count;
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+STATIC_ASSERT_SIZE(SegmentedTestParams, 16)
+
 SHARED_END
 
 #ifdef __cplusplus
@@ -140,6 +153,12 @@ struct InterfaceTestKernel {
     static constexpr uint32_t kBindingCount = kInterfaceTestOutputBinding + 1u;
     static constexpr uint32_t kGroupSize = kTestGroupSize;
     using Push = InterfaceTestParams;
+};
+struct SegmentedTestKernel {
+    static constexpr const char* kShader = "segmented_test.comp";
+    static constexpr uint32_t kBindingCount = kSegmentedTestOutputBinding + 1u;
+    static constexpr uint32_t kGroupSize = kTestGroupSize;
+    using Push = SegmentedTestParams;
 };
 struct ConstantFilmKernel {
     static constexpr const char* kShader = "constant_film.comp";
