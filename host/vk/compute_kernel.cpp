@@ -13,6 +13,21 @@
 
 namespace vkp::vk {
 
+namespace {
+
+// One descriptor of `type` at (set, binding), its resource still to be pointed at.
+VkWriteDescriptorSet descriptorWrite(VkDescriptorSet set, uint32_t binding, VkDescriptorType type) {
+    VkWriteDescriptorSet write{};
+    write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    write.dstSet = set;
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = type;
+    return write;
+}
+
+}  // namespace
+
 ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
     : m_context(context), m_interface(std::move(interface)), m_bound(m_interface.bindingCount, VK_NULL_HANDLE),
       m_pipeline(&context.computePipeline(m_interface)),
@@ -41,11 +56,8 @@ ComputeKernel::ComputeKernel(Context& context, KernelInterface interface)
         allocInfo.pSetLayouts = &terminationLayout;
         check(vkAllocateDescriptorSets(device, &allocInfo, &m_terminationSet), "allocating a descriptor set");
         VkDescriptorBufferInfo info{context.terminationCounters().handle(), 0, VK_WHOLE_SIZE};
-        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        write.dstSet = m_terminationSet;
-        write.dstBinding = gpu::kTerminationBinding;
-        write.descriptorCount = 1;
-        write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        VkWriteDescriptorSet write =
+            descriptorWrite(m_terminationSet, gpu::kTerminationBinding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
         write.pBufferInfo = &info;
         vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
     }
@@ -65,11 +77,7 @@ void ComputeKernel::bind(uint32_t binding, const Buffer& buffer) {
     if (binding >= m_interface.bindingCount)
         throw RuntimeError(fmt::format("{}: binding {} out of range", m_interface.shader, binding));
     VkDescriptorBufferInfo info{buffer.handle(), 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = m_set;
-    write.dstBinding = binding;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    VkWriteDescriptorSet write = descriptorWrite(m_set, binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     write.pBufferInfo = &info;
     vkUpdateDescriptorSets(m_context.device(), 1, &write, 0, nullptr);
     m_bound[binding] = buffer.handle();
@@ -107,11 +115,7 @@ void ComputeKernel::bind(const TextureArray& textures) {
         {textures.sampler(), textures.srgbView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
     VkWriteDescriptorSet writes[2]{};
     for (uint32_t i = 0; i < 2; ++i) {
-        writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-        writes[i].dstSet = m_textureSet;
-        writes[i].dstBinding = i;
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        writes[i] = descriptorWrite(m_textureSet, i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
         writes[i].pImageInfo = &infos[i];
     }
     vkUpdateDescriptorSets(m_context.device(), 2, writes, 0, nullptr);
@@ -124,11 +128,7 @@ void ComputeKernel::bind(const SceneGeometryViews& views) {
     static_assert(gpu::kSceneNodeTexelsBinding == 0 && gpu::kSceneTriangleTexelsBinding == 1);
     VkWriteDescriptorSet writes[2]{};
     for (uint32_t i = 0; i < 2; ++i) {
-        writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-        writes[i].dstSet = m_geometrySet;
-        writes[i].dstBinding = i;
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+        writes[i] = descriptorWrite(m_geometrySet, i, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
         writes[i].pTexelBufferView = &handles[i];
     }
     vkUpdateDescriptorSets(m_context.device(), 2, writes, 0, nullptr);

@@ -25,6 +25,14 @@ VkDescriptorSetLayout createSetLayout(VkDevice device, const std::vector<VkDescr
     check(vkCreateDescriptorSetLayout(device, &info, nullptr, &layout), "creating a set layout");
     return layout;
 }
+
+// A set of two views of one descriptor type at bindings 0 and 1 (the scene's texture array, the
+// BVH's texel buffers).
+VkDescriptorSetLayout createTwoViewLayout(VkDevice device, VkDescriptorType type) {
+    std::vector<VkDescriptorSetLayoutBinding> views(2);
+    for (uint32_t i = 0; i < 2; ++i) views[i] = {i, type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+    return createSetLayout(device, views);
+}
 }  // namespace
 
 namespace {
@@ -86,20 +94,14 @@ ComputePipeline::ComputePipeline(const Context& context, const KernelInterface& 
         static_assert(gpu::kSceneTextureSet == 2 && gpu::kSceneTextureUnormBinding == 0 &&
                       gpu::kSceneTextureSrgbBinding == 1);
         padTo(gpu::kSceneTextureSet);
-        std::vector<VkDescriptorSetLayoutBinding> views(2);
-        for (uint32_t i = 0; i < 2; ++i)
-            views[i] = {i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-        m_textureLayout = createSetLayout(m_device, views);
+        m_textureLayout = createTwoViewLayout(m_device, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
         setLayouts.push_back(m_textureLayout);
     }
     if (declared.sceneGeometry) {  // set gpu::kSceneGeometrySet == 3: the BVH's texel-buffer views
         static_assert(gpu::kSceneGeometrySet == 3 && gpu::kSceneNodeTexelsBinding == 0 &&
                       gpu::kSceneTriangleTexelsBinding == 1);
         padTo(gpu::kSceneGeometrySet);
-        std::vector<VkDescriptorSetLayoutBinding> views(2);
-        for (uint32_t i = 0; i < 2; ++i)
-            views[i] = {i, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
-        m_geometryLayout = createSetLayout(m_device, views);
+        m_geometryLayout = createTwoViewLayout(m_device, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
         setLayouts.push_back(m_geometryLayout);
     }
 
