@@ -364,6 +364,8 @@ def bad_cases():
         "images[0]: ")
     add("schema_sampler_filter_unknown.gltf", changed(lambda d: d.update(samplers=[{"magFilter": 1}])),
         "samplers[0].magFilter: 1 is not one of 9728 (NEAREST), 9729 (LINEAR)")
+    add("schema_sampler_minfilter_unknown.gltf", changed(lambda d: d.update(samplers=[{"minFilter": 9730}])),
+        "samplers[0].minFilter: 9730 is not one of 9728 (NEAREST)")
     add("nul_byte_then_text.gltf", json.dumps(triangle_doc()).encode() + b"\0" + b'{"nodes": [{"mesh": 9}]}',
         "the JSON text holds a NUL byte at byte")
     add("nul_byte_inside.gltf", json.dumps(triangle_doc()).replace('"2.0"', '"2.0\u0000"').encode().replace(b"\\u0000", b"\0"),
