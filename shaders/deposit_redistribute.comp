@@ -13,23 +13,25 @@ layout(local_size_x = kDepositGroupSize) in;
 #include "item_index.glsl"
 #include "segmented.glsl"
 
-// The map and the grid's sorted slots: segmented arrays (segmented.glsl).
+// The map, the grid's sorted slots and the power handed on (words 3 i .. 3 i + 2 for grid photon
+// i): segmented arrays (segmented.glsl).
 SEGMENTED_ARRAY(kRedistributeMapBinding, Map, mapTable);
 SEGMENTED_ARRAY(kRedistributeSortedSlotBinding, SortedSlots, sortedSlotTable);
-layout(std430, set = 0, binding = kRedistributeRedistributedBinding) buffer Redistributed { uint redistributed[]; };
+SEGMENTED_ARRAY(kRedistributeRedistributedBinding, Redistributed, redistributedTable);
 
 layout(push_constant) uniform Push { RedistributeParams params; };
 
 void main() {
     uint i = itemIndex();
     if (i >= params.gridPhotons) return;
-    uvec3 added = uvec3(redistributed[3u * i], redistributed[3u * i + 1u], redistributed[3u * i + 2u]);
+    uvec3 added = uvec3(UINT_AT(redistributedTable, 3u * i), UINT_AT(redistributedTable, 3u * i + 1u),
+                        UINT_AT(redistributedTable, 3u * i + 2u));
     if (added == uvec3(0u)) return;
     uint slot = UINT_AT(sortedSlotTable, i);
     GpuPhoton p = PHOTON_AT(mapTable, slot);
     vec3 power = photonRelativePower(p) + vec3(added) / kRedistributedFixedPoint;
     PHOTON_AT(mapTable, slot) = withRelativePower(p, min(power, vec3(kMaxHalfFloat)));
-    redistributed[3u * i] = 0u;
-    redistributed[3u * i + 1u] = 0u;
-    redistributed[3u * i + 2u] = 0u;
+    UINT_AT(redistributedTable, 3u * i) = 0u;
+    UINT_AT(redistributedTable, 3u * i + 1u) = 0u;
+    UINT_AT(redistributedTable, 3u * i + 2u) = 0u;
 }

@@ -19,8 +19,9 @@ layout(local_size_x = kDepositGroupSize) in;
 
 layout(std430, set = 0, binding = kPhotonDepositSlotBinding) buffer Slots { GpuPhoton slots[]; };
 layout(std430, set = 0, binding = kPhotonDepositImportanceBinding) readonly buffer Importance { vec2 importance[]; };
-// Per photon of the map's grid, rgb: power redistributed to it (density control, fixed point).
-layout(std430, set = 0, binding = kPhotonDepositRedistributedBinding) buffer Redistributed { uint redistributed[]; };
+// Per photon of the map's grid, rgb: power redistributed to it (density control, fixed point),
+// words 3 i .. 3 i + 2 of a segmented array (segmented.glsl).
+SEGMENTED_ARRAY(kPhotonDepositRedistributedBinding, Redistributed, redistributedTable);
 
 layout(push_constant) uniform Push { PhotonDepositParams params; };
 
@@ -53,9 +54,9 @@ void redistribute(vec3 power, uint found) {
     uvec3 share = uvec3(power / float(found) * kRedistributedFixedPoint + 0.5f);
     for (uint j = 0u; j < found; ++j) {
         uint i = heapIndex[j];
-        atomicAdd(redistributed[3u * i], share.x);
-        atomicAdd(redistributed[3u * i + 1u], share.y);
-        atomicAdd(redistributed[3u * i + 2u], share.z);
+        atomicAdd(UINT_AT(redistributedTable, 3u * i), share.x);
+        atomicAdd(UINT_AT(redistributedTable, 3u * i + 1u), share.y);
+        atomicAdd(UINT_AT(redistributedTable, 3u * i + 2u), share.z);
     }
 }
 

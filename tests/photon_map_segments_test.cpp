@@ -14,6 +14,8 @@
 #include "image/image.h"
 #include "render/integrators/photon_integrator.h"
 #include "render/integrators/progressive_photon_integrator.h"
+#include "render/frame.h"
+#include "render/importon_map.h"
 #include "render/photon_map.h"
 #include "render/renderer.h"
 #include "shared/photon.glsl"
@@ -90,6 +92,49 @@ TEST_F(PhotonMapSegmentsTest, RendersFromSplitMapsEqualOneBuffer) {
                   0);
         EXPECT_GT(split.stats.get<double>("photons.mapBytes"), 0.0);
     }
+}
+
+double totalRelativePower(const std::vector<gpu::GpuPhoton>& photons) {
+    double sum = 0.0;
+    for (const gpu::GpuPhoton& p : photons) {
+        const glm::vec3 power = gpu::photonRelativePower(p);
+        sum += double(power.x) + power.y + power.z;
+    }
+    return sum;
+}
+
+// Density control's redistribution sums (3 words a map photon) are a segmented array as well: split
+// into buffers of 1024 words, the map equals the one-buffer map bit for bit, and rejected photons'
+// power reaches their neighbours (the map's flux stays the traced flux; dropped sums would lose it).
+TEST_F(PhotonMapSegmentsTest, DensityControlSplitEqualsOneBuffer) {
+    const Scene scene = test::shippedScene("cornell-box");
+    const SceneArrays arrays = buildSceneArrays(scene);
+    const SceneBuffers buffers(test::gpu(), arrays);
+    ImportonSettings importonSettings;
+    importonSettings.paths = 1u << 13;
+    const ImportonMap importons(test::gpu(), arrays, buffers, makeGpuCamera(chooseCamera(scene, -1), 32, 32), 32, 32,
+                                importonSettings);
+    PhotonMapSettings settings;
+    settings.paths = 30000;
+    settings.seed = 5;
+    PhotonMap all(test::gpu(), scene, arrays, buffers, settings);
+    const PhotonMapStats allStats = all.build(0);
+    settings.deposit.mode = gpu::kDepositDensity;
+    settings.deposit.importons = &importons;
+    settings.deposit.densityAccuracy = 1e3f;
+    settings.deposit.rounds = 4;
+    PhotonMap whole(test::gpu(), scene, arrays, buffers, settings);
+    settings.segmentShift = kSmallSegmentShift;
+    PhotonMap split(test::gpu(), scene, arrays, buffers, settings);
+    const PhotonMapStats a = whole.build(0);
+    const PhotonMapStats b = split.build(0);
+    ASSERT_LT(a.stored, a.candidates / 2) << "density control rejects photons";
+    ASSERT_GT(a.stored, 4u << kSmallSegmentShift) << "the sums span a dozen buffers";
+    EXPECT_EQ(b.stored, a.stored);
+    const std::vector<gpu::GpuPhoton> photons = split.downloadPhotons();
+    EXPECT_TRUE(samePhotons(photons, whole.downloadPhotons()));
+    const double traced = totalRelativePower(all.downloadPhotons());
+    EXPECT_NEAR(totalRelativePower(photons), traced, 0.01 * traced);
 }
 
 // A real map past lavapipe's maxStorageBufferRange / 32 = 4 M photons (2^22): every photon is

@@ -7,6 +7,8 @@
 
 #include "gpu_scene/scene_buffers.h"
 #include "gpu_test_support.h"
+#include "render/frame.h"
+#include "render/importon_map.h"
 #include "render/photon_map.h"
 #include "render/selective_photon_update.h"
 #include "test_scenes.h"
@@ -171,6 +173,67 @@ TEST_F(SelectivePhoton, BatchedRetraceEqualsPerGroupRetrace) {
             EXPECT_GT(x.groupsRetraced, 1u);
         }
         EXPECT_TRUE(samePhotons(batched.downloadSlots(), perGroup.downloadSlots())) << "frame " << frame;
+    }
+}
+
+// The persistent slots are a segmented array (as many paths as memory holds, not one storage
+// buffer's worth) traced a chunk of paths at a time: slots split into buffers of 128 photons and
+// traced 500 paths at a time (per group: 5) equal the one-buffer slots bit for bit, frame after
+// frame; maps built from them 500 paths at a time, with importance deposition too, equal the maps
+// built in one go.
+TEST_F(SelectivePhoton, SlotsSplitOverBuffersAndChunksEqualOneBuffer) {
+    GpuSceneData a(boxScene({-1.5f, 0.0f, -0.5f}));
+    GpuSceneData b(boxScene({0.5f, 0.0f, -0.5f}));
+    const uint32_t budget = kGroups + 40 * 16;  // the pilots and 40 groups: 640 paths, two chunks
+    SelectiveSettings split = settings(budget);
+    split.segmentShift = 7;
+    split.chunkPaths = 500;
+    SelectiveSettings splitPerGroup = split;
+    splitPerGroup.batched = false;
+    splitPerGroup.chunkPaths = 5;
+    SelectivePhotonUpdate whole(test::gpu(), settings(budget)), chunked(test::gpu(), split),
+        perGroup(test::gpu(), splitPerGroup);
+    EXPECT_EQ(whole.slots().segmentCount(), 1u);
+    EXPECT_EQ(chunked.slots().segmentCount(), (kPaths * kDeposits + 127) / 128);
+    for (int frame = 0; frame < 3; ++frame) {
+        const GpuSceneData& s = frame % 2 == 0 ? a : b;
+        whole.update(s.scene, s.arrays, s.buffers, false);
+        chunked.update(s.scene, s.arrays, s.buffers, false);
+        perGroup.update(s.scene, s.arrays, s.buffers, false);
+        if (frame > 0) {
+            EXPECT_GT(whole.retracedGroups().size(), 30u);
+        }
+        EXPECT_EQ(chunked.retracedGroups(), whole.retracedGroups()) << "frame " << frame;
+        const std::vector<gpu::GpuPhoton> expected = whole.downloadSlots();
+        EXPECT_TRUE(samePhotons(chunked.downloadSlots(), expected)) << "frame " << frame;
+        EXPECT_TRUE(samePhotons(perGroup.downloadSlots(), expected)) << "frame " << frame;
+    }
+
+    ImportonSettings importonSettings;
+    importonSettings.paths = 1u << 12;
+    const ImportonMap importons(test::gpu(), a.arrays, a.buffers, makeGpuCamera(chooseCamera(a.scene, -1), 32, 32), 32,
+                                32, importonSettings);
+    for (const uint32_t mode : {gpu::kDepositAll, gpu::kDepositImportance}) {
+        SCOPED_TRACE(mode);
+        PhotonMapSettings ms;
+        ms.paths = kPaths;
+        ms.maxDeposits = kDeposits;
+        ms.seed = 7;
+        ms.deposit.mode = mode;
+        ms.deposit.importons = &importons;
+        PhotonMap oneGo(test::gpu(), a.scene, a.arrays, a.buffers, ms);
+        const PhotonMapStats x = oneGo.buildFromSlots(whole.slots(), 0);
+        ms.chunkPaths = 500;
+        ms.segmentShift = 7;
+        PhotonMap inChunks(test::gpu(), a.scene, a.arrays, a.buffers, ms);
+        const PhotonMapStats y = inChunks.buildFromSlots(chunked.slots(), 0);
+        EXPECT_GT(y.stored, 1000u);
+        EXPECT_EQ(y.stored, x.stored);
+        EXPECT_EQ(y.candidates, x.candidates);
+        if (mode == gpu::kDepositImportance) {
+            EXPECT_LT(y.stored, y.candidates) << "the decision drops photons";
+        }
+        EXPECT_TRUE(samePhotons(inChunks.downloadPhotons(), oneGo.downloadPhotons()));
     }
 }
 

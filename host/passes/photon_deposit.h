@@ -12,6 +12,7 @@
 #include "shared/kernels/deposit.glsl"
 #include "vk/buffer.h"
 #include "vk/kernel.h"
+#include "vk/segmented_buffer.h"
 
 namespace vkp {
 
@@ -19,9 +20,16 @@ class PhotonDeposit {
 public:
     // Bound to the chunk's `slots` (up to maxSlots), the importance grid's table
     // (shared/importance.glsl), the dense map's photons and the grid over them (read by density
-    // control, which also hands rejected photons' power to the map's photons).
+    // control, which also hands rejected photons' power to the map's photons). The power handed
+    // on is a segmented array (3 words a photon, in segments of 2^segmentShift words; 0: the
+    // default), allocated by reserve().
     PhotonDeposit(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& importanceTable,
-                  const vk::Buffer& slots, uint32_t maxSlots, const vk::SegmentedBuffer& map, const PhotonGrid& mapGrid);
+                  const vk::Buffer& slots, uint32_t maxSlots, const vk::SegmentedBuffer& map, const PhotonGrid& mapGrid,
+                  uint32_t segmentShift = 0);
+
+    // Density control with redistribution: room to hand power to the grid's first `gridPhotons`
+    // photons (call it as the map grows, outside a recording; new room is zeroed).
+    void reserve(uint64_t gridPhotons);
 
     // Zeroes the power handed to the map's photons (a transfer): record it once, before the first
     // record(), followed by a transfer-to-compute barrier.
@@ -35,11 +43,11 @@ public:
     // `gridPhotons` photons to them in the map (and zeroes it again). Barriers as for record().
     void recordRedistribution(VkCommandBuffer cmd, uint32_t gridPhotons) const;
 
-    uint64_t bytes() const { return m_importance.size() + m_redistributed.size(); }
+    uint64_t bytes() const { return m_importance.size() + m_redistributed.bytes(); }
 
 private:
     vk::Buffer m_importance;     // per slot: importance density, largest path importance
-    vk::Buffer m_redistributed;  // per grid photon, rgb: power handed to it (fixed point), zero between rounds
+    vk::SegmentedBuffer m_redistributed;  // per grid photon, rgb: power handed to it (fixed point), zero between rounds
     ImportanceLookupPass m_lookup;
     vk::Kernel<gpu::PhotonDepositKernel> m_deposit;
     vk::Kernel<gpu::DepositRedistributeKernel> m_redistribute;

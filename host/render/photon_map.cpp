@@ -64,13 +64,14 @@ PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays
         if (deposit.mode == gpu::kDepositDensity && !(deposit.densityAccuracy > 0.0f))
             throw InputError(fmt::format("--density-accuracy {}: must be positive", deposit.densityAccuracy));
     }
-    // A chunk's slots are one storage buffer; the map and its grid are segmented arrays that
-    // grow with the photons stored, and their kernels dispatch rows of workgroups past 4 M
-    // photons. Density control's redistribution sums are one storage buffer (12 bytes a photon).
+    // A chunk's slots are one storage buffer; the map, its grid and density control's
+    // redistribution sums are segmented arrays that grow with the photons stored, and their
+    // kernels dispatch rows of workgroups past 4 M photons. The sums are indexed 3 i + channel in
+    // 32 bits (1.4 G photons).
     const VkPhysicalDeviceLimits& limits = context.properties().limits;
     const uint64_t maxSlots = limits.maxStorageBufferRange / sizeof(gpu::GpuPhoton);
     uint64_t maxPhotons = kMaxMapPhotons;
-    if (deposit.mode == gpu::kDepositDensity) maxPhotons = limits.maxStorageBufferRange / (3 * sizeof(uint32_t));
+    if (deposit.mode == gpu::kDepositDensity) maxPhotons = std::min<uint64_t>(maxPhotons, UINT32_MAX / 3);
     uint64_t chunk = settings.chunkPaths ? settings.chunkPaths
                                          : std::clamp<uint64_t>(kChunkSlots / settings.maxDeposits, 1, kMaxChunkPaths);
     // Density control decides each round against the photons stored by the rounds before.
@@ -99,6 +100,8 @@ PhotonMap::~PhotonMap() = default;
 void PhotonMap::reserve(uint64_t photons) {
     m_map.reserve(photons);
     m_grid->resize(static_cast<uint32_t>(m_map.allocated()));
+    if (m_deposit && m_settings.deposit.mode == gpu::kDepositDensity && m_settings.deposit.redistribute)
+        m_deposit->reserve(m_map.allocated());
 }
 
 gpu::PhotonDepositParams PhotonMap::depositParams(uint32_t firstPath, uint32_t paths, uint32_t round) const {
@@ -166,7 +169,8 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
             if (deposit) {
                 m_deposit = std::make_unique<PhotonDeposit>(m_context, m_buffers, m_settings.deposit.importons->table(),
                                                             m_tracer.photons(), m_chunkPaths * m_settings.maxDeposits,
-                                                            m_map, *m_grid);
+                                                            m_map, *m_grid, m_settings.segmentShift);
+                reserve(m_map.allocated());  // the deposit's share of what the map holds
                 freshDeposit = true;
             }
         }
@@ -226,12 +230,14 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
     return stats;
 }
 
-PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t firstPath) {
+PhotonMapStats PhotonMap::buildFromSlots(const vk::SegmentedBuffer& slots, uint32_t firstPath) {
     const bool deposit = m_settings.deposit.mode != gpu::kDepositAll;
     if (m_settings.deposit.mode == gpu::kDepositDensity)
         throw std::logic_error("PhotonMap::buildFromSlots: density control needs rounds of tracing");
-    const uint64_t slotCount = uint64_t(m_settings.paths) * m_settings.maxDeposits;
-    if (slots.size() < slotCount * sizeof(gpu::GpuPhoton)) throw std::logic_error("PhotonMap::buildFromSlots: slots too small");
+    const uint32_t slotsPerPath = m_settings.maxDeposits;
+    const uint64_t slotCount = uint64_t(m_settings.paths) * slotsPerPath;
+    if (slots.allocated() < slotCount || slots.elementSize() != sizeof(gpu::GpuPhoton))
+        throw std::logic_error("PhotonMap::buildFromSlots: slots too small");
     if (slotCount > m_capacity)
         throw InputError(fmt::format("{} photon slots exceed the map's capacity {} (selective update)", slotCount, m_capacity));
     PhotonMapStats stats;
@@ -240,45 +246,47 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::Buffer& slots, uint32_t first
     params.capacity = m_capacity;
     params.requiredFlags = m_settings.requiredFlags;
     params.rejectedFlags = m_settings.rejectedFlags;
-    const uint32_t count = static_cast<uint32_t>(slotCount);
     reserve(slotCount);
+    // The slots go through the compaction (and the deposit decision, which writes into them) in
+    // chunks of m_chunkPaths paths, each copied into one scratch buffer: the persistent slots stay
+    // undecided, and they may span more than one storage buffer's range.
+    const uint32_t chunkSlots = m_chunkPaths * slotsPerPath;
+    const vk::Buffer scratch(m_context, "photon slots to compact", VkDeviceSize(chunkSlots) * sizeof(gpu::GpuPhoton),
+                             vk::kStorageUsage);
+    const PhotonCompaction compaction(m_context, scratch, chunkSlots, m_map, m_state, params);
     uint32_t state[gpu::kPhotonMapStateSize];
-    auto compact = [&](const PhotonCompaction& compaction, const PhotonDeposit* decide) {
-        m_context.submitAndWait([&](VkCommandBuffer cmd) {
-            m_map.fillZero(cmd);
-            m_state.fillZero(cmd);
-            if (decide) decide->recordClear(cmd);
-            vk::transferToComputeBarrier(cmd);
-            vk::computeBarrier(cmd);
-            if (decide) {
-                decide->record(cmd, m_settings.deposit.importons->lookupParams(m_settings.requiredFlags, m_settings.rejectedFlags),
-                               depositParams(firstPath, m_settings.paths, 0));
-                vk::computeBarrier(cmd);
-            }
-            compaction.record(cmd, count, static_cast<uint32_t>(m_map.allocated()));
-            vk::computeToHostBarrier(cmd);
-        });
+    // One pass over the chunks into a fresh map: as they are, or as `decide` decides.
+    auto compact = [&](const PhotonDeposit* decide) {
+        for (uint32_t done = 0; done < m_settings.paths; done += m_chunkPaths) {
+            const uint32_t paths = std::min(m_chunkPaths, m_settings.paths - done);
+            const uint32_t count = paths * slotsPerPath;
+            m_context.submitAndWait([&](VkCommandBuffer cmd) {
+                if (done == 0) {
+                    m_map.fillZero(cmd);
+                    m_state.fillZero(cmd);
+                    if (decide) decide->recordClear(cmd);
+                }
+                const vk::SegmentedBuffer::ElementCopy chunk{0, uint64_t(done) * slotsPerPath, count};
+                slots.recordCopyTo(cmd, scratch, {&chunk, 1});
+                vk::transferToComputeBarrier(cmd);
+                if (decide) {
+                    decide->record(cmd, m_settings.deposit.importons->lookupParams(m_settings.requiredFlags, m_settings.rejectedFlags),
+                                   depositParams(firstPath + done, paths, 0));
+                    vk::computeBarrier(cmd);
+                }
+                compaction.record(cmd, count, static_cast<uint32_t>(m_map.allocated()));
+                vk::computeToHostBarrier(cmd);
+            });
+        }
         m_state.download(state, sizeof(state));
     };
-    if (!deposit) {
-        const PhotonCompaction compaction(m_context, slots, count, m_map, m_state, params);
-        compact(compaction, nullptr);
-        stats.candidates = state[gpu::kPhotonMapStateCount] + state[gpu::kPhotonMapStateDropped];
-    } else {
-        // The decision writes into its slots: a copy keeps the persistent slots undecided. One
-        // compaction (its kernels compiled once) over the copy, before the decision (the
-        // candidates, which set the cell size) and after it.
-        vk::Buffer scratch(m_context, "decided photon slots", slotCount * sizeof(gpu::GpuPhoton), vk::kStorageUsage);
-        m_context.submitAndWait([&](VkCommandBuffer cmd) {
-            const VkBufferCopy region{0, 0, slotCount * sizeof(gpu::GpuPhoton)};
-            vkCmdCopyBuffer(cmd, slots.handle(), scratch.handle(), 1, &region);
-        });
-        const PhotonCompaction compaction(m_context, scratch, count, m_map, m_state, params);
-        compact(compaction, nullptr);
-        stats.candidates = state[gpu::kPhotonMapStateCount] + state[gpu::kPhotonMapStateDropped];
-        const PhotonDeposit decide(m_context, m_buffers, m_settings.deposit.importons->table(), scratch, count, m_map,
-                                   *m_grid);
-        compact(compaction, &decide);
+    // With a deposit mode, the undecided pass counts the candidates (which set the cell size).
+    compact(nullptr);
+    stats.candidates = state[gpu::kPhotonMapStateCount] + state[gpu::kPhotonMapStateDropped];
+    if (deposit) {
+        const PhotonDeposit decide(m_context, m_buffers, m_settings.deposit.importons->table(), scratch, chunkSlots, m_map,
+                                   *m_grid, m_settings.segmentShift);
+        compact(&decide);
     }
     m_photonPower = static_cast<float>(m_totalPower / m_settings.paths);
     stats.stored = state[gpu::kPhotonMapStateCount];

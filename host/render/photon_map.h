@@ -90,7 +90,7 @@ public:
     // render/selective_photon_update.h) into the map and builds its grid. With --deposit
     // importance the deposit decision runs on a copy of the slots against the current importons
     // (as build() decides; density control is not supported). The stats' traced counters stay zero.
-    PhotonMapStats buildFromSlots(const vk::Buffer& slots, uint32_t firstPath);
+    PhotonMapStats buildFromSlots(const vk::SegmentedBuffer& slots, uint32_t firstPath);
 
     const PhotonGrid& grid() const { return *m_grid; }
     const PhotonMapSettings& settings() const { return m_settings; }

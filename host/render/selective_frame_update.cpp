@@ -49,6 +49,7 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
         s.groups = groupsFor(m_options.groups, ms.paths);
         s.pilotsPerGroup = m_options.pilotsPerGroup;
         s.budget = m_options.budget;
+        s.segmentShift = ms.segmentShift;  // the slots split as the map does
         it = m_maps.emplace(key, std::make_unique<SelectivePhotonUpdate>(m_context, s)).first;
     }
     const auto start = Clock::now();

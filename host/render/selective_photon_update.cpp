@@ -13,7 +13,7 @@
 namespace vkp {
 namespace {
 
-constexpr uint32_t kFullChunkPaths = 1u << 16;  // paths per chunk of a full trace
+constexpr uint32_t kFullChunkPaths = 1u << 16;  // paths per trace at most (fewer when a path has many slots)
 
 }  // namespace
 
@@ -27,11 +27,16 @@ SelectivePhotonUpdate::SelectivePhotonUpdate(vk::Context& context, const Selecti
     if (settings.pilotsPerGroup == 0) throw InputError("selective photon update: at least one pilot per group");
     m_pilotPaths = std::min(settings.paths, settings.pilotsPerGroup * settings.groups);
     if (m_settings.budget == 0) m_settings.budget = m_pilotPaths + settings.paths / 8;
-    const uint64_t bytes = uint64_t(settings.paths) * settings.maxDeposits * sizeof(gpu::GpuPhoton);
-    if (bytes > context.properties().limits.maxStorageBufferRange)
-        throw InputError(fmt::format("selective photon update: {} paths x {} deposits exceed the device's storage-buffer range",
-                                     settings.paths, settings.maxDeposits));
-    m_slots = vk::Buffer(context, "selective photon slots", bytes, vk::kStorageUsage);
+    const uint64_t pathBytes = uint64_t(settings.maxDeposits) * sizeof(gpu::GpuPhoton);
+    m_chunkPaths = static_cast<uint32_t>(std::min<uint64_t>(settings.chunkPaths ? settings.chunkPaths : kFullChunkPaths,
+                                                            context.properties().limits.maxStorageBufferRange / pathBytes));
+    if (m_chunkPaths == 0)
+        throw InputError(fmt::format("selective photon update: --max-deposits {}: one path's slots exceed the device's "
+                                     "storage-buffer range",
+                                     settings.maxDeposits));
+    const uint64_t slots = uint64_t(settings.paths) * settings.maxDeposits;
+    m_slots = vk::SegmentedBuffer(context, "selective photon slots", sizeof(gpu::GpuPhoton), slots, settings.segmentShift);
+    m_slots.reserve(slots);
     m_priority.assign(settings.groups, 0);
     m_lastTraced.assign(settings.groups, 0);
 }
@@ -42,24 +47,36 @@ uint32_t SelectivePhotonUpdate::pathsInGroup(uint32_t group) const {
 
 void SelectivePhotonUpdate::recordCopy(VkCommandBuffer cmd, const PhotonTracer& tracer, std::span<const uint32_t> paths) const {
     // Path j of the trace (slots j * maxDeposits ...) to its persistent slots; runs of consecutive
-    // paths in one region each.
-    const VkDeviceSize pathBytes = VkDeviceSize(m_settings.maxDeposits) * sizeof(gpu::GpuPhoton);
-    std::vector<VkBufferCopy> regions;
+    // paths in one copy each.
+    const uint32_t slotsPerPath = m_settings.maxDeposits;
+    std::vector<vk::SegmentedBuffer::ElementCopy> copies;
     for (uint32_t j = 0; j < paths.size(); ++j) {
-        if (!regions.empty() && regions.back().dstOffset + regions.back().size == paths[j] * pathBytes &&
-            regions.back().srcOffset + regions.back().size == j * pathBytes) {
-            regions.back().size += pathBytes;
+        const uint64_t slot = uint64_t(paths[j]) * slotsPerPath;
+        const VkDeviceSize traced = VkDeviceSize(j) * slotsPerPath * sizeof(gpu::GpuPhoton);
+        if (!copies.empty() && copies.back().first + copies.back().count == slot &&
+            copies.back().bufferOffset + copies.back().count * sizeof(gpu::GpuPhoton) == traced) {
+            copies.back().count += slotsPerPath;
             continue;
         }
-        regions.push_back({j * pathBytes, paths[j] * pathBytes, pathBytes});
+        copies.push_back({traced, slot, slotsPerPath});
     }
     vk::memoryBarrier2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
-    vkCmdCopyBuffer(cmd, tracer.photons().handle(), m_slots.handle(), static_cast<uint32_t>(regions.size()),
-                    regions.data());
+    m_slots.recordCopyFrom(cmd, tracer.photons(), copies);
     vk::memoryBarrier2(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
                        VK_ACCESS_2_SHADER_READ_BIT | VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
+}
+
+void SelectivePhotonUpdate::traceIntoSlots(std::span<const uint32_t> paths,
+                                           const std::function<void(size_t first, size_t count)>& traced) {
+    for (size_t first = 0; first < paths.size(); first += m_chunkPaths) {
+        const std::span<const uint32_t> chunk = paths.subspan(first, std::min<size_t>(m_chunkPaths, paths.size() - first));
+        PhotonSettings s = traceSettings();
+        s.paths = static_cast<uint32_t>(chunk.size());
+        m_tracer->traceList(s, chunk, [&](VkCommandBuffer cmd) { recordCopy(cmd, *m_tracer, chunk); });
+        if (traced) traced(first, chunk.size());
+    }
 }
 
 PhotonSettings SelectivePhotonUpdate::traceSettings() const {
@@ -77,21 +94,22 @@ void SelectivePhotonUpdate::appendGroupPaths(uint32_t group, std::vector<uint32_
 
 void SelectivePhotonUpdate::traceGroups(const std::vector<uint32_t>& groups) {
     std::vector<uint32_t> paths;
-    if (m_settings.batched) {  // every group in one dispatch and one submission
+    if (m_settings.batched) {  // every group in one dispatch and one submission (per chunk)
         for (uint32_t g : groups) appendGroupPaths(g, paths);
-        if (!paths.empty())
-            m_tracer->traceList(traceSettings(), paths,
-                                [&](VkCommandBuffer cmd) { recordCopy(cmd, *m_tracer, paths); });
-    } else {  // one strided dispatch and submission per group (the reference for the batched trace)
+        traceIntoSlots(paths);
+    } else {  // one strided dispatch and submission per group (per chunk): the reference for the batched trace
         for (uint32_t g : groups) {
-            PhotonSettings s = traceSettings();
-            s.paths = pathsInGroup(g);
-            s.firstPath = m_settings.firstPath + g;
-            s.pathStride = m_settings.groups;
-            m_tracer->trace(s);
             paths.clear();
             appendGroupPaths(g, paths);
-            m_context.submitAndWait([&](VkCommandBuffer cmd) { recordCopy(cmd, *m_tracer, paths); });
+            for (size_t first = 0; first < paths.size(); first += m_chunkPaths) {
+                const std::span<const uint32_t> chunk(paths.data() + first, std::min<size_t>(m_chunkPaths, paths.size() - first));
+                PhotonSettings s = traceSettings();
+                s.paths = static_cast<uint32_t>(chunk.size());
+                s.firstPath = m_settings.firstPath + chunk[0];
+                s.pathStride = m_settings.groups;
+                m_tracer->trace(s);
+                m_context.submitAndWait([&](VkCommandBuffer cmd) { recordCopy(cmd, *m_tracer, chunk); });
+            }
         }
     }
     for (uint32_t g : groups) {
@@ -116,10 +134,8 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
         m_tracerBuffers = &buffers;
         m_tracerGeneration = sceneGeneration;
         m_tracerPower = arrays.totalLightPower;
-        m_tracer->reserve(std::max({std::min(m_settings.paths, kFullChunkPaths), pathsInGroup(0), m_pilotPaths}),
-                          m_settings.maxDeposits);
+        m_tracer->reserve(std::min(m_settings.paths, m_chunkPaths), m_settings.maxDeposits);
     }
-    PhotonTracer& tracer = *m_tracer;
     const uint32_t groupPaths = pathsInGroup(0);
     const uint32_t slotsPerPath = m_settings.maxDeposits;
     const size_t pilotSlots = size_t(m_pilotPaths) * slotsPerPath;
@@ -130,15 +146,10 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
     };
 
     if (full || !m_initialised) {
-        for (uint32_t done = 0; done < m_settings.paths; done += kFullChunkPaths) {
-            PhotonSettings s = traceSettings();
-            s.paths = std::min(kFullChunkPaths, m_settings.paths - done);
-            s.firstPath = m_settings.firstPath + done;
-            const std::vector<uint32_t> paths = contiguous(done, s.paths);
-            tracer.traceList(s, contiguous(0, s.paths), [&](VkCommandBuffer cmd) { recordCopy(cmd, tracer, paths); });
-        }
+        for (uint32_t done = 0; done < m_settings.paths; done += m_chunkPaths)
+            traceIntoSlots(contiguous(done, std::min(m_chunkPaths, m_settings.paths - done)));
         m_pilotRecord.resize(pilotSlots);
-        m_slots.download(m_pilotRecord.data(), pilotSlots * sizeof(gpu::GpuPhoton));
+        m_slots.download(m_pilotRecord.data(), 0, pilotSlots);
         std::fill(m_priority.begin(), m_priority.end(), 0u);
         std::fill(m_lastTraced.begin(), m_lastTraced.end(), m_frame);
         m_initialised = true;
@@ -149,16 +160,14 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
     }
 
     // Pilots: paths 0 .. m_pilotPaths - 1 (pilot m of group g is path g + m * groups), traced and
-    // copied into their slots in one submission.
+    // copied into their slots in one submission (per chunk of m_chunkPaths).
     {
-        PhotonSettings s = traceSettings();
-        s.paths = m_pilotPaths;
-        const std::vector<uint32_t> pilots = contiguous(0, m_pilotPaths);
-        tracer.traceList(s, pilots, [&](VkCommandBuffer cmd) { recordCopy(cmd, tracer, pilots); });
-        // One read-back per frame (docs/photon-mapping.md): the pilots' photons, compared on the
-        // host with the last frame's (a few thousand paths).
         std::vector<gpu::GpuPhoton> now(pilotSlots);
-        tracer.photons().download(now.data(), pilotSlots * sizeof(gpu::GpuPhoton));
+        traceIntoSlots(contiguous(0, m_pilotPaths), [&](size_t first, size_t count) {
+            // One read-back per chunk of pilots (one per frame but for huge maps;
+            // docs/photon-mapping.md): their photons, compared on the host with the last frame's.
+            m_tracer->photons().download(now.data() + first * slotsPerPath, count * slotsPerPath * sizeof(gpu::GpuPhoton));
+        });
         std::vector<char> groupMarked(m_settings.groups, 0);
         for (uint32_t p = 0; p < m_pilotPaths; ++p) {
             const size_t first = size_t(p) * slotsPerPath;
@@ -214,9 +223,7 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
 }
 
 std::vector<gpu::GpuPhoton> SelectivePhotonUpdate::downloadSlots() const {
-    std::vector<gpu::GpuPhoton> photons(size_t(m_settings.paths) * m_settings.maxDeposits);
-    m_slots.download(photons.data(), photons.size() * sizeof(gpu::GpuPhoton));
-    return photons;
+    return m_slots.download<gpu::GpuPhoton>(uint64_t(m_settings.paths) * m_settings.maxDeposits);
 }
 
 }  // namespace vkp

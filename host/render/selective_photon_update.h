@@ -11,12 +11,13 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
 
 #include "render/photon_tracer.h"
-#include "vk/buffer.h"
+#include "vk/segmented_buffer.h"
 
 namespace vkp {
 
@@ -31,6 +32,8 @@ struct SelectiveSettings {
     uint32_t budget = 0;           // paths traced per frame (pilots included); 0: paths / 8
     uint32_t refreshGroups = 1;    // unchanged groups refreshed per frame at least (round-robin)
     bool batched = true;           // the frame's groups in one dispatch (false: one per group, the reference)
+    uint32_t segmentShift = 0;     // slots per buffer of the persistent slots: 2^shift (0: the default, 128 MiB)
+    uint32_t chunkPaths = 0;       // paths per dispatch at most; 0: 65536, fewer where their slots exceed one storage buffer
 };
 
 struct SelectiveFrameStats {
@@ -53,8 +56,9 @@ public:
     SelectiveFrameStats update(const Scene& scene, const SceneArrays& arrays, const SceneBuffers& buffers, bool full,
                                uint64_t sceneGeneration = 0);
 
-    // paths * maxDeposits slots, path i at i * maxDeposits (PhotonMap::buildFromSlots).
-    const vk::Buffer& slots() const { return m_slots; }
+    // paths * maxDeposits slots, path i at i * maxDeposits (PhotonMap::buildFromSlots): a
+    // segmented array, so the slots are bound by memory, not by one storage buffer's range.
+    const vk::SegmentedBuffer& slots() const { return m_slots; }
     const SelectiveSettings& settings() const { return m_settings; }
     uint32_t groupOf(uint32_t path) const { return path % m_settings.groups; }
     uint32_t pathsInGroup(uint32_t group) const;
@@ -67,16 +71,21 @@ public:
     uint64_t lastTraced(uint32_t group) const { return m_lastTraced[group]; } // frame of its last retrace
 
 private:
-    // Retraces `groups` (SelectiveSettings::batched: in one dispatch) into their slots.
+    // Retraces `groups` (SelectiveSettings::batched: in one dispatch per chunk) into their slots.
     void traceGroups(const std::vector<uint32_t>& groups);
     void appendGroupPaths(uint32_t group, std::vector<uint32_t>& paths) const;
+    // Traces the map's `paths` in chunks of m_chunkPaths (one dispatch and submission each), each
+    // copied into its slots; `traced(first, count)` then sees the chunk's photons in the tracer.
+    void traceIntoSlots(std::span<const uint32_t> paths,
+                        const std::function<void(size_t first, size_t count)>& traced = {});
     // Copies path j of the tracer's last trace into the slots of path paths[j].
     void recordCopy(VkCommandBuffer cmd, const PhotonTracer& tracer, std::span<const uint32_t> paths) const;
     PhotonSettings traceSettings() const;
 
     vk::Context& m_context;
     SelectiveSettings m_settings;
-    vk::Buffer m_slots;
+    vk::SegmentedBuffer m_slots;
+    uint32_t m_chunkPaths;  // paths per trace: their slots fit the tracer's one storage buffer
     uint32_t m_pilotPaths;
     std::vector<gpu::GpuPhoton> m_pilotRecord;  // the pilots' photons of the last frame
     std::vector<uint32_t> m_priority;           // changed pilots seen since the group's last retrace

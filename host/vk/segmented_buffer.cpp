@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstring>
 #include <mutex>
+#include <stdexcept>
 #include <unordered_map>
 #include <utility>
 
@@ -139,6 +140,36 @@ void SegmentedBuffer::upload(const void* data, uint64_t first, uint64_t count) {
     forEachRun(first, count, [&](size_t segment, uint64_t offset, uint64_t n, uint64_t done) {
         m_segments[segment].upload(in + done * m_elementSize, n * m_elementSize, offset * m_elementSize);
     });
+}
+
+void SegmentedBuffer::recordCopyFrom(VkCommandBuffer cmd, const Buffer& src, std::span<const ElementCopy> copies) const {
+    recordCopies(cmd, src, copies, true);
+}
+
+void SegmentedBuffer::recordCopyTo(VkCommandBuffer cmd, const Buffer& dst, std::span<const ElementCopy> copies) const {
+    recordCopies(cmd, dst, copies, false);
+}
+
+void SegmentedBuffer::recordCopies(VkCommandBuffer cmd, const Buffer& buffer, std::span<const ElementCopy> copies,
+                                   bool intoArray) const {
+    std::vector<std::vector<VkBufferCopy>> regions(m_segments.size());
+    for (const ElementCopy& copy : copies) {
+        if (copy.first + copy.count > m_allocated) throw std::logic_error(fmt::format("copy past the end of the {}", m_name));
+        if (copy.bufferOffset + copy.count * m_elementSize > buffer.size())
+            throw std::logic_error(fmt::format("copy past the end of a buffer for the {}", m_name));
+        forEachRun(copy.first, copy.count, [&](size_t segment, uint64_t offset, uint64_t n, uint64_t done) {
+            const VkDeviceSize inBuffer = copy.bufferOffset + done * m_elementSize;
+            const VkDeviceSize inSegment = offset * m_elementSize;
+            regions[segment].push_back(intoArray ? VkBufferCopy{inBuffer, inSegment, n * m_elementSize}
+                                                 : VkBufferCopy{inSegment, inBuffer, n * m_elementSize});
+        });
+    }
+    for (size_t segment = 0; segment < regions.size(); ++segment) {
+        if (regions[segment].empty()) continue;
+        const VkBuffer array = m_segments[segment].handle();
+        vkCmdCopyBuffer(cmd, intoArray ? buffer.handle() : array, intoArray ? array : buffer.handle(),
+                        static_cast<uint32_t>(regions[segment].size()), regions[segment].data());
+    }
 }
 
 }  // namespace vkp::vk

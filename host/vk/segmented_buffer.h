@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,7 @@ public:
 
     const Buffer& table() const { return m_table; }  // bind this
     uint64_t capacity() const { return m_capacity; }
+    uint32_t elementSize() const { return m_elementSize; }
     uint64_t allocated() const { return m_allocated; }  // elements addressable
     uint32_t segmentShift() const { return m_shift; }
     size_t segmentCount() const { return m_segments.size(); }
@@ -50,6 +52,17 @@ public:
         return out;
     }
 
+    // Device copies between a plain buffer and elements of the array: elements [first, first +
+    // count) and the bytes from bufferOffset in the buffer. Recorded as one vkCmdCopyBuffer per
+    // segment touched (the runs split at segment ends); the caller places the barriers.
+    struct ElementCopy {
+        VkDeviceSize bufferOffset;
+        uint64_t first;
+        uint64_t count;
+    };
+    void recordCopyFrom(VkCommandBuffer cmd, const Buffer& src, std::span<const ElementCopy> copies) const;
+    void recordCopyTo(VkCommandBuffer cmd, const Buffer& dst, std::span<const ElementCopy> copies) const;
+
     // The segments that `table` addresses when it is a live segmented array's table (bound by a
     // kernel as its storage buffer), nullopt for any other buffer. vk::ComputeKernel asks this at
     // each dispatch: kernels whose segmented arrays all have one segment run the pipeline compiled
@@ -62,6 +75,7 @@ public:
 
 private:
     void writeTable();
+    void recordCopies(VkCommandBuffer cmd, const Buffer& buffer, std::span<const ElementCopy> copies, bool intoArray) const;
     uint64_t segmentElements(size_t segment) const;
     // Calls run(segment, offset in it, element count, elements done before) for each segment's
     // part of the elements [first, first + count).
