@@ -44,6 +44,7 @@ public:
     void recordRedistribution(VkCommandBuffer cmd, uint32_t gridPhotons) const;
 
     uint64_t bytes() const { return m_importance.size() + m_redistributed.bytes(); }
+    uint64_t redistributionBytes() const { return m_redistributed.bytes(); }  // grows with the map
 
 private:
     vk::Buffer m_importance;     // per slot: importance density, largest path importance

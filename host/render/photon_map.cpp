@@ -309,7 +309,9 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::SegmentedBuffer& slots, uint3
     return stats;
 }
 
-uint64_t PhotonMap::bytes() const { return m_map.bytes() + m_grid->bytes(); }
+uint64_t PhotonMap::bytes() const {
+    return m_map.bytes() + m_grid->bytes() + (m_deposit ? m_deposit->redistributionBytes() : 0);
+}
 
 std::vector<gpu::GpuPhoton> PhotonMap::downloadPhotons() const {
     uint32_t count = 0;

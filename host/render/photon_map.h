@@ -101,8 +101,8 @@ public:
     // Watts carried by a photon of relative power 1 (total light power / paths of one build).
     float photonPower() const { return m_photonPower; }
     uint32_t capacity() const { return m_capacity; }
-    // Device memory of the map's photons and its grid (allocated in segments as the map fills;
-    // the traced chunk's slots are scratch).
+    // Device memory of the map's photons and its grid, and density control's redistribution sums
+    // (allocated in segments as the map fills; the traced chunk's slots are scratch).
     uint64_t bytes() const;
     // Photons per segment of the map's buffers.
     uint64_t segmentPhotons() const { return uint64_t(1) << m_map.segmentShift(); }
