@@ -58,8 +58,9 @@ TEST_F(LightReachTest, RoomsTheCameraCannotSeeAreSkippedAndReallyHidden) {
     for (size_t i = 0; i < a.lights.size(); ++i) {
         const gpu::GpuTriangle& t = a.triangles[a.lights[i].triangle];
         lightCentre[i] = (glm::vec3(t.v0) + glm::vec3(t.v1) + glm::vec3(t.v2)) / 3.0f;
-        if (glm::distance(glm::vec2(lightCentre[i].x, lightCentre[i].z), glm::vec2(2.0f, 2.0f)) < 0.5f)
+        if (glm::distance(glm::vec2(lightCentre[i].x, lightCentre[i].z), glm::vec2(2.0f, 2.0f)) < 0.5f) {
             EXPECT_TRUE(r.keep[i]) << "the light of the camera's room";
+        }
     }
 
     // Every skipped light is hidden from the points the camera sees (16 x 12 pixel centres; three

@@ -64,6 +64,41 @@ TEST_F(PhotonTrace, FurnaceEnergyBalance) {
     EXPECT_NEAR(traced.nominalPower * settings.paths, gpu::kPi * 1.0 * 4.0 * 6.0 * 2.0, 1e-3);
 }
 
+// A path with more deposits than slots keeps a uniform sample of them, weighted up (reservoir
+// sampling): in a furnace of albedo 0.8 with 4 slots per path (a quarter of the paths make more
+// deposits) the stored power per path is still 0.5 / (1 - a) = 2.5 (cutting the paths at their
+// slots stored 0.5 (1 - a^4) / (1 - a) = 1.48), the kinds' counters count the photons in the
+// slots, and the same seed gives the same slots.
+TEST_F(PhotonTrace, FurnaceEnergyBalanceWithFewerSlotsThanDeposits) {
+    const float albedo = 0.8f;
+    PhotonSettings settings;
+    settings.paths = 100000;
+    settings.maxDeposits = 4;
+    const Scene furnace = test::furnaceScene(albedo, 1.0f);
+    const TracedPhotons traced = tracePhotons(furnace, settings);
+    double stored = 0.0, storedSq = 0.0;
+    uint64_t valid = 0, primary = 0;
+    std::vector<double> perPath(settings.paths, 0.0);
+    for (size_t i = 0; i < traced.photons.size(); ++i) {
+        const gpu::GpuPhoton& p = traced.photons[i];
+        if (!(gpu::photonFlags(p) & gpu::kPhotonValid)) continue;
+        valid += 1;
+        primary += (gpu::photonFlags(p) & gpu::kPhotonPrimary) ? 1 : 0;
+        perPath[i / settings.maxDeposits] += gpu::photonRelativePower(p).x;
+    }
+    for (double v : perPath) { stored += v; storedSq += v * v; }
+    const double mean = stored / settings.paths;
+    const double standardError = std::sqrt((storedSq / settings.paths - mean * mean) / settings.paths);
+    EXPECT_NEAR(mean, 0.5 / (1.0 - albedo), 5.0 * standardError + 2e-3) << "standard error " << standardError;
+    // The inner half of the paths make 1 + Geometric deposits: more than 4 with probability a^4.
+    EXPECT_NEAR(double(traced.counters.sampled) / settings.paths, 0.5 * std::pow(albedo, 4.0f), 0.01);
+    EXPECT_EQ(traced.counters.storedGlobal + traced.counters.storedPrimary, valid);
+    EXPECT_EQ(traced.counters.storedPrimary, primary);
+    EXPECT_LT(traced.counters.truncated, settings.paths / 10000);  // only paths past kPhotonMaxBounces
+    const TracedPhotons again = tracePhotons(furnace, settings);
+    EXPECT_EQ(std::memcmp(again.photons.data(), traced.photons.data(), traced.photons.size() * sizeof(gpu::GpuPhoton)), 0);
+}
+
 // The first hits of the photons emitted by a one-sided ceiling light in a closed box carry the
 // light's whole power: each primary photon has relative luminance 1 and none is lost.
 TEST_F(PhotonTrace, PrimaryPhotonsCarryTheLightPower) {
@@ -85,7 +120,9 @@ TEST_F(PhotonTrace, PrimaryPhotonsCarryTheLightPower) {
     }
     PhotonSettings settings;
     settings.paths = 50000;
+    settings.maxDeposits = 24;  // every deposit in its slot (else a primary photon may be sampled out and the rest weighted up)
     const TracedPhotons traced = tracePhotons(scene, settings);
+    EXPECT_EQ(traced.counters.sampled, 0u);
     uint64_t primary = 0;
     glm::dvec3 sum(0.0);
     for (const auto& p : traced.photons) {

@@ -295,7 +295,9 @@ int runCommandLine(int argc, const char* const* argv) {
     photonsCmd->add_option("scene", photons.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
     photonsCmd->add_option("-o,--output", photons.output, "Output .ply [default: out/SCENE-photons.ply]");
     photonsCmd->add_option("--photons", photons.photons, "Photon paths to emit")->capture_default_str();
-    photonsCmd->add_option("--max-deposits", photons.maxDeposits, "Stored photons per path at most")->capture_default_str();
+    photonsCmd->add_option("--max-deposits", photons.maxDeposits,
+                           "Photon slots per path: a path with more deposits keeps a uniform random sample of them, "
+                           "each weighted up")->capture_default_str();
     photonsCmd->add_option("--seed", photons.seed, "Random seed")->capture_default_str();
     photons.deposit.addOptions(*photonsCmd);
     photonsCmd->add_option("--width", photons.width, "Width of the image the importons' camera looks at")

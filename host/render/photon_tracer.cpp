@@ -83,6 +83,7 @@ PhotonCounters PhotonTracer::run(const PhotonSettings& settings, uint32_t paths,
     counters.absorbed = c[gpu::kPhotonCounterAbsorbed];
     counters.lost = c[gpu::kPhotonCounterLost];
     counters.truncated = c[gpu::kPhotonCounterTruncated];
+    counters.sampled = c[gpu::kPhotonCounterSampled];
     return counters;
 }
 

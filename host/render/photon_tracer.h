@@ -31,7 +31,8 @@ struct PhotonCounters {
     uint64_t storedPrimary = 0;
     uint64_t absorbed = 0;
     uint64_t lost = 0;
-    uint64_t truncated = 0;
+    uint64_t truncated = 0;  // cut at kPhotonMaxBounces, or unable to make more of the map's kind
+    uint64_t sampled = 0;    // more deposits than slots: the slots hold a reweighted sample of them
 
     PhotonCounters& operator+=(const PhotonCounters& o) {
         emitted += o.emitted;
@@ -41,6 +42,7 @@ struct PhotonCounters {
         absorbed += o.absorbed;
         lost += o.lost;
         truncated += o.truncated;
+        sampled += o.sampled;
         return *this;
     }
 };

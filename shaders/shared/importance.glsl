@@ -17,9 +17,6 @@ const uint kDepositAll = 0u;         // every photon (Jensen's photon map)
 const uint kDepositImportance = 1u;  // kept with p = min(1, f * importance density) (Keller & Wald)
 const uint kDepositDensity = 2u;     // kept by the ratio of current to required density (Suykens & Willems)
 
-// Largest finite value a half float holds.
-const float kMaxHalfFloat = 65504.0f;
-
 const uint kImportonValid = 1u;    // the slot holds an importon (slots of paths that ended early stay 0)
 const uint kImportonPrimary = 2u;  // the first importon of its path: what the camera sees directly
                                    // (or through mirror-like bounces); the test rays of f

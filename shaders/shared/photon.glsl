@@ -10,6 +10,9 @@ const uint kPhotonValid = 1u;    // the slot holds a stored photon (slots of abs
 const uint kPhotonCaustic = 2u;  // path light -> specular+ -> here (L S+ D): the caustic map
 const uint kPhotonPrimary = 4u;  // first hit after the light (direct): skipped by indirect estimates
 
+// Largest finite value a half float (a photon's relative power) holds.
+const float kMaxHalfFloat = 65504.0f;
+
 // Power is stored relative to the nominal photon power of the map (total emitted power / photons
 // emitted, kept by the host), as half floats: values near 1, 11-bit precision.
 struct GpuPhoton {

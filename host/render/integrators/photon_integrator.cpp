@@ -9,6 +9,7 @@
 #include "render/deposition.h"
 #include "render/frame_update.h"
 #include "render/integrators/progressive_photon_integrator.h"
+#include "shared/kernels/photon_trace.glsl"
 #include "util/errors.h"
 #include "util/stopwatch.h"
 #include "vk/context.h"
@@ -93,14 +94,15 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
     reportMapBuild(m_stats, globalStats);
     m_stats.set("photons.globalStored", globalStats.stored);
     m_stats.set("photons.globalTruncated", globalStats.traced.truncated);
-    // Paths cut short by --max-deposits lose the light they would still carry: in bright closed
-    // scenes (albedos near 1) that darkens the image (docs/photon-mapping.md "Limits left").
+    m_stats.set("photons.globalSampled", globalStats.traced.sampled);
+    // Paths cut at kPhotonMaxBounces lose the light they would still carry (a path with more
+    // deposits than --max-deposits keeps a reweighted sample of them: unbiased, a little noisier).
     if (globalStats.traced.emitted > 0 &&
         double(globalStats.traced.truncated) > 0.01 * double(globalStats.traced.emitted))
-        m_stats.note(fmt::format("{:.1f} % of the global map's photon paths reached --max-deposits {}; the light they "
-                                 "would still carry is lost (raise --max-deposits)",
+        m_stats.note(fmt::format("{:.1f} % of the global map's photon paths were cut at {} bounces; the light they "
+                                 "would still carry is lost",
                                  100.0 * double(globalStats.traced.truncated) / double(globalStats.traced.emitted),
-                                 p.maxDeposits));
+                                 gpu::kPhotonMaxBounces));
     m_stats.set("photons.globalDeposits", globalStats.candidates);
     m_stats.add("photons.mapBytes", m_globalMap->bytes());
 

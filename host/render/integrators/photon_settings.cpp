@@ -63,8 +63,8 @@ void PhotonIntegratorSettings::addOptions(CLI::App& group) {
                      "Final gather rays per sample (0: read the global map at the visible point)")
         ->capture_default_str();
     group.add_option("--max-deposits", maxDeposits,
-                     "Stored photons per global-map path at most: a path that reaches it ends, and the light it "
-                     "would still have carried is lost (a note says how many did)")
+                     "Photon slots per global-map path: a path with more deposits keeps a uniform random sample of "
+                     "them, each weighted up (unbiased; fewer slots make those paths' photons noisier)")
         ->capture_default_str();
     group.add_option("--gather-k", gatherK, "Nearest photons per global-map estimate")->capture_default_str();
     group.add_option("--radiance-photons", radiancePhotonStride,

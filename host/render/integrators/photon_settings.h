@@ -23,7 +23,7 @@ struct PhotonIntegratorSettings {
     float coneK = 1.1f;               // cone filter constant of the caustic estimate
     bool progressive = false;         // --progressive: SPPM, a fresh photon pass per sample
     float alpha = 0.7f;               // --alpha: SPPM's fraction of new photons kept per pass
-    uint32_t maxDeposits = 8;         // stored photons per global path at most
+    uint32_t maxDeposits = 8;         // photon slots per global path (more deposits: a reweighted sample)
     float q = 0.0f;                   // --q: --photons paths fill the caustic map, the first q of them the
                                       // global map (Keller & Wald's N, q); 0: --caustic-photons paths
     DepositOptions deposit;           // --deposit and its flags

@@ -18,7 +18,10 @@ const uint kPhotonCounterStoredGlobal = 1u;    // after at least one diffuse/glo
 const uint kPhotonCounterStoredPrimary = 2u;   // direct (first-hit) photons
 const uint kPhotonCounterAbsorbed = 3u;        // paths ended by Russian roulette or a black surface
 const uint kPhotonCounterLost = 4u;            // paths that left the scene
-const uint kPhotonCounterTruncated = 5u;       // paths that reached maxDeposits stored photons
+const uint kPhotonCounterTruncated = 5u;       // paths cut short: kPhotonMaxBounces (or lavapipe's loop
+                                               // budget), or a map of one kind whose photons the path can no longer make
+const uint kPhotonCounterSampled = 6u;         // paths with more deposits than maxDeposits slots: their
+                                               // slots hold a uniform sample of them (reservoir), reweighted
 const uint kPhotonCounterCount = 8u;
 // Bounces a photon path takes at most; a path still going then is counted as truncated and as a
 // silent termination (shared/kernels/terminations.glsl).
