@@ -85,8 +85,8 @@ def bad_cases():
     add("deep_json.gltf", b'{"asset": {"version": "2.0"}, "extras": ' + b"[" * 100000 + b"]" * 100000 + b"}",
         "JSON nested deeper than 64 levels")
     add("unsupported_extension.gltf",
-        changed(lambda d: d.update(extensionsRequired=["KHR_draco_mesh_compression"])),
-        "extensionsRequired: KHR_draco_mesh_compression is required by the file but not supported")
+        changed(lambda d: d.update(extensionsRequired=["KHR_texture_basisu"])),
+        "extensionsRequired: KHR_texture_basisu is required by the file but not supported")
     add("accessor_missing.gltf",
         changed(lambda d: d["meshes"][0]["primitives"][0]["attributes"].update(POSITION=7)),
         "meshes[0].primitives[0].attributes.POSITION: accessors[7] does not exist")
@@ -490,10 +490,10 @@ def bad_cases():
     add("texcoord_set_missing.gltf", texture_ref({"texCoord": 1}),
         'meshes[0].primitives[0]: material "lamp" reads TEXCOORD_1, which the primitive does not have')
     add("texcoord_set_beyond.gltf", texture_ref({"texCoord": 7}),
-        "materials[0].pbrMetallicRoughness.baseColorTexture.texCoord: 7 is not a TEXCOORD set vkphoton reads (0 to 1)")
+        'meshes[0].primitives[0]: material "lamp" reads TEXCOORD_7, which the primitive does not have')
     add("texture_transform_texcoord_beyond.gltf",
         texture_ref({"extensions": {"KHR_texture_transform": {"texCoord": 2}}}),
-        "baseColorTexture.texCoord: 2 is not a TEXCOORD set vkphoton reads")
+        "reads TEXCOORD_2, which the primitive does not have")
     add("texture_transform_bad_offset.gltf",
         texture_ref({"extensions": {"KHR_texture_transform": {"offset": [1, "x"]}}}),
         "baseColorTexture.extensions.KHR_texture_transform.offset[1]: \"x\" is not a number")
@@ -541,6 +541,31 @@ def bad_cases():
     add("bin_overrun.glb", bytes(overrun), "GLB chunk 1")
     add("no_bin_chunk.glb", glb(glb_doc, b""), "buffers[0]: the .glb has no BIN chunk")
     add("bad_version.glb", good_glb[:4] + struct.pack("<I", 1) + good_glb[8:], "GLB header: version 1 is not 2")
+
+    # Compressed streams that do not decode: a Draco header followed by garbage, and a meshopt
+    # ATTRIBUTES stream of the right header byte (0xa0) and nothing decodable after it.
+    draco = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+             "extensionsUsed": ["KHR_draco_mesh_compression"], "extensionsRequired": ["KHR_draco_mesh_compression"],
+             "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "extensions": {
+                 "KHR_draco_mesh_compression": {"bufferView": 0, "attributes": {"POSITION": 0}}}}]}],
+             "accessors": [{"componentType": FLOAT, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                           {"componentType": UINT32, "count": 3, "type": "SCALAR"}],
+             "buffers": [{"byteLength": 16, "uri": data_uri(b"DRACO\x02\x02\x01\x01\x00\x00\x00\xff\xff\xff\xff")}],
+             "bufferViews": [{"buffer": 0, "byteLength": 16}]}
+    add("draco_corrupt_stream.gltf", draco,
+        "meshes[0].primitives[0].extensions.KHR_draco_mesh_compression: the Draco stream does not decode")
+    meshopt = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+               "extensionsUsed": ["EXT_meshopt_compression"], "extensionsRequired": ["EXT_meshopt_compression"],
+               "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+               "accessors": [{"bufferView": 0, "componentType": FLOAT, "count": 3, "type": "VEC3",
+                              "min": [0, 0, 0], "max": [1, 1, 0]}],
+               "buffers": [{"byteLength": 12, "uri": data_uri(b"\xa0" + b"\x01" * 11)},
+                           {"byteLength": 36, "extensions": {"EXT_meshopt_compression": {"fallback": True}}}],
+               "bufferViews": [{"buffer": 1, "byteLength": 36, "byteStride": 12, "extensions": {
+                   "EXT_meshopt_compression": {"buffer": 0, "byteLength": 12, "byteStride": 12, "count": 3,
+                                               "mode": "ATTRIBUTES"}}}]}
+    add("meshopt_corrupt_stream.gltf", meshopt,
+        "bufferViews[0].extensions.EXT_meshopt_compression: the ATTRIBUTES stream does not decode")
     return cases
 
 
