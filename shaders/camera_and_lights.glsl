@@ -6,6 +6,15 @@
 
 #include "path_vertex.glsl"
 
+// The density with which the including integrator samples directions at a vertex, for next-event
+// estimation's MIS weight: the BSDF's (pdfVertexMis), unless the includer defines
+// CAMERA_PATH_DIRECTION_PDF as a function (PathVertex, local wi) declared before this file (the
+// guided path tracer: its mixture of guiding grid and BSDF). Both sides of the power heuristic
+// must use the density the samples really have, or their weights do not sum to one.
+#ifndef CAMERA_PATH_DIRECTION_PDF
+#define CAMERA_PATH_DIRECTION_PDF pdfVertexMis
+#endif
+
 // Next-event estimation at a non-delta path vertex: one light chosen by the light sampler
 // (selectLight, shared/light_selection.glsl) at the vertex's position and shading normal, one
 // sample on it, a shadow ray. With `mis` the contribution of area lights is weighted by the power heuristic
@@ -27,7 +36,7 @@ vec3 directLight(PathVertex v, uint lightCount, bool mis, uint skipTypes, inout 
     vec3 f = evalVertexDirect(v, ls, wi);  // zero for a light behind the surface, but through rough glass
     if (f.r + f.g + f.b <= 0.0f) return vec3(0.0f);
     if (!lightVisible(v.hit.position, v.hit.geometricNormal, ls)) return vec3(0.0f);
-    float weight = ls.delta || !mis ? 1.0f : powerHeuristic(ls.pdf, pdfVertexMis(v, wi));
+    float weight = ls.delta || !mis ? 1.0f : powerHeuristic(ls.pdf, CAMERA_PATH_DIRECTION_PDF(v, wi));
     return f * abs(wi.z) * ls.radiance * (weight / ls.pdf);
 }
 
