@@ -190,8 +190,9 @@ uint gatherNearest(PhotonGridView g, vec3 x, vec3 n, uint k, float maxRadius, ui
     return s.count;
 }
 
-// Reflected radiance estimate from the k nearest photons (Jensen: L = sum f_r dPhi / (pi r^2)),
-// in watts through g.photonPower. wo local in the frame (t, b, n).
+// Reflected radiance estimate from the k nearest photons (Jensen: L = sum f_r dPhi / (pi r^2),
+// scaled by (k - 1) / k to remove the k-nearest estimate's bias: nearestEstimateScale), in watts
+// through g.photonPower. wo local in the frame (t, b, n).
 vec3 radianceNearest(PhotonGridView g, vec3 x, uint k, float maxRadius, uint required, uint rejected,
                      BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n) {
     float radius2;
@@ -202,7 +203,7 @@ vec3 radianceNearest(PhotonGridView g, vec3 x, uint k, float maxRadius, uint req
         vec3 wi = toLocal(decodeOctahedral(p.direction), t, b, n);
         sum += evalBsdf(bsdf, wo, wi) * photonRelativePower(p);
     }
-    return sum * (g.photonPower / (kPi * radius2));
+    return sum * (g.photonPower * nearestEstimateScale(found, clamp(k, 1u, kMaxGatherK)) / (kPi * radius2));
 }
 
 #endif

@@ -22,6 +22,17 @@ INLINE float coneFilterArea(float r, float k) {
     return coneFilterNormalization(k) * kPi * r * r;
 }
 
+// k-nearest density estimates (Jensen: sum dPhi / (pi r^2), r the distance of the k-th nearest
+// photon) overestimate a smooth density by k / (k - 1): the k-th photon sits on the disk's edge
+// (for Poisson points of density lambda around a query point, E[1 / (pi r_k^2)] = lambda / (k - 1)).
+// This factor makes such an estimate unbiased where the density is locally uniform: (k - 1) / k
+// when the k-th photon set the radius (found == k), 1 when fewer were found within the search's
+// fixed radius. For query points that are not photons: the radiance photons' estimates, made at
+// photons and read at the nearest one, were measured unbiased without it (docs/photon-mapping.md).
+INLINE float nearestEstimateScale(uint found, uint k) {
+    return found >= k && k > 1u ? float(k - 1u) / float(k) : 1.0f;
+}
+
 // Progressive radius reduction (Hachisuka & Jensen 2009, eq. 5-7): a query point that has
 // accumulated n photons with squared radius r2 and receives m new ones inside it keeps
 // n + alpha m of them and shrinks its area in proportion. The accumulated flux is scaled by the
