@@ -89,6 +89,7 @@ PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
 // low with the cache, 3 % at mix 1).
 struct VertexGuide {
     bool guided;      // the vertex samples the mixture (else the BSDF alone)
+    float mix;        // probability of sampling the grid: guide.mix, or less (kCachedGuideMaxMix)
     uint m;           // grid size: m theta bands x n phi sectors
     uint n;
     vec3 t;           // the grid's frame: the shading frame, or the cache bin's axis frame
@@ -97,10 +98,16 @@ struct VertexGuide {
     vec4 irradiance;  // the guiding photons' indirect irradiance (rgb; w 1 where there is an estimate)
 };
 VertexGuide vertexGuide;
+// A cached grid covers its normal bin axis's hemisphere; at a vertex whose shading normal is not
+// that axis, the directions of the surface's hemisphere outside it have no grid density, and only
+// the BSDF half of the mixture reaches them: at least this share stays the BSDF's there, so that
+// --guide-mix 1 (no BSDF half) does not lose their light (inside a curved furnace: about 3 % of it).
+const float kCachedGuideMaxMix = 0.9f;
 float guideCdf[kMaxGuideCells];  // the vertex's grid, as a CDF (guideFinalize)
 
 void prepareGuide(PathVertex v) {
     vertexGuide.guided = false;
+    vertexGuide.mix = guide.mix;
     vertexGuide.irradiance = vec4(0.0f);
     if (guide.mix <= 0.0f || specularIsDelta(v.bsdf) || v.bsdf.transmission > 0.0f || !storesPhotons(v.bsdf)) return;
     uint gm = guide.gridSize & 0xffu;
@@ -116,6 +123,7 @@ void prepareGuide(PathVertex v) {
     uint bin = normalBin(v.n);
     gnrm = normalBinAxis(bin);
     orthonormalBasis(gnrm, gt, gb);
+    if (dot(gnrm, v.n) < 0.99999f) vertexGuide.mix = min(guide.mix, kCachedGuideMaxMix);
     uint base = (bucket * kNormalBins + bin) * kMaxGuideCells;
     for (uint i = 0u; i < kMaxGuideCells; ++i) guideCdf[i] = cacheCdfs[base + i];
     vec4 cachedIrradiance = cacheIrradiance[bucket * kNormalBins + bin];
@@ -153,14 +161,14 @@ float guidedDirectionPdf(PathVertex v, vec3 wi) {
     float bsdf = pdfVertexMis(v, wi);
     if (!vertexGuide.guided) return bsdf;
     vec3 wiGrid = toLocal(toWorld(wi, v.t, v.b, v.n), vertexGuide.t, vertexGuide.b, vertexGuide.normal);
-    return guide.mix * guidePdf(guideCdf, vertexGuide.m, vertexGuide.n, wiGrid) + (1.0f - guide.mix) * bsdf;
+    return vertexGuide.mix * guidePdf(guideCdf, vertexGuide.m, vertexGuide.n, wiGrid) + (1.0f - vertexGuide.mix) * bsdf;
 }
 
 // A direction from the prepared vertex's mixture, weighted by the mixture density.
 BsdfSample sampleGuided(PathVertex v, vec3 u, float uSelect) {
     if (!vertexGuide.guided) return sampleVertexBsdf(v, true, u);
     BsdfSample s;
-    if (uSelect < guide.mix) {
+    if (uSelect < vertexGuide.mix) {
         vec3 local = guideSample(guideCdf, vertexGuide.m, vertexGuide.n, u);
         s.wi = toLocal(toWorld(local, vertexGuide.t, vertexGuide.b, vertexGuide.normal), v.t, v.b, v.n);
         s.lobe = kLobeDiffuse;
