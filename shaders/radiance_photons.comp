@@ -43,7 +43,8 @@ void radiancePhoton() {
     uint found = gatherNearest(params.grid, p.position, n, params.k, params.maxRadius, 0u, 0u, radius2);
     vec3 sum = vec3(0.0f);
     for (uint j = 0u; j < found; ++j) sum += photonRelativePower(gridPhoton(heapIndex[j]));
-    vec3 irradiance = sum * (params.grid.photonPower / (kPi * radius2));
+    vec3 irradiance = sum * (params.grid.photonPower * nearestEstimateScale(found, clamp(params.k, 1u, kMaxGatherK)) /
+                             (kPi * radius2));
     PHOTON_AT(radiancePhotonTable, source) = makePhoton(p.position, irradiance, n, n, kPhotonValid, p.lightIndex);
 }
 

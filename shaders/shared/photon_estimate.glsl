@@ -27,8 +27,9 @@ INLINE float coneFilterArea(float r, float k) {
 // (for Poisson points of density lambda around a query point, E[1 / (pi r_k^2)] = lambda / (k - 1)).
 // This factor makes such an estimate unbiased where the density is locally uniform: (k - 1) / k
 // when the k-th photon set the radius (found == k), 1 when fewer were found within the search's
-// fixed radius. For query points that are not photons: the radiance photons' estimates, made at
-// photons and read at the nearest one, were measured unbiased without it (docs/photon-mapping.md).
+// fixed radius. Radiance photons take it as well: their estimates are made at a photon (one of the
+// k) but read at the nearest one to a gather hit, which favours photons with sparse surroundings,
+// and measured they carry the same k / (k - 1) (docs/photon-mapping.md).
 INLINE float nearestEstimateScale(uint found, uint k) {
     return found >= k && k > 1u ? float(k - 1u) / float(k) : 1.0f;
 }
