@@ -157,10 +157,7 @@ TEST_F(GuidedTest, FurnaceReadsItsClosedForm) {
 // at mix 1 the directions of a curved surface's hemisphere outside it were never sampled and
 // their light was lost (0.969); a BSDF share is kept there now.
 TEST_F(GuidedTest, CurvedFurnaceWithTheCacheAtMixOne) {
-    Scene scene = test::furnaceScene(0.5f, 0.5f);
-    const Mesh sphere = test::sphereMesh(1.0f, 0, 16, 24);
-    scene.triangles = sphere.triangles;
-    scene.bounds = sphere.bounds;
+    const Scene scene = test::sphereFurnaceScene(0.5f, 0.5f);
     Renderer renderer(test::gpu(), scene);
     GuideRun s = settingsFor(true, 16, 256, 5);
     s.frame.maxDepth = 24;

@@ -98,10 +98,7 @@ TEST_F(PhotonIntegratorTest, FurnaceKNearestEstimatesReadTheClosedFormForAnyK) {
 // radiance photons, whose irradiance is a k-nearest estimate too: 1.9 % above the path tracer
 // without the (k - 1) / k correction, 0.1 % below with it.
 TEST_F(PhotonIntegratorTest, CurvedFurnaceRadiancePhotonsAgreeWithThePathTracer) {
-    Scene scene = test::furnaceScene(0.8f, 0.2f);
-    const Mesh sphere = test::sphereMesh(1.0f, 0, 16, 24);
-    scene.triangles = sphere.triangles;
-    scene.bounds = sphere.bounds;
+    const Scene scene = test::sphereFurnaceScene(0.8f, 0.2f);
     Renderer renderer(test::gpu(), scene);
     FrameSettings s = smallRender(16, 32, 3);
     s.maxDepth = 48;

@@ -151,6 +151,14 @@ namespace vkp::test {
 
 // A UV sphere of radius r at the origin with smooth (vertex) normals: interpolated shading
 // normals go through the instance transform too.
+Scene sphereFurnaceScene(float albedo, float emission, int rings, int segments) {
+    Scene scene = furnaceScene(albedo, emission);
+    const Mesh sphere = sphereMesh(1.0f, 0, rings, segments);
+    scene.triangles = sphere.triangles;
+    scene.bounds = sphere.bounds;
+    return scene;
+}
+
 Mesh sphereMesh(float r, uint32_t material, int rings, int segments) {
     Mesh mesh;
     mesh.name = "sphere";

@@ -12,6 +12,10 @@ namespace vkp::test {
 // specular) and emits `emission` from both sides, seen by a camera at its centre. The radiance
 // everywhere is emission / (1 - albedo).
 Scene furnaceScene(float albedo, float emission);
+// The same material inside a sphere of radius 1 (`rings` x `segments` facets with smooth normals,
+// seen from the inside: the material is double-sided): a curved furnace without edges, radiance
+// emission / (1 - albedo) for a true sphere (the facets' smooth normals keep a little less).
+Scene sphereFurnaceScene(float albedo, float emission, int rings = 16, int segments = 24);
 
 // A scene shipped in scenes/, by name without the extension ("cornell-box").
 Scene shippedScene(const std::string& name);
