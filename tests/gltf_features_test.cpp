@@ -956,20 +956,14 @@ void buildPaneScene(QuadDoc& q, bool whiteCeiling) {
     if (whiteCeiling) addPlane(1.0f, 20.0f, true, 3);
 }
 
-// The pane scene's mean luminance from the path tracer (64 samples at pixel centres) and the photon
-// render with `globalPaths` paths of `maxDeposits` slots (8 samples, 40,000 caustic paths).
+// The pane scene's mean luminance from the path tracer (frame `s`) and the photon render with
+// `globalPaths` paths of `maxDeposits` slots (8 samples, 40,000 caustic paths).
 struct PaneMeans {
     double path;
     RenderResult photon;
 };
-PaneMeans renderPaneScene(const Scene& scene, uint32_t globalPaths, uint32_t maxDeposits) {
+PaneMeans renderPaneScene(const Scene& scene, FrameSettings s, uint32_t globalPaths, uint32_t maxDeposits) {
     Renderer renderer(test::gpu(), scene);
-    FrameSettings s;
-    s.width = kSize;
-    s.height = kSize;
-    s.samplesPerPixel = 64;
-    s.seed = 5;
-    s.pixelCentres = true;
     const double path = meanLuminance(renderer.render<PathIntegrator>(s).image);
     s.samplesPerPixel = 8;
     PhotonIntegratorSettings p;
@@ -983,7 +977,7 @@ PaneMeans renderPaneScene(const Scene& scene, uint32_t globalPaths, uint32_t max
 TEST_F(GltfFeatures, CausticsThroughAPartlyTransmissivePaneReachTheFloor) {
     QuadDoc q;
     buildPaneScene(q, false);
-    const PaneMeans m = renderPaneScene(load(q), 40000, 8);
+    const PaneMeans m = renderPaneScene(load(q), centres(64, 5), 40000, 8);
     const double photon = meanLuminance(m.photon.image);
     std::printf("path tracer %.4f, photon integrator %.4f\n", m.path, photon);
     EXPECT_GT(m.path, 0.01);
@@ -997,7 +991,7 @@ TEST_F(GltfFeatures, CausticsThroughAPartlyTransmissivePaneReachTheFloor) {
 TEST_F(GltfFeatures, PhotonPathsWithMoreDepositsThanSlotsKeepTheirEnergy) {
     QuadDoc q;
     buildPaneScene(q, true);
-    const PaneMeans m = renderPaneScene(load(q), 80000, 4);
+    const PaneMeans m = renderPaneScene(load(q), centres(64, 5), 80000, 4);
     const double photon = meanLuminance(m.photon.image);
     const double sampled = m.photon.stats.get<double>("photons.globalSampled");
     std::printf("path tracer %.4f, photon integrator %.4f, %.0f paths sampled\n", m.path, photon, sampled);
