@@ -1,0 +1,124 @@
+#!/usr/bin/env bash
+# vkphoton on a borrowed GPU machine: the test suite and the benchmarks from a build made here,
+# carried with the runtime libraries `ldd` names and the Khronos validation layer, every figure
+# written to one file. Two steps:
+#
+#   bash bench/gpu/run.sh pack          # here: build, then gather binaries, libraries, layer in .gpu/
+#   bash bench/gpu/run.sh run [DIR]     # there (or here, on lavapipe): tests + benchmarks into
+#                                       # DIR/gpu-results.md (default: $OUT, else out/gpu)
+#
+# .gpu/ is ignored by git (bench/gpu/.gitignore); the device tool carries it (`carry: [".gpu"]`).
+# The GPU machine has no Vulkan loader of its own and cannot reach the network, so the loader
+# (libvulkan.so.1) travels with the other libraries; the driver's ICD file is found where the
+# NVIDIA image keeps it. Set VKPHOTON_GPU_TESTS=0 to skip the tests, VKPHOTON_GPU_TEST_FILTER
+# to run a gtest filter, VKPHOTON_GPU_SHARDS for parallel test processes (default 8).
+set -uo pipefail
+cd "$(dirname "$0")/../.."
+root=$PWD
+pack=$root/.gpu
+
+do_pack() {
+  set -e
+  bash scripts/setup.sh
+  cmake --build build -j "${VKPHOTON_JOBS:-2}" --target vkphoton vkphoton_tests path_tracer_bench photon_bench \
+    photon_map_bench guiding_bench
+  rm -rf "$pack"
+  mkdir -p "$pack/bin" "$pack/lib" "$pack/layers"
+  local bins=(build/vkphoton build/tests/vkphoton_tests build/bench/path_tracer_bench build/bench/photon_bench
+              build/bench/photon_map_bench build/bench/guiding_bench)
+  for b in "${bins[@]}"; do strip -o "$pack/bin/$(basename "$b")" "$b"; done
+  # Every shared library the binaries and the validation layer need, but the C runtime's own
+  # (the GPU machine's glibc is newer, and mixing two loaders breaks both).
+  local layer=/usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so
+  { for b in "$pack"/bin/* "$layer"; do ldd "$b"; done; } |
+    awk '$3 ~ /^\// {print $3}' | sort -u |
+    grep -vE '/(libc|libm|libpthread|libdl|librt|ld-linux-x86-64|libresolv)\.so' |
+    while read -r lib; do cp -L "$lib" "$pack/lib/"; done
+  cp -L /usr/lib/x86_64-linux-gnu/libvulkan.so.1 "$pack/lib/"
+  strip "$layer" -o "$pack/layers/libVkLayer_khronos_validation.so"
+  sed 's#"library_path": *"[^"]*"#"library_path": "./libVkLayer_khronos_validation.so"#' \
+    /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json >"$pack/layers/VkLayer_khronos_validation.json"
+  # The tests find their data, scenes and the vkphoton binary at the paths compiled in.
+  echo "$root" >"$pack/source_dir"
+  du -sh "$pack"
+}
+
+do_run() {
+  local out=${1:-${OUT:-$root/out/gpu}}
+  mkdir -p "$out"
+  local results=$out/gpu-results.md log=$out/gpu-log.txt
+  [ -x "$pack/bin/vkphoton" ] || { echo "run.sh: no $pack/bin/vkphoton: run 'bash bench/gpu/run.sh pack' first" >&2; exit 2; }
+  export LD_LIBRARY_PATH="$pack/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+  export VK_LAYER_PATH="$pack/layers"
+  for icd in /usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json /usr/share/vulkan/icd.d/nvidia_icd.json \
+             /etc/vulkan/icd.d/nvidia_icd.json; do
+    if [ -f "$icd" ] && [ -z "${VK_ICD_FILENAMES:-}" ]; then export VK_DRIVER_FILES=$icd; break; fi
+  done
+  # The compiled-in paths (tests' data, scenes, build/vkphoton) point at the packing checkout.
+  local src; src=$(cat "$pack/source_dir")
+  if [ "$src" != "$root" ] && [ ! -e "$src" ]; then mkdir -p "$(dirname "$src")" && ln -s "$root" "$src"; fi
+  mkdir -p "$src/build/tests"
+  [ -e "$src/build/vkphoton" ] || ln -s "$pack/bin/vkphoton" "$src/build/vkphoton"
+  local bin=$pack/bin
+  {
+    echo "# vkphoton on $(hostname) — $(date -u +%Y-%m-%dT%H:%MZ)"
+    echo
+    echo "commit $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown); VK_DRIVER_FILES=${VK_DRIVER_FILES:-} VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-}"
+    nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader 2>/dev/null | sed 's/^/gpu: /'
+    echo; echo '## devices'; echo '```'; "$bin/vkphoton" devices 2>&1; echo '```'
+  } >"$results"
+  run_tests "$out" >>"$results" 2>>"$log"
+  run_benches >>"$results" 2>>"$log"
+  echo "run.sh: figures in $results" >&2
+}
+
+# The gtest binary in parallel shards (the GPU is shared by them; the CPU work spreads), validation on.
+run_tests() {
+  [ "${VKPHOTON_GPU_TESTS:-1}" = 1 ] || return 0
+  local out=$1 shards=${VKPHOTON_GPU_SHARDS:-8} filter=${VKPHOTON_GPU_TEST_FILTER:-*}
+  echo; echo "## tests ($shards shards, filter '$filter', validation layer on)"
+  local start=$SECONDS pids=()
+  for ((i = 0; i < shards; i++)); do
+    VKPHOTON_VALIDATE=1 VK_LOADER_DEBUG=none GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$i \
+      timeout "${VKPHOTON_GPU_TEST_TIMEOUT:-300}" "$pack/bin/vkphoton_tests" --gtest_filter="$filter" \
+      --gtest_brief=1 >"$out/tests-$i.txt" 2>&1 &
+    pids+=($!)
+  done
+  for p in "${pids[@]}"; do wait "$p"; done
+  cat "$out"/tests-*.txt >"$out/tests.txt"; rm -f "$out"/tests-*.txt
+  echo "wall: $((SECONDS - start)) s"
+  echo '```'
+  grep -E '^\[  (PASSED|FAILED|SKIPPED) |^\[  FAILED  \]|tests? ran|Terminated' "$out/tests.txt" | sort | uniq -c | sort -rn | head -60
+  echo '```'
+}
+
+bench() {  # bench TITLE CMD...: the command line and its output, timed
+  echo; echo "## $1"; shift
+  echo '```'; echo "\$ $*"
+  local start=$SECONDS
+  timeout "${VKPHOTON_GPU_BENCH_TIMEOUT:-120}" "$@" 2>&1 | tail -40
+  echo "(exit ${PIPESTATUS[0]}, $((SECONDS - start)) s)"; echo '```'
+}
+
+run_benches() {
+  local bin=$pack/bin s=scenes
+  bench "path tracer throughput (cornell-box)" "$bin/path_tracer_bench" $s/cornell-box.gltf --width 256 --height 256 --spp 16 --repeat 3
+  bench "path tracer throughput (cornell-glass)" "$bin/path_tracer_bench" $s/cornell-glass.gltf --width 256 --height 256 --spp 16 --repeat 3
+  bench "photon tracing (cornell-glass)" "$bin/photon_bench" $s/cornell-glass.gltf --paths 2000000 --repeat 3
+  bench "photon map: grid build and gathers" "$bin/photon_map_bench" $s/cornell-glass.gltf --skip-convergence --repeat 3
+  local o; o=$(mktemp -d)
+  for integ in path photon sppm guided; do
+    local extra=(--integrator "$integ")
+    [ "$integ" = sppm ] && extra=(--integrator photon --progressive)
+    bench "render 1920x1080 $integ, 10 s (cornell-box)" "$bin/vkphoton" render $s/cornell-box.gltf "${extra[@]}" \
+      --width 1920 --height 1080 --spp 100000 --time-limit 10 --quiet -o "$o/$integ.exr" --stats-json "$o/$integ.json"
+    [ -f "$o/$integ.json" ] && { echo '```json'; head -c 1500 "$o/$integ.json"; echo; echo '```'; }
+  done
+  rm -rf "$o"
+}
+
+case "${1:-}" in
+  pack) do_pack ;;
+  run) shift; do_run "$@" ;;
+  *) echo "usage: bash bench/gpu/run.sh pack | run [DIR]" >&2; exit 2 ;;
+esac
