@@ -40,6 +40,10 @@ do_pack() {
     /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json >"$pack/layers/VkLayer_khronos_validation.json"
   # The tests find their data, scenes and the vkphoton binary at the paths compiled in.
   echo "$root" >"$pack/source_dir"
+  # The device tool carries 64 MiB with the working tree: the binaries, libraries and layer
+  # travel as one xz archive (about a fifth of their size).
+  tar -C "$pack" -cJf "$root/.gpu-pack.tar.xz" bin lib layers source_dir
+  rm -rf "$pack" && mkdir -p "$pack" && mv "$root/.gpu-pack.tar.xz" "$pack/pack.tar.xz"
   du -sh "$pack"
 }
 
@@ -47,8 +51,14 @@ do_run() {
   local out=${1:-${OUT:-$root/out/gpu}}
   mkdir -p "$out"
   local results=$out/gpu-results.md log=$out/gpu-log.txt
+  if [ -f "$pack/pack.tar.xz" ]; then
+    local unpacked=${TMPDIR:-/tmp}/vkphoton-gpu
+    rm -rf "$unpacked" && mkdir -p "$unpacked" && tar -C "$unpacked" -xJf "$pack/pack.tar.xz"
+    pack=$unpacked
+  fi
   [ -x "$pack/bin/vkphoton" ] || { echo "run.sh: no $pack/bin/vkphoton: run 'bash bench/gpu/run.sh pack' first" >&2; exit 2; }
   export LD_LIBRARY_PATH="$pack/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+  for d in /usr/local/nvidia/lib64 /usr/local/nvidia/lib; do [ -d "$d" ] && LD_LIBRARY_PATH+=":$d"; done
   export VK_LAYER_PATH="$pack/layers"
   for icd in /usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json /usr/share/vulkan/icd.d/nvidia_icd.json \
              /etc/vulkan/icd.d/nvidia_icd.json; do
@@ -65,7 +75,8 @@ do_run() {
     echo
     echo "commit $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown); VK_DRIVER_FILES=${VK_DRIVER_FILES:-} VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-}"
     nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader 2>/dev/null | sed 's/^/gpu: /'
-    echo; echo '## devices'; echo '```'; "$bin/vkphoton" devices 2>&1; echo '```'
+    echo; echo '## devices'; echo '```'; "$bin/vkphoton" devices 2>&1
+    ls /usr/local/nvidia/share/vulkan/icd.d /usr/share/vulkan/icd.d /etc/vulkan/icd.d 2>&1 | head -8; echo '```'
   } >"$results"
   run_tests "$out" >>"$results" 2>>"$log"
   run_benches >>"$results" 2>>"$log"
@@ -104,7 +115,7 @@ run_benches() {
   local bin=$pack/bin s=scenes
   bench "path tracer throughput (cornell-box)" "$bin/path_tracer_bench" $s/cornell-box.gltf --width 256 --height 256 --spp 16 --repeat 3
   bench "path tracer throughput (cornell-glass)" "$bin/path_tracer_bench" $s/cornell-glass.gltf --width 256 --height 256 --spp 16 --repeat 3
-  bench "photon tracing (cornell-glass)" "$bin/photon_bench" $s/cornell-glass.gltf --paths 2000000 --repeat 3
+  bench "photon tracing (cornell-glass)" "$bin/photon_bench" $s/cornell-glass.gltf --paths 1000000 --repeat 3
   bench "photon map: grid build and gathers" "$bin/photon_map_bench" $s/cornell-glass.gltf --skip-convergence --repeat 3
   local o; o=$(mktemp -d)
   for integ in path photon sppm guided; do
