@@ -20,11 +20,12 @@ pack=$root/.gpu
 do_pack() {
   set -e
   bash scripts/setup.sh
-  cmake --build build -j "${VKPHOTON_JOBS:-2}" --target vkphoton vkphoton_tests path_tracer_bench photon_bench \
-    photon_map_bench guiding_bench
+  cmake --build build -j "${VKPHOTON_JOBS:-2}" --target vkphoton vkphoton_unit_tests vkphoton_render_tests \
+    vkphoton_slow_tests path_tracer_bench photon_bench photon_map_bench guiding_bench
   rm -rf "$pack"
   mkdir -p "$pack/bin" "$pack/lib" "$pack/layers"
-  local bins=(build/vkphoton build/tests/vkphoton_tests build/bench/path_tracer_bench build/bench/photon_bench
+  local bins=(build/vkphoton build/tests/vkphoton_unit_tests build/tests/vkphoton_render_tests
+              build/tests/vkphoton_slow_tests build/bench/path_tracer_bench build/bench/photon_bench
               build/bench/photon_map_bench build/bench/guiding_bench)
   for b in "${bins[@]}"; do strip -o "$pack/bin/$(basename "$b")" "$b"; done
   # Every shared library the binaries and the validation layer need, but the C runtime's own
@@ -40,6 +41,10 @@ do_pack() {
     /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json >"$pack/layers/VkLayer_khronos_validation.json"
   # The tests find their data, scenes and the vkphoton binary at the paths compiled in.
   echo "$root" >"$pack/source_dir"
+  # The device tool carries 64 MiB with the working tree: the binaries, libraries and layer
+  # travel as one xz archive (about a fifth of their size).
+  tar -C "$pack" -cJf "$root/.gpu-pack.tar.xz" bin lib layers source_dir
+  rm -rf "$pack" && mkdir -p "$pack" && mv "$root/.gpu-pack.tar.xz" "$pack/pack.tar.xz"
   du -sh "$pack"
 }
 
@@ -47,8 +52,14 @@ do_run() {
   local out=${1:-${OUT:-$root/out/gpu}}
   mkdir -p "$out"
   local results=$out/gpu-results.md log=$out/gpu-log.txt
+  if [ -f "$pack/pack.tar.xz" ]; then
+    local unpacked=${TMPDIR:-/tmp}/vkphoton-gpu
+    rm -rf "$unpacked" && mkdir -p "$unpacked" && tar -C "$unpacked" -xJf "$pack/pack.tar.xz"
+    pack=$unpacked
+  fi
   [ -x "$pack/bin/vkphoton" ] || { echo "run.sh: no $pack/bin/vkphoton: run 'bash bench/gpu/run.sh pack' first" >&2; exit 2; }
   export LD_LIBRARY_PATH="$pack/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+  for d in /usr/local/nvidia/lib64 /usr/local/nvidia/lib; do [ -d "$d" ] && LD_LIBRARY_PATH+=":$d"; done
   export VK_LAYER_PATH="$pack/layers"
   for icd in /usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json /usr/share/vulkan/icd.d/nvidia_icd.json \
              /etc/vulkan/icd.d/nvidia_icd.json; do
@@ -65,24 +76,28 @@ do_run() {
     echo
     echo "commit $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown); VK_DRIVER_FILES=${VK_DRIVER_FILES:-} VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-}"
     nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader 2>/dev/null | sed 's/^/gpu: /'
-    echo; echo '## devices'; echo '```'; "$bin/vkphoton" devices 2>&1; echo '```'
+    echo; echo '## devices'; echo '```'; "$bin/vkphoton" devices 2>&1
+    ls /usr/local/nvidia/share/vulkan/icd.d /usr/share/vulkan/icd.d /etc/vulkan/icd.d 2>&1 | head -8; echo '```'
   } >"$results"
   run_tests "$out" >>"$results" 2>>"$log"
   run_benches >>"$results" 2>>"$log"
   echo "run.sh: figures in $results" >&2
 }
 
-# The gtest binary in parallel shards (the GPU is shared by them; the CPU work spreads), validation on.
+# The tier binaries (unit, render, slow) in parallel shards (the GPU is shared by them; the CPU work
+# spreads), validation on.
 run_tests() {
   [ "${VKPHOTON_GPU_TESTS:-1}" = 1 ] || return 0
   local out=$1 shards=${VKPHOTON_GPU_SHARDS:-8} filter=${VKPHOTON_GPU_TEST_FILTER:-*}
-  echo; echo "## tests ($shards shards, filter '$filter', validation layer on)"
+  echo; echo "## tests ($shards shards per tier, filter '$filter', validation layer on)"
   local start=$SECONDS pids=()
-  for ((i = 0; i < shards; i++)); do
-    VKPHOTON_VALIDATE=1 VK_LOADER_DEBUG=none GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$i \
-      timeout "${VKPHOTON_GPU_TEST_TIMEOUT:-300}" "$pack/bin/vkphoton_tests" --gtest_filter="$filter" \
-      --gtest_brief=1 >"$out/tests-$i.txt" 2>&1 &
-    pids+=($!)
+  for tier in unit render slow; do
+    for ((i = 0; i < shards; i++)); do
+      VKPHOTON_VALIDATE=1 VK_LOADER_DEBUG=none GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$i \
+        timeout "${VKPHOTON_GPU_TEST_TIMEOUT:-300}" "$pack/bin/vkphoton_${tier}_tests" --gtest_filter="$filter" \
+        --gtest_brief=1 >"$out/tests-$tier-$i.txt" 2>&1 &
+      pids+=($!)
+    done
   done
   for p in "${pids[@]}"; do wait "$p"; done
   cat "$out"/tests-*.txt >"$out/tests.txt"; rm -f "$out"/tests-*.txt
@@ -104,12 +119,11 @@ run_benches() {
   local bin=$pack/bin s=scenes
   bench "path tracer throughput (cornell-box)" "$bin/path_tracer_bench" $s/cornell-box.gltf --width 256 --height 256 --spp 16 --repeat 3
   bench "path tracer throughput (cornell-glass)" "$bin/path_tracer_bench" $s/cornell-glass.gltf --width 256 --height 256 --spp 16 --repeat 3
-  bench "photon tracing (cornell-glass)" "$bin/photon_bench" $s/cornell-glass.gltf --paths 2000000 --repeat 3
+  bench "photon tracing (cornell-glass)" "$bin/photon_bench" $s/cornell-glass.gltf --paths 1000000 --repeat 3
   bench "photon map: grid build and gathers" "$bin/photon_map_bench" $s/cornell-glass.gltf --skip-convergence --repeat 3
   local o; o=$(mktemp -d)
   for integ in path photon sppm guided; do
     local extra=(--integrator "$integ")
-    [ "$integ" = sppm ] && extra=(--integrator photon --progressive)
     bench "render 1920x1080 $integ, 10 s (cornell-box)" "$bin/vkphoton" render $s/cornell-box.gltf "${extra[@]}" \
       --width 1920 --height 1080 --spp 100000 --time-limit 10 --quiet -o "$o/$integ.exr" --stats-json "$o/$integ.json"
     [ -f "$o/$integ.json" ] && { echo '```json'; head -c 1500 "$o/$integ.json"; echo; echo '```'; }
