@@ -1,4 +1,4 @@
-// Deposition benchmark (issue 4): stored photons and memory at equal image error, and image
+// Deposition benchmark: stored photons and memory at equal image error, and image
 // error at equal stored photons, for --deposit all, importance and density. Usage:
 //   build/bench/deposition_bench [SCENE] [--width W --height H --spp N --paths a,b,c
 //                                 --deposit-paths a,b,c --reference-paths N --reference FILE.exr
@@ -22,7 +22,7 @@
 
 #include "image/exr.h"
 #include "image/metrics.h"
-#include "render/integrators/photon_integrator.h"
+#include "photon/photon_integrator.h"
 #include "render/renderer.h"
 #include "shared/photon.glsl"
 #include "scene/gltf_loader.h"

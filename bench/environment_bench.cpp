@@ -15,7 +15,7 @@
 
 #include "image/metrics.h"
 #include "reference_image.h"
-#include "render/integrators/path_integrator.h"
+#include "render/path_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/stopwatch.h"

@@ -17,7 +17,7 @@
 
 #include "image/metrics.h"
 #include "reference_image.h"
-#include "render/integrators/guided_integrator.h"
+#include "guiding/guided_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/stopwatch.h"

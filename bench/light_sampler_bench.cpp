@@ -1,6 +1,6 @@
 // Next-event light choice and triangle sampling against each other: relMSE against a high-sample
 // path-traced reference, per sample count (per-sample error) or at equal time, for each method:
-//   area         power selection, emissive triangles by area (the behaviour before issue 16)
+//   area         power selection, emissive triangles by area (the plain baseline)
 //   power        power selection, emissive triangles by solid angle
 //   bvh          the light BVH, emissive triangles by solid angle
 //   photon       photon light cells mixed with the BVH (default --light-cell-* settings)
@@ -24,8 +24,8 @@
 
 #include "image/metrics.h"
 #include "reference_image.h"
-#include "render/integrators/path_integrator.h"
-#include "render/integrators/photon_integrator.h"
+#include "render/path_integrator.h"
+#include "photon/photon_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/stopwatch.h"

@@ -12,7 +12,7 @@
 #include "gpu_ray_rates.h"
 #include "median.h"
 #include "gpu_scene/scene_buffers.h"
-#include "render/integrators/path_integrator.h"
+#include "render/path_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/errors.h"

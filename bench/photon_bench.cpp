@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "gpu_scene/scene_buffers.h"
-#include "render/photon_tracer.h"
+#include "photon/photon_tracer.h"
 #include "scene/gltf_loader.h"
 #include "vk/context.h"
 

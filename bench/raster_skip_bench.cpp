@@ -1,5 +1,5 @@
 // --direct raster with and without skipping the shadow volumes of lights whose primary photons
-// reach no cell the camera sees (render/light_reach.h, issue 16): the raster pass's time and lights,
+// reach no cell the camera sees (lights/light_reach.h): the raster pass's time and lights,
 // and the difference of the images. Renders at depth 1 (first vertex only) with one sample, where
 // the image is the raster pass's direct light plus the emission seen: the difference is exactly the
 // direct light of the skipped lights. `full` uses the light BVH (no skipping), `skip` the photon
@@ -15,7 +15,7 @@
 
 #include "median.h"
 #include "image/metrics.h"
-#include "render/integrators/path_integrator.h"
+#include "render/path_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/stopwatch.h"

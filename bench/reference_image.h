@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "image/exr.h"
-#include "render/integrators/path_integrator.h"
+#include "render/path_integrator.h"
 #include "render/renderer.h"
 #include "util/stopwatch.h"
 

@@ -1,4 +1,4 @@
-// Error per sample of vkphoton's path tracer against a textbook one (issue 17): a CPU path tracer
+// Error per sample of vkphoton's path tracer against a textbook one: a CPU path tracer
 // on Embree 3 written the way the textbooks write it (pbrt's PathIntegrator for Lambertian
 // surfaces: next-event estimation by power-proportional light choice and uniform area sampling,
 // BSDF sampling by the cosine, both weighted by the power heuristic, Russian roulette on the
@@ -23,7 +23,7 @@
 #include "gpu_scene/scene_buffers.h"
 #include "image/exr.h"
 #include "image/metrics.h"
-#include "render/integrators/path_integrator.h"
+#include "render/path_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "shared/gpu_types.glsl"

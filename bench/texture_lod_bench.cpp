@@ -1,5 +1,4 @@
-// Texture level of detail (issue 13: "mipmaps or ray-cone filtering if it pays: measure aliasing
-// and cost"): the path tracer with mipmaps chosen by ray cones (the default) and with level 0 only
+// Texture level of detail (do mipmaps chosen by ray cones pay? aliasing against cost): the path tracer with mipmaps chosen by ray cones (the default) and with level 0 only
 // (--no-mipmaps), at the same sample counts, against a many-sample reference rendered without
 // mipmaps (the supersampled texture: what both converge to). For each: relMSE against the
 // reference (aliasing shows as error at few samples; the filter's blur as error that stays), the
@@ -18,7 +17,7 @@
 #include "gpu_scene/texture_atlas.h"
 #include "image/metrics.h"
 #include "reference_image.h"
-#include "render/integrators/path_integrator.h"
+#include "render/path_integrator.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "util/stopwatch.h"

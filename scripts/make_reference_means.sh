@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Renders each shipped scene at 64x64 with many samples and writes the mean radiance per channel
-# to tests/data/reference_means.json: the reference values of tests/scene_render_test.cpp.
+# to tests/data/reference_means.json: the reference values of tests/render/shipped_scenes_render_test.cpp.
 # Usage: bash scripts/make_reference_means.sh [SPP]   (after a build)
 set -euo pipefail
 cd "$(dirname "$0")/.."

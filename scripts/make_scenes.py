@@ -406,7 +406,7 @@ def door_slit(path):
     b.write(path)
 
 
-# A hall of cubicles lit by many small lights among the partitions (issue 16's ">= 1,000 small lights among
+# A hall of cubicles lit by many small lights among the partitions (">= 1,000 small lights among
 # occluders"): CUBICLES x CUBICLES cells of CUBICLE_SIZE, partitions PARTITION_HEIGHT high (below the ceiling) with
 # a doorway at one end of every cell edge, and in every cell a LIGHTS_PER_SIDE x LIGHTS_PER_SIDE grid of small
 # single-triangle lights facing down under the partitions' top, so most lights are hidden from most places.
@@ -476,7 +476,7 @@ def cubicles_1024(path):
     b.write(path)
 
 
-# A small object moving in a large room (issue 15's second benchmark scene, Dmitriev et al. 2002 §6): a closed
+# A small object moving in a large room (the second selective-update benchmark scene, Dmitriev et al. 2002 §6): a closed
 # HALL_SIZE hall lit by four ceiling lights, six pillars and two benches, and a glass sphere of 0.5 m rolling 3 m
 # over the floor under one light in the first two seconds, then standing still. Most photon paths never meet it.
 HALL_SIZE = (20.0, 5.0, 10.0)  # x, y (height), z

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up and builds vkphoton if needed, then runs the whole test suite on lavapipe with the
-# Khronos validation layer on for every test. Extra arguments go to ctest (e.g. -L fast).
+# Khronos validation layer on for every test. Extra arguments go to ctest: -L unit runs the fast
+# tier (docs/testing.md), -L render and -L slow the others.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh

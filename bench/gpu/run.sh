@@ -20,11 +20,12 @@ pack=$root/.gpu
 do_pack() {
   set -e
   bash scripts/setup.sh
-  cmake --build build -j "${VKPHOTON_JOBS:-2}" --target vkphoton vkphoton_tests path_tracer_bench photon_bench \
-    photon_map_bench guiding_bench
+  cmake --build build -j "${VKPHOTON_JOBS:-2}" --target vkphoton vkphoton_unit_tests vkphoton_render_tests \
+    vkphoton_slow_tests path_tracer_bench photon_bench photon_map_bench guiding_bench
   rm -rf "$pack"
   mkdir -p "$pack/bin" "$pack/lib" "$pack/layers"
-  local bins=(build/vkphoton build/tests/vkphoton_tests build/bench/path_tracer_bench build/bench/photon_bench
+  local bins=(build/vkphoton build/tests/vkphoton_unit_tests build/tests/vkphoton_render_tests
+              build/tests/vkphoton_slow_tests build/bench/path_tracer_bench build/bench/photon_bench
               build/bench/photon_map_bench build/bench/guiding_bench)
   for b in "${bins[@]}"; do strip -o "$pack/bin/$(basename "$b")" "$b"; done
   # Every shared library the binaries and the validation layer need, but the C runtime's own
@@ -83,17 +84,20 @@ do_run() {
   echo "run.sh: figures in $results" >&2
 }
 
-# The gtest binary in parallel shards (the GPU is shared by them; the CPU work spreads), validation on.
+# The tier binaries (unit, render, slow) in parallel shards (the GPU is shared by them; the CPU work
+# spreads), validation on.
 run_tests() {
   [ "${VKPHOTON_GPU_TESTS:-1}" = 1 ] || return 0
   local out=$1 shards=${VKPHOTON_GPU_SHARDS:-8} filter=${VKPHOTON_GPU_TEST_FILTER:-*}
-  echo; echo "## tests ($shards shards, filter '$filter', validation layer on)"
+  echo; echo "## tests ($shards shards per tier, filter '$filter', validation layer on)"
   local start=$SECONDS pids=()
-  for ((i = 0; i < shards; i++)); do
-    VKPHOTON_VALIDATE=1 VK_LOADER_DEBUG=none GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$i \
-      timeout "${VKPHOTON_GPU_TEST_TIMEOUT:-300}" "$pack/bin/vkphoton_tests" --gtest_filter="$filter" \
-      --gtest_brief=1 >"$out/tests-$i.txt" 2>&1 &
-    pids+=($!)
+  for tier in unit render slow; do
+    for ((i = 0; i < shards; i++)); do
+      VKPHOTON_VALIDATE=1 VK_LOADER_DEBUG=none GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$i \
+        timeout "${VKPHOTON_GPU_TEST_TIMEOUT:-300}" "$pack/bin/vkphoton_${tier}_tests" --gtest_filter="$filter" \
+        --gtest_brief=1 >"$out/tests-$tier-$i.txt" 2>&1 &
+      pids+=($!)
+    done
   done
   for p in "${pids[@]}"; do wait "$p"; done
   cat "$out"/tests-*.txt >"$out/tests.txt"; rm -f "$out"/tests-*.txt
@@ -120,7 +124,6 @@ run_benches() {
   local o; o=$(mktemp -d)
   for integ in path photon sppm guided; do
     local extra=(--integrator "$integ")
-    [ "$integ" = sppm ] && extra=(--integrator photon --progressive)
     bench "render 1920x1080 $integ, 10 s (cornell-box)" "$bin/vkphoton" render $s/cornell-box.gltf "${extra[@]}" \
       --width 1920 --height 1080 --spp 100000 --time-limit 10 --quiet -o "$o/$integ.exr" --stats-json "$o/$integ.json"
     [ -f "$o/$integ.json" ] && { echo '```json'; head -c 1500 "$o/$integ.json"; echo; echo '```'; }

@@ -9,7 +9,7 @@
 #include "shared/bsdf.glsl"
 #include "bench_kernels.glsl"
 #define PHOTON_GRID_BINDING kGatherBenchGridBinding
-#include "photon_gather.glsl"
+#include "photon/photon_gather.glsl"
 
 layout(local_size_x = kBenchGroupSize) in;
 

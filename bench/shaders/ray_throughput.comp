@@ -5,7 +5,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "bench_kernels.glsl"
-#include "scene_access.glsl"
+#include "render/scene_access.glsl"
 #include "shared/halton.glsl"
 
 layout(local_size_x = kBenchGroupSize) in;

@@ -1,4 +1,4 @@
-// Benchmark counterpart of shaders/raster_direct.comp with the mask replaced by a shadow ray
+// Benchmark counterpart of shaders/raster/raster_direct.comp with the mask replaced by a shadow ray
 // (lightVisible, as the path tracer's next-event estimate traces it): the exact direct light of
 // one raster light per dispatch (lavapipe's loop budget: one shadow ray per invocation and
 // dispatch), added to the direct buffer. Bindings: bench_kernels.glsl.
@@ -6,10 +6,10 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "bench_kernels.glsl"
-#include "scene_access.glsl"
+#include "render/scene_access.glsl"
 #include "shared/halton.glsl"
-#include "camera_and_lights.glsl"
-#include "raster_light_access.glsl"
+#include "render/camera_and_lights.glsl"
+#include "raster/raster_light_access.glsl"
 
 layout(local_size_x = kBenchGroupSize) in;
 

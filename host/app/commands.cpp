@@ -15,12 +15,12 @@
 #include "image/exr.h"
 #include "image/metrics.h"
 #include "image/png.h"
-#include "render/deposition.h"
-#include "render/guide_debug.h"
-#include "render/integrators/photon_settings.h"
-#include "render/photon_export.h"
+#include "photon/deposition.h"
+#include "guiding/guide_debug.h"
+#include "photon/photon_settings.h"
+#include "photon/photon_export.h"
 #include "app/merge_command.h"
-#include "render/photon_map.h"
+#include "photon/photon_map.h"
 #include "render/stats.h"
 #include "render/terminations.h"
 #include "render/renderer.h"
@@ -75,8 +75,7 @@ GltfLimits deviceSceneLimits(const vk::Context& context, double maxMemoryGiB) {
 }
 
 void PhotonsCommandOptions::check() const {
-    checkRange("--photons", photons, 1u, 1u << 30);  // maps of any size: docs/photon-mapping.md
-    checkRange("--max-deposits", maxDeposits, 1u, 64u);
+    checkPhotonPaths(photons, maxDeposits);
     checkRange("--width", width, 1u, 16384u);
     checkRange("--height", height, 1u, 16384u);
     view.check();

@@ -5,14 +5,15 @@
 #include <vector>
 #include <string>
 
-#include "gpu_scene/light_tree.h"
+#include "lights/light_tree.h"
 #include "image/view_transform.h"
-#include "render/deposit_options.h"
+#include "photon/deposit_options.h"
+#include "photon/photon_path_options.h"
 #include "render/frame.h"
-#include "render/frame_sequence.h"
+#include "animation/frame_sequence.h"
 #include "render/integrator_registry.h"
 #include "render/aov.h"
-#include "render/path_guide.h"
+#include "guiding/path_guide.h"
 #include "scene/environment.h"
 
 namespace vkp {
@@ -61,8 +62,8 @@ struct RenderCommandOptions {
 struct PhotonsCommandOptions {
     std::filesystem::path scene;
     std::filesystem::path output;       // .ply; empty: out/<scene name>-photons.ply
-    uint32_t photons = 200000;          // photon paths to emit
-    uint32_t maxDeposits = 8;
+    uint32_t photons = kDefaultPhotonPaths;  // --photons: photon paths to emit
+    uint32_t maxDeposits = kDefaultMaxDeposits;
     uint32_t seed = 0;
     // --deposit and its flags; every photon unless told otherwise.
     DepositOptions deposit = [] {

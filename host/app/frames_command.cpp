@@ -11,10 +11,10 @@
 #include "image/metrics.h"
 #include "image/png.h"
 #include "render/aov.h"
-#include "render/frame_scene.h"
-#include "render/frame_update.h"
+#include "animation/frame_scene.h"
+#include "animation/frame_update.h"
 #include "render/renderer.h"
-#include "render/selective_frame_update.h"
+#include "animation/selective_frame_update.h"
 #include "scene/gltf_loader.h"
 #include "util/errors.h"
 #include "util/printable.h"
@@ -82,10 +82,10 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
         if (options.lightSamplerAuto) lightSampling.sampler = autoLightSampler(still);
     }
     // One scene (BVH, buffers), integrator and kernels for the sequence, updated in place per
-    // frame (render/frame_scene.h); rebuilt only when a frame changes what cannot be updated.
+    // frame (animation/frame_scene.h); rebuilt only when a frame changes what cannot be updated.
     FrameScene frameScene(context, lightSampling, options.sceneRebuildEachFrame);
     std::unique_ptr<Integrator> integrator;
-    // --photon-update: full retrace per frame, or the selective update (render/selective_frame_update.h).
+    // --photon-update: full retrace per frame, or the selective update (animation/selective_frame_update.h).
     std::unique_ptr<FrameUpdate> updateOwner;
     if (options.photonUpdateFull) {
         updateOwner = std::make_unique<FrameUpdate>();

@@ -1,7 +1,7 @@
 // `vkphoton render --frames FIRST:LAST`: an animated glTF scene rendered frame by frame
 // (docs/animation.md). The file is parsed once; each frame flattens the scene at its time,
 // rebuilds the BVH, uploads it and renders with photon maps built through the sequence's
-// FrameUpdate (render/frame_update.h).
+// FrameUpdate (animation/frame_update.h).
 #pragma once
 
 #include "app/commands.h"

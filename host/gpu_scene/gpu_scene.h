@@ -25,7 +25,7 @@ public:
     const SceneBuffers& buffers() const { return m_buffers; }
     double uploadSeconds() const { return m_uploadSeconds; }
     // Replaces the light-selection data (SceneArrays::lightCdf): --light-sampler photon's cells
-    // (render/light_cells.h). In the same buffer when it fits (returns true); else in a new one
+    // (lights/light_cells.h). In the same buffer when it fits (returns true); else in a new one
     // (returns false: kernels that bound the scene before must bind it again).
     bool replaceLightSelection(std::vector<float> data);
     // Per-frame rigid motion (docs/bvh.md): new object-to-world transforms of Scene::instances

@@ -173,7 +173,7 @@ SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling, const T
         a.lights.push_back(light);
     }
 
-    // The environment last (shaders/scene_access.glsl environmentLightIndex); its map's floats
+    // The environment last (shaders/render/scene_access.glsl environmentLightIndex); its map's floats
     // follow the textures' texels (appended below).
     std::vector<float> environmentData = environmentGpuData(scene.environment);
     if (scene.environment.present) {

@@ -1,6 +1,6 @@
 // The scene on the GPU: BVH-ordered triangles, BVH nodes, shading attributes, materials, lights
 // with their selection CDF, and textures. Bound at the bindings shared/kernels/scene.glsl names
-// (0..7) of every kernel that reads the scene (shaders/scene_access.glsl declares them).
+// (0..7) of every kernel that reads the scene (shaders/render/scene_access.glsl declares them).
 #pragma once
 
 #include <algorithm>
@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "bvh/scene_bvh.h"
-#include "gpu_scene/light_tree.h"
+#include "lights/light_tree.h"
 #include "gpu_scene/texture_atlas.h"
 #include "scene/scene.h"
 #include "shared/gpu_types.glsl"
@@ -56,7 +56,7 @@ std::vector<gpu::GpuTriangle> worldTriangles(const SceneArrays& arrays);
 // Le averaged over the emissive texture's texels the triangle reads (textured_emission.h);
 // point/spot: 4 pi * luminance(I); directional: luminance(E) * pi * r^2 of the scene's bounding
 // sphere) by default; `sampling` picks the light-selection mode next-event estimation uses and how
-// it samples triangles (gpu_scene/light_tree.h); the light BVH is built for every mode. Each emissive triangle's
+// it samples triangles (lights/light_tree.h); the light BVH is built for every mode. Each emissive triangle's
 // GpuTriangle.v1.w holds its light index (as a float), -1 elsewhere.
 // Textures are packed into an atlas within `textureLimits` (downscaled where needed: the
 // atlas's `downscaled` lists them; callers warn).
@@ -118,7 +118,7 @@ private:
     vk::Buffer m_tables;  // the BSDF's albedo tables (shared/bsdf_tables.glsl kBsdfTables), binding kSceneTablesBinding
     vk::Buffer m_instances;                          // GpuInstanceHeader + GpuInstance[] (docs/bvh.md)
     std::unique_ptr<vk::TextureArray> m_textureArray;
-    vk::BvhTexelViews m_bvhTexels;  // m_nodes and m_triangles as texel buffers (shaders/scene_geometry.glsl)
+    vk::BvhTexelViews m_bvhTexels;  // m_nodes and m_triangles as texel buffers (shaders/render/scene_geometry.glsl)
     // Throws std::logic_error when `selection` names another light sampler than the one the
     // scene's kernels are specialized for.
     void checkLightSampler(const std::vector<float>& selection) const;

@@ -3,7 +3,7 @@
 // arrays (shaderSampledImageArrayDynamicIndexing and descriptor indexing are false, at most 32
 // samplers per stage), so one image per texture cannot be chosen per ray; one array image can,
 // and is not bound by maxStorageBufferRange as the former texel buffer was. The shader reads texels
-// with texelFetch and applies the glTF sampler's wrap and filter itself (shaders/scene_access.glsl).
+// with texelFetch and applies the glTF sampler's wrap and filter itself (shaders/render/scene_access.glsl).
 // Textures the device cannot hold, or larger than --max-texture-size, are halved (2x2 box filter,
 // in linear light for sRGB textures) with a warning. A texture some view samples with mipmaps
 // (glTF minFilter) gets its chain of levels, made by the same filter, beside it in its rectangle

@@ -1,6 +1,6 @@
 // Light-selection weights of triangles with an emissive texture: the emission averaged over the
 // texels the triangle can read, so triangles whose texels are all black are not lights and
-// bright ones are chosen more often (issue 13).
+// bright ones are chosen more often.
 #pragma once
 
 #include <vector>

@@ -35,7 +35,7 @@ namespace {
 //   g. the 1/2.4 power encoding (negatives clamped to 0).
 // Here that pipeline is evaluated directly instead of through the LUT, in double precision.
 // Grey is untouched by every matrix (their rows sum to 1), so the grey ramp is exactly the
-// sigmoid; tests/view_transform_test.cpp compares it and some colours with the shipped LUT.
+// sigmoid; tests/image/view_transform_test.cpp compares it and some colours with the shipped LUT.
 
 // Colour-space matrices, row-major as the sources print them.
 glm::dmat3 rows(double a, double b, double c, double d, double e, double f, double g, double h, double i) {

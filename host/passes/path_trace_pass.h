@@ -1,4 +1,4 @@
-// Path tracing pass (shaders/pathtrace.comp; guided_pathtrace.comp with a guiding photon grid,
+// Path tracing pass (shaders/render/pathtrace.comp; guided_pathtrace.comp with a guiding photon grid,
 // guided_cached_pathtrace.comp with a guiding cache): reads the scene buffers (and the guide),
 // adds samples to the film (vec4 per pixel: RGB sum and sample count) and counts dropped
 // non-finite samples and traced rays. With the kPathFlagRaster* flags it also reads the raster

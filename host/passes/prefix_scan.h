@@ -1,4 +1,4 @@
-// Exclusive prefix sum of a uint buffer on the GPU (shaders/scan_blocks.comp, scan_add.comp):
+// Exclusive prefix sum of a uint buffer on the GPU (shaders/common/scan_blocks.comp, scan_add.comp):
 // blocks of kScanBlockSize items are scanned in workgroup memory, their totals are scanned the
 // same way (recursively), and the scanned totals are added back. Three levels cover 16 M items.
 #pragma once

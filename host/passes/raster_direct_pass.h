@@ -1,5 +1,5 @@
 // Raster direct light (Dmitriev et al. 2002, section 6.1): the shadow-volume mask passes
-// (shadow_volume_pass.h) followed per pass by the lighting pass (shaders/raster_direct.comp),
+// (shadow_volume_pass.h) followed per pass by the lighting pass (shaders/raster/raster_direct.comp),
 // which adds each light's BSDF-weighted contribution times its mask channel at the pixel centre's
 // visible point. Reads the scene buffers; writes `direct()` (vec4 per pixel, RGB radiance), the
 // first-vertex direct light of every raster-covered light for the path tracer to add to each sample.

@@ -12,7 +12,7 @@
 
 namespace vkp {
 
-// `keep` (per light of arrays.lights, may be null): lights marked false are left out (render/light_reach.h).
+// `keep` (per light of arrays.lights, may be null): lights marked false are left out (lights/light_reach.h).
 std::vector<gpu::GpuLight> buildRasterLights(const SceneArrays& arrays, uint32_t areaSamples,
                                              const std::vector<bool>* keep = nullptr);
 

@@ -3,7 +3,7 @@
 // every edge of it is shared by exactly two triangles that traverse it in opposite directions
 // (a closed, consistently oriented 2-manifold): only its silhouette edges need extruding. Any other
 // triangle (open boundary, edge of three or more triangles, flipped neighbour) falls back to a
-// volume of its own (shaders/shadow_volume_build.comp).
+// volume of its own (shaders/raster/shadow_volume_build.comp).
 #pragma once
 
 #include <vector>

@@ -12,7 +12,7 @@ constexpr VkFormat kMaskFormat = VK_FORMAT_R8G8B8A8_UNORM;
 
 // The scene as the raster pass sees it: alpha-tested triangles (glTF MASK/BLEND, v0.w != 0, whose
 // cut-outs only the traced rays see) collapsed to a point, so they neither write depth nor cast
-// shadow volumes; shaders/raster_direct.comp traces shadow rays where they matter.
+// shadow volumes; shaders/raster/raster_direct.comp traces shadow rays where they matter.
 std::vector<gpu::GpuTriangle> opaqueTriangles(std::vector<gpu::GpuTriangle> triangles) {
     for (gpu::GpuTriangle& t : triangles)
         if (t.v0.w != 0.0f) t.v1 = t.v2 = t.v0;

@@ -22,7 +22,7 @@
 namespace vkp {
 
 // World (homogeneous) to clip space for the compute camera's pixel grid: pixel centres land on the
-// camera rays of shaders/camera_and_lights.glsl. Reversed infinite depth: depth = near / view depth,
+// camera rays of shaders/render/camera_and_lights.glsl. Reversed infinite depth: depth = near / view depth,
 // so points at infinity (w = 0) get depth 0 and floats keep their precision far away.
 glm::mat4 rasterViewProjection(const gpu::GpuCamera& camera, float near);
 

@@ -1,6 +1,6 @@
 // Auxiliary images (--aov albedo,normal,depth): albedo and world-space normal of the first
 // surface without a delta lobe, as Open Image Denoise expects them, and depth in metres along the
-// camera's forward axis (shaders/aov.comp). Written as extra EXR channels named as pbrt-v4 and
+// camera's forward axis (shaders/render/aov.comp). Written as extra EXR channels named as pbrt-v4 and
 // Blender name them (docs/output.md).
 #pragma once
 

@@ -7,13 +7,21 @@
 #include <optional>
 
 #include "render/crop_window.h"
-#include "render/frame_update.h"
 #include "render/render_control.h"
 #include "scene/scene.h"
 #include "shared/gpu_types.glsl"
 
 namespace vkp {
 namespace vk { class Buffer; }
+class PhotonMapUpdate;  // photon/photon_map_update.h: an animation's photon-map update
+
+// Which frame of a sequence is being rendered.
+struct FrameUpdateInfo {
+    uint32_t frame = 0;       // the frame number (--frames FIRST:LAST)
+    double time = 0.0;        // seconds: frame / fps
+    bool firstFrame = true;   // the first frame of the sequence (or a still render)
+    uint64_t sceneGeneration = 0;  // changes when the frames loop rebuilt the scene (new buffers)
+};
 
 // Who computes the direct light at the first path vertex (--direct).
 enum class DirectLight {
@@ -54,9 +62,9 @@ struct FrameSettings {
     std::optional<Clock::time_point> timeLimitFrom;
     // --crop / --tile: render only this window of the width x height frame (render/crop_window.h).
     std::optional<CropWindow> crop;
-    // --frames: the sequence's photon-map update (render/frame_update.h) and which frame this is;
-    // null: a still render (the maps are built by PhotonMap::build).
-    FrameUpdate* photonUpdate = nullptr;
+    // --frames: the sequence's photon-map update (photon/photon_map_update.h) and which frame this
+    // is; null: a still render (the maps are built by PhotonMap::build).
+    PhotonMapUpdate* photonUpdate = nullptr;
     FrameUpdateInfo update;
 
     // Throws InputError naming the flag of a value out of range.
@@ -95,7 +103,7 @@ struct Frame {
     bool pixelCentres = false;
     RenderControl control;  // the stop flag and the deadline: long phases check it between chunks
     std::optional<CropWindow> crop;  // --crop / --tile: the window the camera passes compute
-    FrameUpdate* photonUpdate = nullptr;  // --frames: how photon maps are (re)built (render/frame_update.h)
+    PhotonMapUpdate* photonUpdate = nullptr;  // --frames: how photon maps are (re)built (photon/photon_map_update.h)
     FrameUpdateInfo update;               // which frame of the sequence
 
     uint64_t pixels() const { return uint64_t(width) * height; }

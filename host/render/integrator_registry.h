@@ -1,12 +1,15 @@
 // The integrators `--integrator` can name. Each kind brings a config that owns its settings,
-// registers its command-line options (one CLI11 option group) and builds the integrator. The
-// built-in kinds are listed in render/integrators/builtin.cpp, one line each; a program or a test
-// may add its own with registerIntegrator().
+// registers its command-line options and builds the integrator. Kinds of one family share one
+// config (photon and sppm read the same photon-map settings); each option group says which kinds
+// read it, so the command line refuses an option the chosen integrator would ignore. The built-in
+// kinds are registered by the command line (app/builtin_integrators.h); a program or a test may
+// add its own with registerIntegrator().
 #pragma once
 
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/frame.h"
@@ -18,11 +21,28 @@ namespace vkp {
 
 class GpuScene;
 
+// The render command's integrator options, grouped by the kinds that read them.
+class IntegratorOptions {
+public:
+    explicit IntegratorOptions(CLI::App& command) : m_command(command) {}
+    // A group of options (titled `title` in --help) that only the kinds `readers` read.
+    CLI::App& group(const std::string& title, std::vector<std::string> readers);
+    // Throws InputError naming the first option given on the command line that the kind `chosen`
+    // does not read, and the integrators that do.
+    void refuseUnread(const std::string& chosen) const;
+
+private:
+    CLI::App& m_command;
+    std::vector<std::pair<CLI::App*, std::vector<std::string>>> m_groups;
+};
+
 class IntegratorConfig {
 public:
     virtual ~IntegratorConfig() = default;
-    // Adds the integrator's own options to the render command (write them into this config).
-    virtual void addOptions(CLI::App& command) { (void)command; }
+    // Adds the family's options (write them into this config), each group naming its readers.
+    virtual void addOptions(IntegratorOptions& options) { (void)options; }
+    // The kind of this config's family the command line chose (before check and create).
+    virtual void choose(const std::string& kind) { (void)kind; }
     // Throws InputError naming the flag of a setting out of range; called before the scene loads.
     virtual void check() const {}
     // A line printed before the render starts (e.g. how many photon paths it traces); empty: none.
@@ -38,9 +58,15 @@ struct IntegratorKind {
     std::string name;     // the value of --integrator
     std::string summary;  // what it is, for --help
     std::function<std::unique_ptr<IntegratorConfig>()> makeConfig;
+    std::string family;   // kinds of one family share one config (made once); empty: the kind's name
+
+    const std::string& familyName() const { return family.empty() ? name : family; }
 };
 
-// The registered kinds: the built-in ones first (the first is the default), then added ones.
+// The default --integrator.
+inline const std::string kDefaultIntegrator = "path";
+
+// The registered kinds, in the order they were registered.
 const std::vector<IntegratorKind>& integratorKinds();
 // Adds (or, for a name already registered, replaces) a kind.
 void registerIntegrator(IntegratorKind kind);

@@ -10,7 +10,7 @@
 #include "gpu_scene/gpu_scene.h"
 #include "passes/raster_direct_pass.h"
 #include "render/frame.h"
-#include "render/light_reach.h"
+#include "lights/light_reach.h"
 #include "render/stats.h"
 
 namespace vkp {
@@ -19,7 +19,7 @@ class RasterDirectLight {
 public:
     // Runs the raster pass (shadow volumes, masks, lighting) when settings.direct is Raster.
     // With `reach` (--light-sampler photon), lights whose primary photons reach no cell the camera
-    // sees are left out of the pass (render/light_reach.h).
+    // sees are left out of the pass (lights/light_reach.h).
     RasterDirectLight(const GpuScene& scene, const FrameSettings& settings, const gpu::GpuCamera& camera,
                       const LightReach* reach = nullptr);
 

@@ -1,16 +1,27 @@
 // When a render should stop early: Ctrl-C/SIGTERM/SIGHUP (the stop flag) or --time-limit (the
 // deadline). The driver fills one per render (Frame::control); every long phase checks it
-// between bounded chunks of work: photon paths (render/photon_map), the guide, the sample loop.
+// between bounded chunks of work: photon paths (photon/photon_map), the guide, the sample loop.
 // A phase that stops keeps what it finished; the render still adds one sample, marked partial.
 #pragma once
 
 #include <atomic>
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
 #include "util/stopwatch.h"
 
 namespace vkp {
+
+// How far a render has come, for progress output.
+struct RenderProgress {
+    uint32_t samplesDone = 0;
+    uint32_t samplesTotal = 0;
+    double elapsedSeconds = 0.0;
+};
+
+using ProgressCallback = std::function<void(const RenderProgress&)>;
 
 struct RenderControl {
     const std::atomic<bool>* stop = nullptr;  // set by a signal handler

@@ -10,19 +10,13 @@
 #include <utility>
 
 #include "gpu_scene/gpu_scene.h"
-#include "render/light_cells.h"
+#include "lights/light_cells.h"
 #include "image/image.h"
 #include "render/frame.h"
 #include "render/integrator.h"
 #include "render/stats.h"
 
 namespace vkp {
-
-struct RenderProgress {
-    uint32_t samplesDone = 0;
-    uint32_t samplesTotal = 0;
-    double elapsedSeconds = 0.0;
-};
 
 struct RenderResult {
     ImageRgb image;
@@ -32,8 +26,6 @@ struct RenderResult {
     // whatever the integrator reports (e.g. "photons.*").
     Stats stats;
 };
-
-using ProgressCallback = std::function<void(const RenderProgress&)>;
 
 class Renderer {
 public:

@@ -8,7 +8,6 @@
 #include <string>
 
 #include "render/render_control.h"
-#include "render/renderer.h"
 
 namespace vkp {
 

@@ -13,7 +13,7 @@
 namespace vkp {
 namespace {
 
-// countTerminations (shaders/termination_counters.glsl) adds one slot per kind, written out.
+// countTerminations (shaders/common/termination_counters.glsl) adds one slot per kind, written out.
 static_assert(gpu::kTerminationKindCount == 3, "termination_counters.glsl: countTerminations lists every kind");
 
 struct Named {

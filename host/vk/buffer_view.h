@@ -1,5 +1,5 @@
 // Texel-buffer views of storage buffers: the BVH's nodes and triangles read as uniform texel
-// buffers (set gpu::kSceneGeometrySet, shaders/scene_geometry.glsl; docs/bvh.md).
+// buffers (set gpu::kSceneGeometrySet, shaders/render/scene_geometry.glsl; docs/bvh.md).
 #pragma once
 
 #include <algorithm>

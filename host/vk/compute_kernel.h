@@ -22,7 +22,7 @@ class Context;
 class TextureArray;
 
 // The scene's BVH nodes and triangles as uniform texel buffers (R32G32B32A32_UINT views of the
-// storage buffers), set gpu::kSceneGeometrySet (shaders/scene_geometry.glsl).
+// storage buffers), set gpu::kSceneGeometrySet (shaders/render/scene_geometry.glsl).
 struct SceneGeometryViews {
     VkBufferView nodes = VK_NULL_HANDLE;
     VkBufferView triangles = VK_NULL_HANDLE;
@@ -82,7 +82,7 @@ public:
     // throws.
     void record(VkCommandBuffer cmd, uint64_t groups, const void* push, uint32_t pushBytes,
                 uint32_t firstGroup = 0, bool rows = false) const;
-    static constexpr uint32_t kRowGroups = 32768;  // workgroups per row (shaders/item_index.glsl)
+    static constexpr uint32_t kRowGroups = 32768;  // workgroups per row (shaders/common/item_index.glsl)
     template <typename Push> void record(VkCommandBuffer cmd, uint32_t groups, const Push& push) const {
         record(cmd, groups, &push, sizeof(Push));
     }

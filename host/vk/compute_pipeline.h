@@ -25,7 +25,7 @@ class Context;
 // (shared/bvh_traverse.glsl), read the scene's textures or select lights (scene_access.glsl).
 bool usesSceneSpecialization(std::span<const uint32_t> spirv);
 // Whether SPIR-V declares gpu::kSingleSegmentId: kernels that bind segmented arrays
-// (shaders/segmented.glsl); vk::ComputeKernel picks that form per dispatch.
+// (shaders/common/segmented_arrays.glsl); vk::ComputeKernel picks that form per dispatch.
 bool usesSingleSegmentSpecialization(std::span<const uint32_t> spirv);
 
 class ComputePipeline {

@@ -27,7 +27,7 @@ public:
 
     // Records one invocation per item, in workgroups of K::kGroupSize (none when items is 0).
     // More workgroups than the device dispatches in x need K::kRowsOfGroups (the kernel numbers
-    // its items with itemIndex(), shaders/item_index.glsl): they go as rows of workgroups.
+    // its items with itemIndex(), shaders/common/item_index.glsl): they go as rows of workgroups.
     void record(VkCommandBuffer cmd, uint64_t items, const Push& push) const {
         m_kernel.record(cmd, groupCount(items, K::kGroupSize), &push, sizeof(Push), 0, kRows);
     }

@@ -24,8 +24,7 @@ struct KernelInterface {
 // and kSceneLightSamplerId. lavapipe runs both sides of every branch of a SIMD group, so code a scene
 // never needs (the instance entry in each traversal step, the alpha test after each trace, the
 // texture lookups of the shading, the light samplers the scene does not use) costs every ray
-// unless it is compiled out (issue 17,
-// docs/bvh.md "Specialized kernels"). The default keeps everything:
+// unless it is compiled out (docs/bvh.md "Specialized kernels"). The default keeps everything:
 // right for any scene. SceneBuffers::bindings() says what its scene has.
 struct SceneSpecialization {
     bool instances = true;   // the scene has a top level (instanceCount > 0)
@@ -33,7 +32,7 @@ struct SceneSpecialization {
     bool textures = true;    // some material has a texture (the scene's GpuTexture views)
     uint32_t lightSampler = 0xffffffffu;  // gpu::kLightSamplerPower/Bvh/Photon, or kLightSamplerAny (read the data)
     // The traversal reads nodes and triangles through the texel-buffer views of set
-    // gpu::kSceneGeometrySet (shaders/scene_geometry.glsl); false: through the storage buffers.
+    // gpu::kSceneGeometrySet (shaders/render/scene_geometry.glsl); false: through the storage buffers.
     bool bvhTexels = false;
     bool operator==(const SceneSpecialization&) const = default;
 };

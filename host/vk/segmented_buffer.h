@@ -1,6 +1,6 @@
 // An array of fixed-size elements too large for one storage buffer: segments of 2^shift elements,
 // each a buffer of its own, reached by shaders through a small table of their device addresses
-// (shaders/segmented.glsl: element i lives at segment i >> shift, index i & mask). Kernels bind
+// (shaders/common/segmented_arrays.glsl: element i lives at segment i >> shift, index i & mask). Kernels bind
 // the table like any storage buffer; segments are allocated as the array grows (reserve), and the
 // table, allocated once for the array's capacity, never moves, so bindings stay valid. Nothing
 // but the allocation limits bounds the array: maxStorageBufferRange applies to the table only.

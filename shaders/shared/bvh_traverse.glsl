@@ -1,5 +1,5 @@
 // BVH traversal, one source for the GPU (traceClosest and traceAny in every kernel) and the host
-// (closestHit and anyHit in host/bvh/bvh.cpp, which tests/bvh_test.cpp checks against brute force
+// (closestHit and anyHit in host/bvh/bvh.cpp, which tests/bvh/bvh_test.cpp checks against brute force
 // over every triangle), so the tests check the shaders' own traversal.
 //
 // The arrays are reached through BVH_NODE(i), BVH_TRIANGLE(i), BVH_INSTANCE(i) and
@@ -21,14 +21,14 @@
 // entries; the host build never makes a tree deeper than kBvhMaxDepth. A deeper tree overflows it:
 // the farther child is then skipped and kTerminationStackOverflow noted; a walk that ends any
 // other way than by running out of subtrees (lavapipe's loop budget, kBvhMaxSteps) notes that too
-// (shared/terminations.glsl), so the kernel can count the rays cut short.
+// (shared/termination_record.glsl), so the kernel can count the rays cut short.
 #ifndef VKP_BVH_TRAVERSE_GLSL
 #define VKP_BVH_TRAVERSE_GLSL
 #include "compat.glsl"
 #include "gpu_types.glsl"
 #include "intersect.glsl"
 #include "bvh_constants.glsl"
-#include "terminations.glsl"
+#include "termination_record.glsl"
 #include "kernels/scene.glsl"
 #ifdef __cplusplus
 #include <span>
@@ -69,7 +69,7 @@ struct BvhArrays {
 // defines it as glTF's alpha test (scene_access.glsl alphaPasses); the host traversal has no
 // materials, so every hit counts there. It is evaluated OUTSIDE the traversal's triangle loop, by
 // the trace wrappers below (lavapipe inlines it at every trace call site: inside the loop it cost
-// every triangle test of every scene, issue 17).
+// every triangle test of every scene).
 #ifndef BVH_ALPHA_TEST
 #define BVH_ALPHA_TEST(triangle, tri, b1, b2, org, dir) true
 #endif
@@ -78,7 +78,7 @@ struct BvhArrays {
 // the bound scene, vk::SceneSpecialization; true unless the scene has no instances, or no
 // alpha-tested triangle). lavapipe runs both sides of every branch for its whole SIMD group, so
 // the instance entry in every step and the alpha test's texture lookup after every trace cost each
-// ray even in scenes without them, unless compiled out (issue 17, docs/bvh.md). The host
+// ray even in scenes without them, unless compiled out (docs/bvh.md). The host
 // traversal keeps both.
 #ifdef __cplusplus
 constexpr bool kSceneHasInstances = true;
@@ -171,7 +171,7 @@ INLINE bool traverseBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMin, uint mi
     // nodes (and enters instances) until the node is a leaf or nothing is left; then the leaf's
     // triangles are tested and the next subtree popped. lavapipe runs every branch of a loop body
     // for its whole SIMD group, so in one loop with both branches (as before) every step paid a
-    // triangle test and a node pair; here a descent step pays only the node pair (issue 17).
+    // triangle test and a node pair; here a descent step pays only the node pair.
     // Each ray visits the same nodes in the same order as with one loop.
     for (; step < kBvhMaxSteps; ++step) {
         for (; step < kBvhMaxSteps && visit && (node.count == 0u || node.count == kBvhInstanceLeaf); ++step) {

@@ -10,7 +10,7 @@
 // sharing an edge could both reject a ray through it: watertightness needs unfused arithmetic.
 // On the host, clang is told so inside intersectTriangle; GCC (12, even with -std=c++20) fuses
 // whenever the target has FMA (-march=native, aarch64), so such host builds need
-// -ffp-contract=off. The x86-64 baseline has no FMA. tests/bvh_test.cpp catches a fused build:
+// -ffp-contract=off. The x86-64 baseline has no FMA. tests/bvh/bvh_test.cpp catches a fused build:
 // with -mfma and no contraction control, 396 of 20000 rays slip out of a closed mesh.
 #ifndef VKP_PRECISE
 #ifdef __cplusplus

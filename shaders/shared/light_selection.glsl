@@ -66,7 +66,7 @@ INLINE uint lightSelectionWord(LIGHT_SELECTION_PARAM uint i) {
     return floatBitsToUint(LIGHT_SELECTION(i));
 }
 
-// The scene's light sampler as a specialization constant (vk::SceneSpecialization; issue 17):
+// The scene's light sampler as a specialization constant (vk::SceneSpecialization):
 // lavapipe runs every branch of selectLight and selectLightPdf for the whole SIMD group, the light
 // tree's loops included, whatever the mode; a kernel compiled for the mode drops the others.
 // kLightSamplerAny (the default, and the host's): the mode word of the selection data decides.

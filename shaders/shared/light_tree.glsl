@@ -4,7 +4,7 @@
 // (a cone of half-angle theta_o around `axis`, plus the spread theta_e beyond it) and the total
 // power of the lights below it. The importance is an upper-bound-shaped estimate of what they
 // deliver to a point p with normal n: power * cos(theta') / distance^2 * cos(theta_i'), 0 only
-// where no light below the node can reach p's side. host/gpu_scene/light_tree.cpp builds the
+// where no light below the node can reach p's side. host/lights/light_tree.cpp builds the
 // tree; shared/light_selection.glsl walks it.
 #ifndef VKP_LIGHT_TREE_GLSL
 #define VKP_LIGHT_TREE_GLSL

@@ -11,7 +11,7 @@
 // dimensions shared their first bit up to a flip (|r| up to 0.6 over 64 samples). The Halton
 // sequence is not fit for a pixel's few samples: at 4-64 spp, dimensions in bases 29..131 see only
 // their first digit change, so pairs of them fall on lines, and a path's error per sample rises by
-// 1.4-1.6x over independent random numbers (docs/benchmarks.md, issue 17).
+// 1.4-1.6x over independent random numbers (docs/benchmarks.md).
 #ifndef VKP_OWEN_SOBOL_GLSL
 #define VKP_OWEN_SOBOL_GLSL
 #include "compat.glsl"

@@ -37,7 +37,7 @@ STATIC_ASSERT_SIZE(RadiancePhotonParams, 32)
 // the same k nearest, its irradiance) whatever photons arrive or leave elsewhere in the map: an
 // animation's frames that change a few photon paths change the radiance photons only near them.
 // ("Every stride-th in grid order" shifted the choice over the whole map whenever one photon was
-// added or removed, and the whole image flickered between frames; docs/benchmarks.md, issue 15.)
+// added or removed, and the whole image flickered between frames; docs/benchmarks.md.)
 INLINE bool radiancePhotonChosen(GpuPhoton p, uint stride) {
     uint h = hashCombine(hashCombine(pcgHash(p.direction), p.normal), p.powerRG);
     h = hashCombine(hashCombine(h, p.powerBFlags), p.lightIndex);

@@ -74,7 +74,7 @@ INLINE vec2 sampleSphericalTriangle(vec3 v0, vec3 v1, vec3 v2, vec3 p, vec2 u, O
     // inverse sine. With A = alpha + beta + gamma - pi from three asin-based angles (a small
     // difference of large angles for small triangles), lavapipe's samples landed up to 2 % of the
     // triangle away from the C++ build's, in 30 % of the harness's cases; this form cut that to
-    // 0.3 % (tests/light_selection_test.cpp, LightSelectionGpu). The cause is lavapipe's asin
+    // 0.3 % (tests/lights/light_selection_test.cpp, LightSelectionGpu). The cause is lavapipe's asin
     // precision (not measured on its own).
     float cosAlpha = clamp(-dot(nab, nca), -1.0f, 1.0f);
     float sinAlpha = length(cross(nab, nca));

@@ -1,4 +1,4 @@
-// sampleBsdf on the GPU for the chi-square test of tests/bsdf_test.cpp: one material and one
+// sampleBsdf on the GPU for the chi-square test of tests/shared/bsdf_test.cpp: one material and one
 // outgoing direction (BsdfSamplingCase), one sample per random triple; out = (wi, 1) or (0, 0) when
 // no lobe was sampled. The host bins the directions against pdfBsdf.
 #version 460

@@ -1,6 +1,6 @@
 // GPU side of the BVH test: traces each ray with traceClosest and traceAny
 // (shaders/shared/bvh_traverse.glsl); the host compares with closestHit/anyHit of host/bvh/bvh.h
-// (the same header compiled as C++), which tests/bvh_test.cpp checks against brute force.
+// (the same header compiled as C++), which tests/bvh/bvh_test.cpp checks against brute force.
 //
 // Host layouts (std430, all 4-byte scalars):
 //   binding 0  TestRay { vec4 origin (xyz, w = tMax); vec4 direction (xyz, w unused) }  32 B
@@ -44,9 +44,9 @@ layout(std430, set = 0, binding = kBvhTestInstanceBinding) readonly buffer Insta
 };
 layout(push_constant) uniform Push { uint rayCount; } push;
 
-#include "scene_geometry.glsl"  // texel-buffer reads when specialized for them (bvhTexels)
+#include "render/scene_geometry.glsl"  // texel-buffer reads when specialized for them (bvhTexels)
 #include "shared/bvh_traverse.glsl"
-#include "termination_counters.glsl"
+#include "common/termination_counters.glsl"
 
 void main() {
     uint i = gl_GlobalInvocationID.x;

@@ -1,4 +1,4 @@
-// The toy integrator of tests/integrator_seam_test.cpp (its interface: ConstantFilmKernel in
+// The toy integrator of tests/render/integrator_seam_render_test.cpp (its interface: ConstantFilmKernel in
 // test_kernels.glsl): adds `sampleCount` samples of a constant radiance to every film pixel.
 #version 460
 #extension GL_GOOGLE_include_directive : require

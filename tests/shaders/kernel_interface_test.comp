@@ -1,4 +1,4 @@
-// The kernel of tests/kernel_interface_test.cpp: its interface (InterfaceTestKernel,
+// The kernel of tests/vk/kernel_interface_test.cpp: its interface (InterfaceTestKernel,
 // test_kernels.glsl) is checked against this shader's SPIR-V when the kernel is created, and the
 // test also tells it interfaces that disagree (push constants, bindings, workgroup size).
 #version 460

@@ -1,5 +1,5 @@
 // The light sampler's shared functions as the GPU/C++ harness runs them
-// (tests/shaders/light_selection_test.comp against the C++ build, tests/light_selection_test.cpp):
+// (tests/shaders/light_selection_test.comp against the C++ build, tests/lights/light_selection_test.cpp):
 // per input, one next-event light choice at (p, n) with its pdf, selectLightPdf of the chosen light
 // and of another one, and one solid-angle sample of a triangle with its pdf. The GLSL includer
 // declares lightCdf[] and lights[] first (shared/light_selection.glsl).

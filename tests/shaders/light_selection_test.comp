@@ -1,5 +1,5 @@
 // Light sampler harness kernel: evaluateLightHarness (light_selection_harness.glsl) for `count`
-// inputs over the scene's light-selection data; tests/light_selection_test.cpp runs the same code
+// inputs over the scene's light-selection data; tests/lights/light_selection_test.cpp runs the same code
 // compiled as C++ and compares.
 #version 460
 #extension GL_GOOGLE_include_directive : require

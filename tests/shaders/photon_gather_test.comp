@@ -1,5 +1,5 @@
-// Test kernel for shaders/photon_gather.glsl: runs a fixed-radius gather and a k-nearest gather
-// for each query; tests/photon_grid_test.cpp compares both with brute force on the host.
+// Test kernel for shaders/photon/photon_gather.glsl: runs a fixed-radius gather and a k-nearest gather
+// for each query; tests/photon/photon_grid_test.cpp compares both with brute force on the host.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -8,7 +8,7 @@
 #include "shared/bsdf.glsl"
 #include "test_kernels.glsl"
 #define PHOTON_GRID_BINDING kGatherTestGridBinding
-#include "photon_gather.glsl"
+#include "photon/photon_gather.glsl"
 
 layout(local_size_x = kTestGroupSize) in;
 

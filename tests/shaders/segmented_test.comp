@@ -1,11 +1,11 @@
 // The kernel of PhotonMapSegmentsTest.KernelsOfOneSegmentArraysIndexItDirectly: reads and writes a
-// segmented array through UINT_AT and says which form of shaders/segmented.glsl ran.
+// segmented array through UINT_AT and says which form of shaders/common/segmented_arrays.glsl ran.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
 #define VKP_NO_BSDF_TABLES  // evaluates no BSDF (test_kernels.glsl includes it for its types)
 #include "test_kernels.glsl"
-#include "segmented.glsl"
+#include "common/segmented_arrays.glsl"
 
 layout(local_size_x = kTestGroupSize) in;
 SEGMENTED_ARRAY(kSegmentedTestArrayBinding, Array, array);

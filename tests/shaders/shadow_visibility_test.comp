@@ -9,10 +9,10 @@
 
 #define VKP_BSDF_TABLES_BINDING kSceneTablesBinding  // as scene_access.glsl: the scene's tables
 #include "test_kernels.glsl"
-#include "scene_access.glsl"
+#include "render/scene_access.glsl"
 #include "shared/halton.glsl"
-#include "camera_and_lights.glsl"
-#include "raster_light_access.glsl"
+#include "render/camera_and_lights.glsl"
+#include "raster/raster_light_access.glsl"
 
 layout(local_size_x = kTestGroupSize) in;
 

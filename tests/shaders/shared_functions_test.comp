@@ -1,5 +1,5 @@
 // Shader unit harness kernel: evaluates one shared function (chosen by `function`) for `count`
-// inputs. tests/shared_functions_test.cpp runs the same code compiled as C++ and compares.
+// inputs. tests/shared/shared_functions_test.cpp runs the same code compiled as C++ and compares.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 

@@ -81,7 +81,7 @@ struct InterfaceTestParams {
 };
 STATIC_ASSERT_SIZE(InterfaceTestParams, 24)
 
-// constant_film.comp, the toy integrator of tests/integrator_seam_test.cpp: adds sampleCount
+// constant_film.comp, the toy integrator of tests/render/integrator_seam_render_test.cpp: adds sampleCount
 // samples of `radiance` to each of `pixels` film entries (vec4: RGB sum, sample count).
 const uint kConstantFilmBinding = 0u;
 struct ConstantFilmParams {
@@ -95,7 +95,7 @@ STATIC_ASSERT_SIZE(ConstantFilmParams, 32)
 
 // segmented_test.comp: reads elements [0, count) of a segmented array of uints through UINT_AT,
 // writes each to outputs[1 + i] and stores it back plus one; outputs[0] = the kSingleSegment the
-// dispatch was compiled with (shaders/segmented.glsl).
+// dispatch was compiled with (shaders/common/segmented_arrays.glsl).
 const uint kSegmentedTestArrayBinding = 0u;
 const uint kSegmentedTestOutputBinding = 1u;
 struct SegmentedTestParams {

@@ -1,5 +1,5 @@
 // Interface of the photon compaction kernels: compact_mark.comp, compact_scatter.comp and
-// compact_advance.comp share one layout (shaders/compact.glsl; host/passes/photon_compaction.h).
+// compact_advance.comp share one layout (shaders/photon/compact.glsl; host/photon/photon_compaction.h).
 #ifndef VKP_KERNELS_COMPACTION_GLSL
 #define VKP_KERNELS_COMPACTION_GLSL
 #include "shared/compat.glsl"

@@ -1,5 +1,5 @@
 // Interface of the deposition kernels: photon_deposit.comp and deposit_redistribute.comp
-// (host/passes/photon_deposit.h).
+// (host/photon/photon_deposit.h).
 #ifndef VKP_KERNELS_DEPOSIT_GLSL
 #define VKP_KERNELS_DEPOSIT_GLSL
 #include "shared/compat.glsl"

@@ -1,6 +1,6 @@
 // Interface of the photon-grid build kernels: grid_count.comp, grid_scatter.comp,
-// grid_sort_cells.comp and grid_copy.comp share one layout (shaders/grid_build.glsl;
-// host/passes/photon_grid.h).
+// grid_sort_cells.comp and grid_copy.comp share one layout (shaders/photon/grid_build_bindings.glsl;
+// host/photon/photon_grid.h).
 #ifndef VKP_KERNELS_GRID_BUILD_GLSL
 #define VKP_KERNELS_GRID_BUILD_GLSL
 #include "shared/compat.glsl"

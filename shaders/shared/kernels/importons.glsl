@@ -1,5 +1,5 @@
 // Interface of the importon kernels: importon_trace.comp, importance_splat.comp,
-// importance_lookup.comp and importon_importance.comp (host/passes/importon_trace_pass.h,
+// importance_lookup.comp and importon_importance.comp (host/photon/importon_trace_pass.h,
 // importance_splat_pass.h, importance_lookup_pass.h).
 #ifndef VKP_KERNELS_IMPORTONS_GLSL
 #define VKP_KERNELS_IMPORTONS_GLSL

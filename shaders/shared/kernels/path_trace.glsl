@@ -1,4 +1,4 @@
-// Interface of the path tracer kernels (shaders/path_tracer.glsl: pathtrace.comp,
+// Interface of the path tracer kernels (shaders/render/path_tracer.glsl: pathtrace.comp,
 // guided_pathtrace.comp, guided_cached_pathtrace.comp; host/passes/path_trace_pass.h).
 #ifndef VKP_KERNELS_PATH_TRACE_GLSL
 #define VKP_KERNELS_PATH_TRACE_GLSL

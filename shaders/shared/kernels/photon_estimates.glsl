@@ -1,9 +1,9 @@
 // Interface of the photon integrator's camera-side kernels: visible_points.comp and the
 // estimates at the visible points, caustic_estimate.comp, final_gather.comp, sppm_update.comp,
 // with radiance_photons.comp, which precomputes what final gathers read
-// (host/passes/visible_point_pass.h, caustic_estimate_pass.h, final_gather_pass.h,
+// (host/photon/visible_point_pass.h, caustic_estimate_pass.h, final_gather_pass.h,
 // sppm_update_pass.h, radiance_photons.h). A grid binding holds the photon grid's cell starts and
-// the next binding its photons (shaders/photon_gather.glsl).
+// the next binding its photons (shaders/photon/photon_gather.glsl).
 #ifndef VKP_KERNELS_PHOTON_ESTIMATES_GLSL
 #define VKP_KERNELS_PHOTON_ESTIMATES_GLSL
 #include "shared/compat.glsl"

@@ -1,4 +1,4 @@
-// Interface of photon_trace.comp (host/passes/photon_trace_pass.h).
+// Interface of photon_trace.comp (host/photon/photon_trace_pass.h).
 #ifndef VKP_KERNELS_PHOTON_TRACE_GLSL
 #define VKP_KERNELS_PHOTON_TRACE_GLSL
 #include "shared/compat.glsl"

@@ -1,5 +1,5 @@
 // The scene's storage buffers, bound at the same bindings of every kernel that reads the scene
-// (shaders/scene_access.glsl declares them; host/gpu_scene/scene_buffers.h uploads them). A
+// (shaders/render/scene_access.glsl declares them; host/gpu_scene/scene_buffers.h uploads them). A
 // kernel's own buffers follow from kSceneBindingCount on.
 #ifndef VKP_KERNELS_SCENE_GLSL
 #define VKP_KERNELS_SCENE_GLSL
@@ -27,7 +27,7 @@ const uint kSceneHasAlphaTestId = 1u;
 const uint kSceneHasTexturesId = 2u;
 const uint kSceneLightSamplerId = 3u;  // uint: kLightSamplerPower/Bvh/Photon, or kLightSamplerAny
 // bool, default false: the traversal reads nodes and triangles through the texel-buffer views of
-// set kSceneGeometrySet instead of the storage buffers (shaders/scene_geometry.glsl, issue 17).
+// set kSceneGeometrySet instead of the storage buffers (shaders/render/scene_geometry.glsl).
 const uint kSceneBvhTexelsId = 4u;
 
 // The textures: one RGBA8 2-D array image (host/gpu_scene/texture_atlas.h), read with texelFetch

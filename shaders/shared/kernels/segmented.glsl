@@ -1,8 +1,8 @@
-// Segmented arrays (host/vk/segmented_buffer.h, shaders/segmented.glsl): the specialization
+// Segmented arrays (host/vk/segmented_buffer.h, shaders/common/segmented_arrays.glsl): the specialization
 // constant that says every segmented array a kernel binds has one segment. vk::ComputeKernel picks
 // the pipeline per dispatch from the tables it has bound (SegmentedBuffer::segmentsAddressedBy);
 // true makes PHOTON_AT / UINT_AT index segment 0 directly, without the table's shift and mask
-// (issue 17, docs/benchmarks.md "One-segment maps").
+// (docs/benchmarks.md "One-segment maps").
 #ifndef VKP_KERNELS_SEGMENTED_GLSL
 #define VKP_KERNELS_SEGMENTED_GLSL
 #include "shared/compat.glsl"

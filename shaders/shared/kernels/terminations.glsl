@@ -1,8 +1,8 @@
 // Silent terminations: work that a bound ended without its own condition being met, counted on
 // the GPU so the host can warn (host/render/terminations.h; docs/testing.md). Every kernel that
 // traverses the BVH or loops over data-dependent ranges notes what happened to it
-// (shared/terminations.glsl: noteTermination) and adds one per affected item at the end of the
-// item (shaders/termination_counters.glsl: countTerminations). The counter buffer is the same
+// (shared/termination_record.glsl: noteTermination) and adds one per affected item at the end of the
+// item (shaders/common/termination_counters.glsl: countTerminations). The counter buffer is the same
 // for every kernel: set kTerminationSet, binding kTerminationBinding, bound by vk::ComputeKernel
 // to the context's buffer, so no kernel's own bindings change.
 #ifndef VKP_KERNELS_TERMINATIONS_GLSL

@@ -1,0 +1,28 @@
+// Final gather pass (shaders/photon/final_gather.comp): reads the scene, the visible points and a photon
+// grid (the global map's, or the radiance photons'), adds one gather ray's share of the indirect
+// light to each pixel's film entry (vec4: RGB sum, sample count).
+#pragma once
+
+#include "gpu_scene/scene_buffers.h"
+#include "photon/photon_grid.h"
+#include "shared/kernels/photon_estimates.glsl"
+#include "shared/photon_render.glsl"
+#include "vk/buffer.h"
+#include "vk/kernel.h"
+
+namespace vkp {
+
+class FinalGatherPass {
+public:
+    FinalGatherPass(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& film,
+                    const vk::Buffer& visiblePoints, const PhotonGrid& grid);
+
+    // One dispatch over params.width * params.height pixels (one gather ray: params.rayIndex).
+    // `pixels`: the window of pixels to compute (--tile, --crop), all by default.
+    void record(VkCommandBuffer cmd, const gpu::FinalGatherParams& params, vk::ItemRange pixels = {}) const;
+
+private:
+    vk::Kernel<gpu::FinalGatherKernel> m_kernel;
+};
+
+}  // namespace vkp

@@ -1,0 +1,286 @@
+#include "photon/photon_integrator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "photon/deposition.h"
+#include "photon/photon_map_update.h"
+#include "photon/progressive_photon_integrator.h"
+#include "shared/kernels/photon_trace.glsl"
+#include "util/errors.h"
+#include "util/stopwatch.h"
+#include "vk/context.h"
+
+namespace vkp {
+namespace {
+
+// The global map's k-nearest estimates search up to this many times the radius that holds k
+// photons at the map's mean density (cells are that radius wide: two rings of cells are visited).
+constexpr float kGlobalRadiusFactor = 2.0f;
+constexpr uint32_t kMaxSpecularDepth = 16;
+
+}  // namespace
+
+gpu::VisiblePointParams visiblePointParams(const Frame& frame, uint32_t lightCount) {
+    gpu::VisiblePointParams params{};
+    params.camera = frame.gpuCamera;
+    params.width = frame.width;
+    params.height = frame.height;
+    params.seed = frame.seed;
+    params.maxSpecularDepth = kMaxSpecularDepth;
+    params.lightCount = lightCount;
+    params.flags = frame.cameraPathFlags();
+    return params;
+}
+
+void requireLightPower(const GpuScene& scene) {
+    if (!(scene.arrays().totalLightPower > 0.0))
+        throw InputError("the scene's lights emit no power: no photons to trace");
+}
+
+void reportMapBuild(Stats& stats, const PhotonMapStats& map) {
+    stats.add("photons.pathsTraced", map.traced.emitted);
+    stats.add("photons.dropped", map.dropped);
+    stats.add("photons.seconds", map.traceSeconds + map.gridSeconds);
+}
+
+PhotonIntegrator::PhotonIntegrator(const GpuScene& scene, const PhotonIntegratorSettings& settings)
+    : m_scene(scene), m_settings(settings) {
+    m_settings.check();
+    requireLightPower(scene);
+    m_radius = m_settings.radiusFor(scene.scene());
+}
+
+// Pass 1: the importons (unless every photon is kept) and the photon maps. The global map's
+// search radius follows its density: the radius of a disk holding k photons if they spread
+// evenly over the scene's surfaces (with importance deposition, the density where p = 1).
+void PhotonIntegrator::buildMaps(const Frame& frame) {
+    const PhotonIntegratorSettings& p = m_settings;
+    const DepositOptions& deposit = p.deposit;
+    vk::Context& context = m_scene.context();
+    m_importons = makeImportonMap(m_scene, frame, deposit);
+    reportImportons(m_stats, m_importons.get());
+    // Keller & Wald's (N, q): N paths for the caustic map, the first q N of them for the global one.
+    const bool splitByQ = p.q > 0.0f;
+    const uint32_t globalPaths =
+        splitByQ ? std::max(1u, uint32_t(std::ceil(double(p.q) * p.globalPaths))) : p.globalPaths;
+    const uint32_t causticPaths = splitByQ ? p.globalPaths : p.causticPaths;
+    PhotonMapSettings globalSettings;
+    globalSettings.paths = globalPaths;
+    globalSettings.maxDeposits = p.maxDeposits;
+    globalSettings.seed = frame.seed;
+    globalSettings.deposit = depositSettings(deposit, deposit.mode, m_importons.get());
+    globalSettings.control = &frame.control;
+    globalSettings.segmentShift = p.mapSegmentShift;
+    const double area = sceneSurfaceArea(m_scene.arrays());
+    const uint32_t k = p.gatherK;
+    globalSettings.cellSizeFor = [k, area](uint64_t photons) { return evenSpreadRadius(k, photons, area); };
+    if (deposit.mode == DepositMode::Density) {
+        // Rounds decide against cells of the required density; the stored density is at most
+        // the one of all deposits (the even-spread radius of the candidates).
+        globalSettings.cellSize = densityCellSize(deposit, k, *m_importons);
+        globalSettings.cellSizeFor = [k, area, densityCell = globalSettings.cellSize](uint64_t photons) {
+            return std::max(densityCell, evenSpreadRadius(k, photons, area));
+        };
+    }
+    m_globalMap = std::make_unique<PhotonMap>(context, m_scene.scene(), m_scene.arrays(), m_scene.buffers(),
+                                              globalSettings);
+    const PhotonMapStats globalStats = buildFramePhotonMap(frame, *m_globalMap, 0);
+    m_stopReason = globalStats.stopReason;
+    m_globalCellSize = globalStats.cellSize;
+    reportMapBuild(m_stats, globalStats);
+    m_stats.set("photons.globalStored", globalStats.stored);
+    m_stats.set("photons.globalTruncated", globalStats.traced.truncated);
+    m_stats.set("photons.globalSampled", globalStats.traced.sampled);
+    // Paths cut at kPhotonMaxBounces lose the light they would still carry (a path with more
+    // deposits than --max-deposits keeps a reweighted sample of them: unbiased, a little noisier).
+    if (globalStats.traced.emitted > 0 &&
+        double(globalStats.traced.truncated) > 0.01 * double(globalStats.traced.emitted))
+        m_stats.note(fmt::format("{:.1f} % of the global map's photon paths were cut at {} bounces; the light they "
+                                 "would still carry is lost",
+                                 100.0 * double(globalStats.traced.truncated) / double(globalStats.traced.emitted),
+                                 gpu::kPhotonMaxBounces));
+    m_stats.set("photons.globalDeposits", globalStats.candidates);
+    m_stats.add("photons.mapBytes", m_globalMap->bytes());
+
+    m_causticMap.reset();
+    if (causticPaths > 0) {
+        PhotonMapSettings causticSettings;
+        causticSettings.paths = causticPaths;
+        causticSettings.maxDeposits = 1;  // a path's first caustic photon (PhotonSettings::requiredFlags)
+        causticSettings.seed = frame.seed;
+        causticSettings.requiredFlags = gpu::kPhotonCaustic;
+        causticSettings.cellSize = 2.0f * m_radius;
+        causticSettings.control = &frame.control;
+        causticSettings.segmentShift = p.mapSegmentShift;
+        // Caustics are seen directly, where density control's path importance does not reach:
+        // they are deposited by importance in that mode too.
+        causticSettings.deposit = depositSettings(
+            deposit, deposit.mode == DepositMode::Density ? DepositMode::Importance : deposit.mode, m_importons.get());
+        m_causticMap = std::make_unique<PhotonMap>(context, m_scene.scene(), m_scene.arrays(), m_scene.buffers(),
+                                                   causticSettings);
+        // Split by q, the global map's paths are the caustic map's first; else fresh Halton indices.
+        const PhotonMapStats causticStats = buildFramePhotonMap(frame, *m_causticMap, splitByQ ? 0 : p.globalPaths);
+        reportMapBuild(m_stats, causticStats);
+        if (m_stopReason.empty()) m_stopReason = causticStats.stopReason;
+        m_stats.set("photons.causticStored", causticStats.stored);
+        m_stats.set("photons.causticDeposits", causticStats.candidates);
+        m_stats.add("photons.mapBytes", m_causticMap->bytes());
+    }
+
+    // Final gathers read precomputed radiance photons unless told to estimate at every hit.
+    m_radiancePhotons.reset();
+    const float globalRadius = kGlobalRadiusFactor * m_globalCellSize;
+    // The radiance-photon pass is one dispatch over the map (seconds per million photons on
+    // lavapipe) that cannot stop half-way; a render already told to stop skips it, and its final
+    // gathers estimate at every hit instead.
+    const bool stopped = frame.control.shouldStop();
+    if (stopped && p.gatherRays > 0 && p.radiancePhotonStride > 0)
+        m_stats.note("stopped before the radiance photons: final gathers estimate at every hit");
+    if (p.gatherRays > 0 && p.radiancePhotonStride > 0 && globalStats.stored > 0 && !stopped) {
+        const auto start = Clock::now();
+        m_radiancePhotons = std::make_unique<RadiancePhotons>(
+            context, m_globalMap->grid(), static_cast<uint32_t>(globalStats.stored), m_globalMap->photonPower(),
+            p.radiancePhotonStride, p.gatherK, globalRadius);
+        context.submitAndWait([&](VkCommandBuffer cmd) { m_radiancePhotons->record(cmd); });
+        m_stats.add("photons.seconds", secondsSince(start));
+        m_stats.add("photons.mapBytes", m_radiancePhotons->bytes());
+    }
+}
+
+void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
+    const PhotonIntegratorSettings& p = m_settings;
+    vk::Context& context = m_scene.context();
+    m_stats = Stats();
+    m_window = frame.pixelRange();
+    buildMaps(frame);
+    const float globalRadius = kGlobalRadiusFactor * m_globalCellSize;
+    const PhotonGrid& gatherGrid = m_radiancePhotons ? m_radiancePhotons->grid() : m_globalMap->grid();
+
+    // Pass 2's passes: visible points, caustics and final gathers per camera sample.
+    m_points = std::make_unique<vk::Buffer>(context, "visible points", frame.pixels() * sizeof(gpu::GpuVisiblePoint),
+                                            vk::kStorageUsage);
+    m_visiblePass = std::make_unique<VisiblePointPass>(context, m_scene.buffers(), film.sums(), *m_points,
+                                                       *frame.rasterDirect);
+    m_gatherPass = std::make_unique<FinalGatherPass>(context, m_scene.buffers(), film.sums(), *m_points, gatherGrid);
+    m_causticPass.reset();
+    if (m_causticMap)
+        m_causticPass = std::make_unique<CausticEstimatePass>(context, m_scene.buffers(), film.sums(), *m_points,
+                                                              m_causticMap->grid());
+
+    m_visibleParams = visiblePointParams(frame, m_scene.buffers().lightCount());
+    m_causticParams = {};
+    if (m_causticMap) m_causticParams.grid = m_causticMap->grid().view(m_causticMap->photonPower());
+    m_causticParams.width = frame.width;
+    m_causticParams.height = frame.height;
+    m_causticParams.radius = m_radius;
+    m_causticParams.coneK = p.coneK;
+    m_gatherParams = {};
+    // Radiance photons carry watts per square metre: their power unit is 1.
+    m_gatherParams.grid = m_radiancePhotons ? gatherGrid.view(1.0f) : gatherGrid.view(m_globalMap->photonPower());
+    m_gatherParams.radianceLookup = m_radiancePhotons ? 1u : 0u;
+    m_gatherParams.lookupRadius = m_globalCellSize;  // one ring of cells: several radiance photons
+    m_gatherParams.width = frame.width;
+    m_gatherParams.height = frame.height;
+    m_gatherParams.seed = frame.seed;
+    m_gatherParams.gatherRays = p.gatherRays;
+    m_gatherParams.k = p.gatherK;
+    m_gatherParams.maxRadius = globalRadius;
+    m_gatherParams.maxSpecularDepth = kMaxSpecularDepth;
+
+    m_stats.set("settings.photon.radius", m_radius);
+    m_stats.set("settings.photon.globalRadius", globalRadius);
+}
+
+void PhotonIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) {
+    for (uint32_t sample = first; sample < first + count; ++sample) {
+        m_visibleParams.sampleIndex = sample;
+        m_visiblePass->record(cmd, m_visibleParams, m_window);
+        vk::computeBarrier(cmd);
+        if (m_causticPass) {
+            m_causticPass->record(cmd, m_causticParams, m_window);
+            vk::computeBarrier(cmd);
+        }
+        // One dispatch per gather ray keeps each invocation's loops within lavapipe's limit.
+        m_gatherParams.sampleIndex = sample;
+        for (uint32_t ray = 0; ray < std::max(1u, m_settings.gatherRays); ++ray) {
+            m_gatherParams.rayIndex = ray;
+            m_gatherPass->record(cmd, m_gatherParams, m_window);
+            vk::computeBarrier(cmd);
+        }
+    }
+}
+
+void PhotonIntegrator::report(Stats& stats) const {
+    m_settings.report(stats);
+    stats.merge(m_stats);
+    reportPhotonSummary(stats);
+}
+
+void reportPhotonSummary(Stats& stats) {
+    stats.note(fmt::format("photon maps: {} global and {} caustic photons from {} paths in {:.2f} s ({:.1f} MB); "
+                           "radius {:.4g}",
+                           stats.getOr<uint64_t>("photons.globalStored", 0),
+                           stats.getOr<uint64_t>("photons.causticStored", 0),
+                           stats.getOr<uint64_t>("photons.pathsTraced", 0), stats.getOr<double>("photons.seconds", 0.0),
+                           stats.getOr<double>("photons.mapBytes", 0.0) / 1048576.0,
+                           stats.getOr<double>("settings.photon.radius", 0.0)));
+    if (stats.getOr<std::string>("photons.deposit", "all") != "all") {
+        const auto share = [](uint64_t kept, uint64_t deposited) { return deposited ? 100.0 * kept / deposited : 0.0; };
+        const auto global = stats.getOr<uint64_t>("photons.globalStored", 0);
+        const auto globalDeposits = stats.getOr<uint64_t>("photons.globalDeposits", 0);
+        const auto caustic = stats.getOr<uint64_t>("photons.causticStored", 0);
+        const auto causticDeposits = stats.getOr<uint64_t>("photons.causticDeposits", 0);
+        stats.note(fmt::format("deposit {}: kept {} of {} global deposits ({:.1f} %), {} of {} caustic ({:.1f} %); "
+                               "{} importons ({:.1f} MB), f = {:.4g}",
+                               stats.get<std::string>("photons.deposit"), global, globalDeposits,
+                               share(global, globalDeposits), caustic, causticDeposits, share(caustic, causticDeposits),
+                               stats.getOr<uint64_t>("photons.importonsStored", 0),
+                               stats.getOr<double>("photons.importonBytes", 0.0) / 1048576.0,
+                               stats.getOr<double>("photons.importanceScale", 0.0)));
+    }
+    if (const auto dropped = stats.getOr<uint64_t>("photons.dropped", 0); dropped > 0)
+        stats.warn(fmt::format("{} photon(s) did not fit their map: fewer paths or --max-deposits would keep all",
+                               dropped));
+}
+
+namespace {
+
+// The photon family's one config: photon and sppm read the same photon-map settings.
+class PhotonFamilyConfig : public IntegratorConfig {
+public:
+    void addOptions(IntegratorOptions& options) override { m_settings.addOptions(options); }
+    void choose(const std::string& kind) override { m_settings.progressive = kind == "sppm"; }
+    void check() const override { m_settings.check(); }
+    std::string startMessage(const FrameSettings& frame) const override {
+        const PhotonIntegratorSettings& p = m_settings;
+        if (p.progressive)
+            return fmt::format("tracing {} photon paths ({} per sample) ...",
+                               uint64_t(p.globalPaths) * frame.samplesPerPixel, p.globalPaths);
+        return fmt::format("tracing {} photon paths ...", uint64_t(p.globalPaths) + p.causticPaths);
+    }
+    std::unique_ptr<Integrator> create(const GpuScene& scene) const override {
+        if (m_settings.progressive) return std::make_unique<ProgressivePhotonIntegrator>(scene, m_settings);
+        return std::make_unique<PhotonIntegrator>(scene, m_settings);
+    }
+
+private:
+    PhotonIntegratorSettings m_settings;
+};
+
+}  // namespace
+
+IntegratorKind photonIntegratorKind() {
+    return {"photon", "photon mapping: a caustic map and final gathers from the global map, Jensen 1996",
+            [] { return std::make_unique<PhotonFamilyConfig>(); }, "photon"};
+}
+
+IntegratorKind sppmIntegratorKind() {
+    return {"sppm", "stochastic progressive photon mapping, Hachisuka & Jensen 2009 (--progressive)",
+            [] { return std::make_unique<PhotonFamilyConfig>(); }, "photon"};
+}
+
+}  // namespace vkp

@@ -1,0 +1,76 @@
+// The photon integrator (--integrator photon): Jensen's two-pass method (shared/papers/004) on the
+// GPU. prepare() traces the global and caustic photon maps (photon/photon_map.h), after the
+// importon pass when deposition is importance-driven. Per camera sample: visible points behind
+// delta bounces with emission and next-event direct light (visible_points.comp), caustics from
+// the caustic map (caustic_estimate.comp), and indirect light by a final gather into the global
+// map (final_gather.comp).
+#pragma once
+
+#include <memory>
+
+#include "gpu_scene/gpu_scene.h"
+#include "photon/radiance_photons.h"
+#include "photon/caustic_estimate_pass.h"
+#include "photon/final_gather_pass.h"
+#include "photon/visible_point_pass.h"
+#include "photon/importon_map.h"
+#include "render/integrator.h"
+#include "render/integrator_registry.h"
+#include "photon/photon_settings.h"
+#include "photon/photon_map.h"
+#include "shared/photon_render.glsl"
+
+namespace vkp {
+
+class PhotonIntegrator : public Integrator {
+public:
+    // Throws InputError for settings out of range or a scene whose lights emit nothing.
+    PhotonIntegrator(const GpuScene& scene, const PhotonIntegratorSettings& settings);
+
+    std::string name() const override { return "photon"; }
+    void prepare(const Frame& frame, const Film& film) override;
+    uint32_t maxSamplesPerBatch() const override { return 64; }
+    void recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) override;
+    std::optional<std::string> stoppedEarly() const override {
+        return m_stopReason.empty() ? std::nullopt : std::optional<std::string>(m_stopReason);
+    }
+    void report(Stats& stats) const override;
+
+private:
+    void buildMaps(const Frame& frame);
+
+    const GpuScene& m_scene;
+    PhotonIntegratorSettings m_settings;
+    float m_radius;
+    Stats m_stats;  // of the last prepare()
+    std::unique_ptr<ImportonMap> m_importons;
+    std::unique_ptr<PhotonMap> m_globalMap;
+    std::unique_ptr<PhotonMap> m_causticMap;
+    std::unique_ptr<RadiancePhotons> m_radiancePhotons;
+    std::unique_ptr<vk::Buffer> m_points;
+    std::unique_ptr<VisiblePointPass> m_visiblePass;
+    std::unique_ptr<FinalGatherPass> m_gatherPass;
+    std::unique_ptr<CausticEstimatePass> m_causticPass;
+    gpu::VisiblePointParams m_visibleParams{};
+    gpu::CausticEstimateParams m_causticParams{};
+    gpu::FinalGatherParams m_gatherParams{};
+    float m_globalCellSize = 0.0f;
+    std::string m_stopReason;  // a photon pass stopped early (render/render_control.h)
+    vk::ItemRange m_window;    // the pixels the camera passes compute (--tile, --crop)
+};
+
+// The visible-point pass's parameters for a frame (shared with the progressive integrator).
+gpu::VisiblePointParams visiblePointParams(const Frame& frame, uint32_t lightCount);
+// Throws InputError when the scene's lights emit no power (no photons to trace).
+void requireLightPower(const GpuScene& scene);
+// "photons.pathsTraced", "photons.dropped" and "photons.seconds" of one map build, added.
+void reportMapBuild(Stats& stats, const PhotonMapStats& map);
+// The user's summary of the maps (notes) and a warning for dropped photons, from "photons.*".
+void reportPhotonSummary(Stats& stats);
+
+// --integrator photon (the two-pass method) and --integrator sppm (--progressive): one family,
+// one config (PhotonIntegratorSettings) and its options.
+IntegratorKind photonIntegratorKind();
+IntegratorKind sppmIntegratorKind();
+
+}  // namespace vkp

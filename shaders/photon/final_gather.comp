@@ -1,0 +1,97 @@
+// Indirect light at the visible points by final gathering (Jensen's L_indirect; shared/papers/004):
+// this dispatch adds one of `gatherRays` BSDF-sampled rays per visible point. The ray follows
+// delta bounces (mirrors, glass) to the first surface with a diffuse or glossy part and reads
+// the global map there: the k nearest photons of every kind (direct, caustic and indirect light
+// all arrive at that surface), or, with radiance photons (radiance_photons.comp), the irradiance
+// precomputed at the nearest of them times the surface's diffuse reflectance. Emission found by
+// the ray is not added: direct light is next-event
+// estimation's and light through delta bounces is the caustic map's.
+//
+// With gatherRays = 0 the global map is read at the visible point itself, with primary and
+// caustic photons excluded (those parts come from next-event estimation and the caustic map).
+#version 460
+#extension GL_GOOGLE_include_directive : require
+
+#include "shared/kernels/photon_estimates.glsl"
+#include "render/scene_access.glsl"
+#include "render/path_vertex.glsl"
+#include "shared/halton.glsl"
+#include "photon/visible_point_access.glsl"
+#include "shared/photon_render.glsl"
+#define PHOTON_GRID_BINDING kFinalGatherGridBinding
+#include "photon/photon_gather.glsl"
+
+layout(local_size_x = kPhotonEstimateGroupSize) in;
+
+layout(std430, set = 0, binding = kFinalGatherFilmBinding) buffer Film { vec4 film[]; };
+layout(std430, set = 0, binding = kFinalGatherPointBinding) readonly buffer VisiblePoints { GpuVisiblePoint visiblePoints[]; };
+
+layout(push_constant) uniform Push { FinalGatherParams params; };
+
+const uint kFinalGatherStream = 0x46474154u;  // "FGAT"
+
+// Radiance arriving at the visible point along one BSDF-sampled direction, divided by its pdf
+// and multiplied by f cos (the sample's weight).
+vec3 gatherRay(GpuVisiblePoint vp, VisibleSurface s, inout Sampler rng) {
+    vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
+    BsdfSample bs = sampleBsdf(s.bsdf, s.wo, (vp.flags & kVisiblePointFrontFace) != 0u, true, u);
+    // The visible point's delta lobes are not followed (as in visible_points.comp).
+    if (bs.lobe == kLobeNone || (bs.lobe & kLobeDelta) != 0u) return vec3(0.0f);
+    vec3 weight = bs.weight;
+    // Non-delta lobes reflect: the ray starts outside any medium.
+    vec3 dir = normalize(toWorld(bs.wi, s.t, s.b, s.n));
+    Ray ray = rayFrom(offsetRayOrigin(vp.position, decodeOctahedral(vp.geometricNormal), dir), dir);
+    for (uint depth = 0u; depth <= params.maxSpecularDepth; ++depth) {
+        PathVertex v;
+        // Escaped: environment light here is direct light (next-event estimation's at the visible
+        // point) or, behind delta bounces, the caustic map's.
+        if (!traceVertex(ray, v)) return vec3(0.0f);
+        weight *= v.transmittance;
+        // A partly transmissive surface: with probability `transmission` the ray goes on through
+        // its dielectric layer, otherwise it ends on the opaque layer (as in visible_points.comp).
+        float transmissionShare = storesPhotons(v.bsdf) ? v.bsdf.transmission : 0.0f;
+        bool throughLayer = transmissionShare > 0.0f && nextSample(rng) < transmissionShare;
+        if (storesPhotons(v.bsdf) && !throughLayer) {
+            weight /= 1.0f - transmissionShare;
+            if (params.radianceLookup == 0u)
+                return weight * radianceNearest(params.grid, v.hit.position, params.k, params.maxRadius, 0u, 0u, v.bsdf,
+                                                v.wo, v.t, v.b, v.n);
+            float radius2;
+            if (gatherNearest(params.grid, v.hit.position, v.n, 1u, params.lookupRadius, 0u, 0u, radius2) == 0u)
+                return vec3(0.0f);
+            vec3 irradiance = photonRelativePower(gridPhoton(heapIndex[0])) * params.grid.photonPower;
+            return weight * diffuseReflectance(v.bsdf, v.wo) * irradiance;
+        }
+        if (throughLayer) v.bsdf.transmission = 1.0f;
+        if (depth == params.maxSpecularDepth) break;
+        vec3 ud = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
+        BsdfSample next = sampleVertexBsdf(v, true, ud);
+        if (next.lobe == kLobeNone) break;
+        weight *= next.weight;
+        spawnRay(v, next, ray);
+    }
+    return vec3(0.0f);
+}
+
+void finalGather() {
+    uint pixel = gl_GlobalInvocationID.x;
+    if (pixel >= params.width * params.height) return;
+    GpuVisiblePoint vp = visiblePoints[pixel];
+    if ((vp.flags & kVisiblePointValid) == 0u) return;
+    VisibleSurface s = visibleSurface(vp);
+    vec3 radiance;
+    if (params.gatherRays == 0u) {
+        radiance = radianceNearest(params.grid, vp.position, params.k, params.maxRadius, 0u,
+                                   kPhotonPrimary | kPhotonCaustic, s.bsdf, s.wo, s.t, s.b, s.n);
+    } else {
+        Sampler rng = makePixelSampler(params.sampleIndex * params.gatherRays + params.rayIndex, params.gatherRays,
+                                  hashCombine(hashCombine(params.seed, kFinalGatherStream), pixel));
+        radiance = gatherRay(vp, s, rng) / float(params.gatherRays);
+    }
+    film[pixel] += vec4(finiteOrZero(vp.throughput * radiance), 0.0f);
+}
+
+void main() {
+    finalGather();
+    countTerminations(kTerminationGathers);  // rays and gathers this invocation's bounds cut short
+}
