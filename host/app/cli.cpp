@@ -231,6 +231,15 @@ int runCommandLine(int argc, const char* const* argv) {
                           "of 2, 3, 5, 7, 11)")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    std::string photonDetect = "tracks";
+    renderCmd->add_option("--photon-detect", photonDetect,
+                          "--frames, selective: how changed photon paths are found: tracks (every path's segments "
+                          "against the old and new bounds of what moved, and pilots for the rest) or pilots only")
+        ->check(CLI::IsMember({"tracks", "pilots"}))
+        ->capture_default_str();
+    renderCmd->add_flag("--verify-update", render.verifyUpdate,
+                        "--frames, selective: after each update retrace every path in full and count the stored "
+                        "photons that differ (stale photons, paths, groups per map in --stats-json)");
     renderCmd->add_flag("--no-energy-compensation", render.noEnergyCompensation,
                         "The glTF spec's plain single-scattering GGX: no multiple-scattering compensation of rough "
                         "specular lobes (docs/materials.md)");
@@ -382,6 +391,10 @@ int runCommandLine(int argc, const char* const* argv) {
             if (renderCmd->get_option("--frames")->count() > 0) render.frames = parseFrameRange(framesText);
             render.photonUpdateFull = photonUpdate == "full";
             render.sceneRebuildEachFrame = sceneUpdate == "rebuild";
+            render.photonDetectPilots = photonDetect == "pilots";
+            if ((renderCmd->get_option("--photon-detect")->count() > 0 || render.verifyUpdate) &&
+                (!render.frames || render.photonUpdateFull))
+                throw InputError("--photon-detect and --verify-update need --frames and --photon-update selective");
             if (!render.frames && (renderCmd->get_option("--photon-update")->count() > 0 ||
                                    renderCmd->get_option("--scene-update")->count() > 0 ||
                                    renderCmd->get_option("--photon-budget")->count() > 0 ||

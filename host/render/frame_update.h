@@ -7,8 +7,11 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 namespace vkp {
+namespace gpu { struct GpuCamera; }
 
 class PhotonMap;
 struct PhotonMapStats;
@@ -20,6 +23,16 @@ struct FrameUpdateInfo {
     double time = 0.0;        // seconds: frame / fps
     bool firstFrame = true;   // the first frame of the sequence (or a still render)
     uint64_t sceneGeneration = 0;  // changes when the frames loop rebuilt the scene (new buffers)
+    const gpu::GpuCamera* camera = nullptr;  // the frame's view (set by buildFramePhotonMap): what is visible first
+};
+
+// --verify-update: one map's persistent photons against a full retrace of the same paths.
+struct MapVerification {
+    std::string map;            // "global" or "caustic"
+    uint64_t paths = 0;
+    uint64_t stalePhotons = 0;  // slots whose content differs from the full retrace's
+    uint64_t stalePaths = 0;
+    uint64_t staleGroups = 0;
 };
 
 // What the photon maps of one frame cost, for --stats-json's "frames" array.
@@ -29,6 +42,9 @@ struct FramePhotonCounts {
     uint64_t changedPilots = 0;      // selective: pilot paths whose photons changed since the last frame
     uint64_t groupsMarked = 0;       // selective: groups with a changed pilot this frame
     uint64_t groupsPending = 0;      // selective: marked groups left for later frames (budget)
+    uint64_t stalePathsFound = 0;    // selective: paths whose tracks met a change this frame
+    uint64_t stalePathsLeft = 0;     // selective: stale paths left for later frames (budget)
+    std::vector<MapVerification> verification;  // --verify-update: per map, after the update
 };
 
 class FrameUpdate {
