@@ -2,9 +2,9 @@
 // host/passes/selective_mark_pass.h). One invocation per path: its track (shared/path_track.glsl)
 // against every changed region (old and new bounds of a moved instance) and its light against the
 // changed lights. A path that meets one is stale; its bit stays set until the host retraces it.
-// Every stale path (found now or left from earlier frames) adds its weight to its group's
-// priority: the light its stored photons carry, weighted by whether they lie in the camera's view,
-// plus the light it may bring where it meets a changed region (1 in view), the energy and
+// Every stale path (found now or left from earlier frames) gets a weight, by which the host orders
+// the retracing: the light its stored photons carry, weighted by whether they lie in the camera's
+// view, plus the light it may bring where it meets a changed region (1 in view), the energy and
 // view criteria of Dmitriev et al. 2002 §5.3.
 #version 460
 #extension GL_GOOGLE_include_directive : require
@@ -27,7 +27,7 @@ SEGMENTED_ARRAY(kSelectiveMarkSlotBinding, Slots, slotTable);
 layout(std430, set = 0, binding = kSelectiveMarkRegionBinding) readonly buffer Regions { vec4 regions[]; };
 layout(std430, set = 0, binding = kSelectiveMarkLightBinding) readonly buffer Lights { uint changedLights[]; };
 layout(std430, set = 0, binding = kSelectiveMarkStaleBinding) buffer Stale { uint stale[]; };
-layout(std430, set = 0, binding = kSelectiveMarkPriorityBinding) buffer Priority { uint priority[]; };
+layout(std430, set = 0, binding = kSelectiveMarkWeightBinding) writeonly buffer Weights { uint weights[]; };
 layout(std430, set = 0, binding = kSelectiveMarkCounterBinding) buffer Counters { uint counters[]; };
 
 layout(push_constant) uniform Push { SelectiveMarkParams params; };
@@ -72,5 +72,5 @@ void main() {
         if ((photonFlags(p) & kPhotonValid) == 0u) continue;
         weight += luminance(photonRelativePower(p)) * viewWeight(p.position);
     }
-    atomicAdd(priority[path % params.groups], uint(min(weight, kSelectiveMaxPathWeight) * kSelectiveWeightScale));
+    weights[path] = uint(min(weight, kSelectiveMaxPathWeight) * kSelectiveWeightScale);
 }

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <set>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <gtest/gtest.h>
 
 #include "gpu_scene/scene_buffers.h"
@@ -132,6 +134,62 @@ TEST_F(SelectiveCaustic, StalePathsStayMarkedUntilRetraced) {
     }
     EXPECT_TRUE(pended) << "the budget should have left stale paths for later frames";
     EXPECT_EQ(u.verify().stalePhotons, 0u);
+}
+
+// Two glass spheres move, one in the camera's view and one behind it; the budget holds about the
+// paths the visible one changed. Ordered by the light their stale paths carry in view (Dmitriev et
+// al. §5.3), the visible sphere's paths are retraced first; without a camera (energy alone) the
+// two are served alike.
+TEST_F(SelectiveCaustic, BudgetRetracesWhatTheCameraSeesFirst) {
+    auto twoSpheres = [](float a, float b) {
+        Scene scene = test::glassSphereOverFloor(at(a));
+        scene.instances.push_back({0, glm::translate(glm::mat4(1.0f), at(b)), -1});
+        return scene;
+    };
+    GpuSceneData before(twoSpheres(-1.0f, 1.0f));
+    GpuSceneData after(twoSpheres(-0.7f, 1.3f));
+    // Looking down at the left sphere's caustic; the right sphere is far outside the view.
+    const gpu::GpuCamera camera = makeGpuCamera(test::lookAt({-1.0f, 1.2f, 1.2f}, {-0.9f, 0.0f, 0.0f}, 0.6f), 64, 64);
+
+    // Which paths meet each sphere's old or new bounds (from the tracks of a full trace).
+    SelectivePhotonUpdate probe(test::gpu(), mapSettings(true, true));
+    probe.update(before.scene, before.arrays, before.buffers, false);
+    const auto tracks = probe.tracks().download<gpu::GpuPathTrack>(probe.settings().paths);
+    const SceneSnapshot sBefore = snapshotScene(before.scene, before.arrays, 0);
+    const SceneChanges changes = sceneChanges(sBefore, snapshotScene(after.scene, after.arrays, 0));
+    ASSERT_EQ(changes.regions.size(), 4u);  // left old, left new, right old, right new
+    std::vector<char> left(tracks.size(), 0), right(tracks.size(), 0);
+    uint32_t leftCount = 0, rightCount = 0;
+    for (size_t p = 0; p < tracks.size(); ++p) {
+        for (size_t r = 0; r < 4; ++r) {
+            if (!gpu::pathTrackMeetsBox(tracks[p], changes.regions[r].min, changes.regions[r].max)) continue;
+            (r < 2 ? left : right)[p] = 1;
+        }
+        leftCount += left[p] && !right[p] ? 1 : 0;
+        rightCount += right[p] && !left[p] ? 1 : 0;
+    }
+    ASSERT_GT(leftCount, 100u);
+    ASSERT_GT(rightCount, 100u);
+
+    auto retracedShares = [&](const gpu::GpuCamera* view) {
+        SelectiveSettings s = mapSettings(true, true, kGroups + leftCount);
+        s.refreshGroups = 0;
+        SelectivePhotonUpdate u(test::gpu(), s);
+        u.update(before.scene, before.arrays, before.buffers, false, 0, view);
+        const SelectiveFrameStats st = u.update(after.scene, after.arrays, after.buffers, false, 0, view);
+        EXPECT_GT(st.stalePathsLeft, 0u) << "the budget holds about half the stale paths";
+        uint32_t leftDone = 0, rightDone = 0;
+        for (uint32_t p = kGroups; p < tracks.size(); ++p) {  // pilots (paths < kGroups) are always traced
+            leftDone += left[p] && !right[p] && !u.stale(p) ? 1 : 0;
+            rightDone += right[p] && !left[p] && !u.stale(p) ? 1 : 0;
+        }
+        return std::make_pair(double(leftDone) / leftCount, double(rightDone) / rightCount);
+    };
+    const auto [leftInView, rightOutOfView] = retracedShares(&camera);
+    EXPECT_GT(leftInView, 0.8);
+    EXPECT_LT(rightOutOfView, 0.3);
+    const auto [leftNoView, rightNoView] = retracedShares(nullptr);
+    EXPECT_LT(std::abs(leftNoView - rightNoView), 0.5 * (leftInView - rightOutOfView));
 }
 
 // Regions: an instance's world bounds under its transform, widened by the ray-offset margin; a

@@ -4,7 +4,7 @@ namespace vkp {
 
 SelectiveMarkPass::SelectiveMarkPass(vk::Context& context, const vk::SegmentedBuffer& tracks,
                                      const vk::SegmentedBuffer& slots, const vk::Buffer& regions,
-                                     const vk::Buffer& lights, const vk::Buffer& stale, const vk::Buffer& priority,
+                                     const vk::Buffer& lights, const vk::Buffer& stale, const vk::Buffer& weights,
                                      const vk::Buffer& counters)
     : m_kernel(context) {
     m_kernel.bind(gpu::kSelectiveMarkTrackBinding, tracks.table());
@@ -12,7 +12,7 @@ SelectiveMarkPass::SelectiveMarkPass(vk::Context& context, const vk::SegmentedBu
     m_kernel.bind(gpu::kSelectiveMarkRegionBinding, regions);
     m_kernel.bind(gpu::kSelectiveMarkLightBinding, lights);
     m_kernel.bind(gpu::kSelectiveMarkStaleBinding, stale);
-    m_kernel.bind(gpu::kSelectiveMarkPriorityBinding, priority);
+    m_kernel.bind(gpu::kSelectiveMarkWeightBinding, weights);
     m_kernel.bind(gpu::kSelectiveMarkCounterBinding, counters);
 }
 

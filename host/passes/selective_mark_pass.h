@@ -1,6 +1,6 @@
 // A selective photon update's exact change detection (shaders/selective_mark.comp): tests every
-// stored path's track against the changed regions and lights, sets the stale paths' bits and sums
-// their weights per group (render/selective_photon_update.h).
+// stored path's track against the changed regions and lights, sets the stale paths' bits and
+// writes their weights (render/selective_photon_update.h).
 #pragma once
 
 #include "shared/kernels/selective_mark.glsl"
@@ -14,7 +14,7 @@ class SelectiveMarkPass {
 public:
     SelectiveMarkPass(vk::Context& context, const vk::SegmentedBuffer& tracks, const vk::SegmentedBuffer& slots,
                       const vk::Buffer& regions, const vk::Buffer& lights, const vk::Buffer& stale,
-                      const vk::Buffer& priority, const vk::Buffer& counters);
+                      const vk::Buffer& weights, const vk::Buffer& counters);
 
     void record(VkCommandBuffer cmd, const gpu::SelectiveMarkParams& params) const;
 

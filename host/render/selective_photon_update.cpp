@@ -25,7 +25,7 @@ struct SelectiveMarkState {
     vk::Buffer regions;   // kSelectiveMaxRegions pairs of vec4
     vk::Buffer lights;    // bit per light
     vk::Buffer stale;     // bit per path
-    vk::Buffer priority;  // uint per group
+    vk::Buffer weights;   // uint per path
     vk::Buffer counters;
     uint32_t lightWords = 0;
     std::unique_ptr<SelectiveMarkPass> pass;
@@ -160,7 +160,7 @@ void SelectivePhotonUpdate::traceGroups(const std::vector<uint32_t>& groups, con
     for (uint32_t path : stalePaths) clearStale(path);
 }
 
-std::vector<uint64_t> SelectivePhotonUpdate::markStalePaths(const SceneChanges& changes, const gpu::GpuCamera* camera,
+std::vector<uint32_t> SelectivePhotonUpdate::markStalePaths(const SceneChanges& changes, const gpu::GpuCamera* camera,
                                                             SelectiveFrameStats& stats) {
     const uint32_t lightCount = static_cast<uint32_t>(m_snapshot ? m_snapshot->lights.size() : 0);
     const uint32_t lightWords = std::max(1u, (lightCount + 31) / 32);
@@ -170,13 +170,13 @@ std::vector<uint64_t> SelectivePhotonUpdate::markStalePaths(const SceneChanges& 
                                    vk::kStorageUsage);
         mark->lights = vk::Buffer(m_context, "selective changed lights", lightWords * sizeof(uint32_t), vk::kStorageUsage);
         mark->stale = vk::Buffer(m_context, "selective stale paths", m_stale.size() * sizeof(uint32_t), vk::kStorageUsage);
-        mark->priority = vk::Buffer(m_context, "selective group weights", m_settings.groups * sizeof(uint32_t),
-                                    vk::kStorageUsage);
+        mark->weights = vk::Buffer(m_context, "selective path weights", uint64_t(m_settings.paths) * sizeof(uint32_t),
+                                   vk::kStorageUsage);
         mark->counters = vk::Buffer(m_context, "selective mark counters", gpu::kSelectiveMarkCounterCount * sizeof(uint32_t),
                                     vk::kStorageUsage);
         mark->lightWords = lightWords;
         mark->pass = std::make_unique<SelectiveMarkPass>(m_context, m_tracks, m_slots, mark->regions, mark->lights,
-                                                         mark->stale, mark->priority, mark->counters);
+                                                         mark->stale, mark->weights, mark->counters);
         m_mark = std::move(mark);
     }
     const std::vector<Bounds> regions = mergeRegions(changes.regions, gpu::kSelectiveMaxRegions);
@@ -200,19 +200,20 @@ std::vector<uint64_t> SelectivePhotonUpdate::markStalePaths(const SceneChanges& 
     params.regionCount = static_cast<uint32_t>(regions.size());
     params.lightCount = changes.lights.empty() ? 0u : lightCount;
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
-        m_mark->priority.fillZero(cmd);
+        m_mark->weights.fillZero(cmd);
         m_mark->counters.fillZero(cmd);
         vk::transferToComputeBarrier(cmd);
         m_mark->pass->record(cmd, params);
         vk::computeToHostBarrier(cmd);
     });
-    // Read-backs (one per map and frame with changes): the bits, the group weights, the counts.
+    // Read-backs (one per map and frame with changes): the bits, the paths' weights, the counts.
     m_mark->stale.download(m_stale.data(), m_stale.size() * sizeof(uint32_t));
-    const auto weights32 = m_mark->priority.download<uint32_t>();
+    std::vector<uint32_t> weights(m_settings.paths);
+    m_mark->weights.download(weights.data(), weights.size() * sizeof(uint32_t));
     const auto counters = m_mark->counters.download<uint32_t>();
     stats.stalePathsFound = counters[gpu::kSelectiveMarkCounterFound];
     stats.changedRegions = regions.size();
-    return std::vector<uint64_t>(weights32.begin(), weights32.begin() + m_settings.groups);
+    return weights;
 }
 
 SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const SceneArrays& arrays,
@@ -269,7 +270,7 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
     // Exact detection: the tracks against what moved. A change no region bounds (a rebuilt scene
     // whose triangles or materials differ) makes every path stale: retraced by priority over the
     // next frames, as the budget allows.
-    std::vector<uint64_t> weight(m_settings.groups, 0);
+    std::vector<uint32_t> weight;  // per path (stale paths only)
     bool anyStale = false;
     if (m_settings.trackPaths) {
         uint64_t foundOnHost = 0;
@@ -313,51 +314,48 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
         stats.photonPathsTraced = m_pilotPaths;
     }
 
-    // The stale paths of each group (pilots excluded: traced above).
-    std::vector<std::vector<uint32_t>> stalePaths(m_settings.groups);
-    if (anyStale || changes.any())
-        for (uint32_t word = 0; word < m_stale.size(); ++word)
-            for (uint32_t bits = m_stale[word]; bits != 0; bits &= bits - 1) {
-                const uint32_t path = word * 32 + static_cast<uint32_t>(std::countr_zero(bits));
-                if (path < m_settings.paths) stalePaths[groupOf(path)].push_back(path);
-            }
-
-    // Marked groups by priority, the most visible change first (Dmitriev et al. §5.3): a tracked
-    // group's weight sums its stale paths' (selective_mark.comp: the light their photons carry,
-    // weighted by the camera's view); a group marked by a pilot the tracks did not explain is
-    // retraced whole and weighs as if each of its paths carried a photon in view per changed pilot
-    // (pilots only: the paper's count of pilot hits). Stalest first on ties. Groups that do not
-    // fit are passed over for smaller ones; room for refreshGroups groups of the round-robin
-    // refresh is kept; then the refresh fills the budget.
+    // What to retrace, the most visible change first (Dmitriev et al. §5.3's energy and view
+    // criteria): each stale path by its weight (selective_mark.comp: the light its photons carry,
+    // weighted by the camera's view), a group marked by a pilot the tracks did not explain as a
+    // whole, weighing per path one photon in view per changed pilot (pilots only: the paper's count
+    // of pilot hits). Ordered by weight per path traced, ties to the longest unrefreshed group and
+    // the lower path; what does not fit is passed over for smaller ones. Detection is per path, so
+    // the order is too: a Halton group's paths meet a small object in several places. Room for
+    // refreshGroups groups of the round-robin refresh is kept; then the refresh fills the budget.
+    struct Unit {
+        double weight;  // per path traced
+        uint32_t group;
+        uint32_t path;  // ~0u: the whole group
+    };
+    std::vector<Unit> units;
+    for (uint32_t g = 0; g < m_settings.groups; ++g)
+        if (m_priority[g] > 0) units.push_back({double(m_priority[g]) * gpu::kSelectiveWeightScale, g, ~0u});
+    for (uint32_t word = 0; word < m_stale.size(); ++word)
+        for (uint32_t bits = m_stale[word]; bits != 0; bits &= bits - 1) {
+            const uint32_t path = word * 32 + static_cast<uint32_t>(std::countr_zero(bits));
+            if (path >= m_settings.paths || m_priority[groupOf(path)] > 0) continue;  // in a whole group
+            units.push_back({double(weight.empty() ? 0u : weight[path]) + 1.0, groupOf(path), path});
+        }
+    std::sort(units.begin(), units.end(), [&](const Unit& a, const Unit& b) {
+        if (a.weight != b.weight) return a.weight > b.weight;
+        if (m_lastTraced[a.group] != m_lastTraced[b.group]) return m_lastTraced[a.group] < m_lastTraced[b.group];
+        return a.path < b.path;
+    });
     const uint64_t budget = m_settings.budget;
     auto fits = [&](uint32_t g) { return stats.photonPathsTraced + pathsInGroup(g) <= budget; };
-    std::vector<uint32_t> pending;
-    std::vector<double> key(m_settings.groups, 0.0);
-    for (uint32_t g = 0; g < m_settings.groups; ++g) {
-        if (m_priority[g] == 0 && stalePaths[g].empty()) continue;
-        key[g] = m_priority[g] > 0 ? double(m_priority[g]) * pathsInGroup(g) * gpu::kSelectiveWeightScale + double(weight[g])
-                                   : double(weight[g]) + 1.0;
-        pending.push_back(g);
-    }
-    std::stable_sort(pending.begin(), pending.end(), [&](uint32_t a, uint32_t b) {
-        if (key[a] != key[b]) return key[a] > key[b];
-        return m_lastTraced[a] < m_lastTraced[b];
-    });
     const uint64_t reserve = uint64_t(m_settings.refreshGroups) * groupPaths;
     std::vector<uint32_t> chosen;        // retraced whole
-    std::vector<uint32_t> chosenPaths;   // stale paths of tracked groups
+    std::vector<uint32_t> chosenPaths;   // stale paths
     std::vector<char> done(m_settings.groups, 0);
-    for (uint32_t g : pending) {
-        const bool whole = m_priority[g] > 0;
-        const uint64_t cost = whole ? pathsInGroup(g) : stalePaths[g].size();
+    for (const Unit& unit : units) {
+        const uint64_t cost = unit.path == ~0u ? pathsInGroup(unit.group) : 1;
         if (stats.photonPathsTraced + cost + reserve > budget) continue;
         stats.photonPathsTraced += cost;
-        if (whole) {
-            chosen.push_back(g);
-            done[g] = 1;
+        if (unit.path == ~0u) {
+            chosen.push_back(unit.group);
+            done[unit.group] = 1;
         } else {
-            chosenPaths.insert(chosenPaths.end(), stalePaths[g].begin(), stalePaths[g].end());
-            stalePaths[g].clear();
+            chosenPaths.push_back(unit.path);
         }
     }
     for (uint32_t visited = 0; visited < m_settings.groups; ++visited) {
@@ -380,14 +378,18 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
     });
     traceGroups(chosen, chosenPaths);
     stats.groupsRetraced = m_retraced.size();
-    for (uint32_t g = 0; g < m_settings.groups; ++g) {
-        bool left = m_priority[g] > 0;
-        if (!done[g]) {
-            stats.stalePathsLeft += stalePaths[g].size();
-            left = left || !stalePaths[g].empty();
+    // Left for later frames: what traceGroups did not clear.
+    stats.stalePathsLeft = 0;
+    std::vector<char> pendingGroup(m_settings.groups, 0);
+    for (uint32_t g = 0; g < m_settings.groups; ++g) pendingGroup[g] = m_priority[g] > 0 ? 1 : 0;
+    for (uint32_t word = 0; word < m_stale.size(); ++word)
+        for (uint32_t bits = m_stale[word]; bits != 0; bits &= bits - 1) {
+            const uint32_t path = word * 32 + static_cast<uint32_t>(std::countr_zero(bits));
+            if (path >= m_settings.paths) continue;
+            stats.stalePathsLeft += 1;
+            pendingGroup[groupOf(path)] = 1;
         }
-        stats.groupsPending += left ? 1 : 0;
-    }
+    for (char g : pendingGroup) stats.groupsPending += g ? 1 : 0;
     return stats;
 }
 

@@ -12,11 +12,11 @@
 // (a rebuilt scene: materials, emission): the pilots (the first pilotsPerGroup paths of every group:
 // paths 0 .. pilotsPerGroup * groups - 1) are retraced in the new scene and compared with their
 // previous photons; a changed pilot the tracks did not explain marks its whole group.
-// Groups are retraced by priority within the per-frame path budget: the energy of their stale
-// paths' photons weighted by the camera's view (Dmitriev et al. §5.3; a pilot-marked group counts
-// its pilot's weight for each of its paths), stalest first on ties; a tracked group retraces only
-// its stale paths. Unchanged groups are then refreshed round-robin, so once motion stops the slots
-// converge to a full retrace even where detection missed. docs/animation.md.
+// Within the per-frame path budget stale paths are retraced by priority: the energy of their
+// photons weighted by the camera's view (Dmitriev et al. §5.3; a pilot-marked group, retraced
+// whole, weighs one photon in view per path per changed pilot), stalest group first on ties.
+// Unchanged groups are then refreshed round-robin, so once motion stops the slots converge to a
+// full retrace even where detection missed. docs/animation.md.
 #pragma once
 
 #include <cstdint>
@@ -109,9 +109,9 @@ private:
     // Retraces `groups` (SelectiveSettings::batched: in one dispatch per chunk) into their slots,
     // and `paths` (stale paths of other groups) with them.
     void traceGroups(const std::vector<uint32_t>& groups, const std::vector<uint32_t>& paths = {});
-    // Runs selective_mark.comp: sets the bits of paths whose tracks meet `changes` and returns the
-    // groups' weights (kSelectiveWeightScale), counting into `stats`.
-    std::vector<uint64_t> markStalePaths(const SceneChanges& changes, const gpu::GpuCamera* camera,
+    // Runs selective_mark.comp: sets the bits of paths whose tracks meet `changes` and returns every
+    // path's weight (stale paths; kSelectiveWeightScale), counting into `stats`.
+    std::vector<uint32_t> markStalePaths(const SceneChanges& changes, const gpu::GpuCamera* camera,
                                          SelectiveFrameStats& stats);
     void clearStale(uint32_t path) {
         if (!m_stale.empty()) m_stale[path >> 5] &= ~(1u << (path & 31));

@@ -2,7 +2,7 @@
 // exact change detection. One invocation per stored path tests the path's track
 // (shared/path_track.glsl) against the regions that changed since the last frame (the old and the
 // new bounds of every moved instance) and the lights that moved; a path found is stale until it
-// is retraced (its bit stays set), and every stale path adds its weight to its group's priority.
+// is retraced (its bit stays set), and every stale path gets its weight: how visible its change is.
 #ifndef VKP_KERNELS_SELECTIVE_MARK_GLSL
 #define VKP_KERNELS_SELECTIVE_MARK_GLSL
 #include "shared/compat.glsl"
@@ -16,7 +16,7 @@ const uint kSelectiveMarkSlotBinding = 1u;      // segmented: GpuPhoton per slot
 const uint kSelectiveMarkRegionBinding = 2u;    // vec4 pairs: lower, upper corner of each changed region
 const uint kSelectiveMarkLightBinding = 3u;     // uint bit mask over the lights: bit l set when light l changed
 const uint kSelectiveMarkStaleBinding = 4u;     // uint bit mask over the paths: stale paths (read, or'ed)
-const uint kSelectiveMarkPriorityBinding = 5u;  // uint per group: the stale paths' weights (kSelectiveWeightScale)
+const uint kSelectiveMarkWeightBinding = 5u;    // uint per path: its weight if stale (kSelectiveWeightScale), else untouched
 const uint kSelectiveMarkCounterBinding = 6u;   // uint[kSelectiveMarkCounterCount]
 const uint kSelectiveMarkBindingCount = 7u;
 
@@ -26,7 +26,7 @@ const uint kSelectiveMarkCounterCount = 4u;
 
 // More changed regions than this are merged (host) into this many: a bound on each invocation's loops.
 const uint kSelectiveMaxRegions = 256u;
-// Fixed point of the weights summed per group (atomics on uint); a path's weight is clamped to 64.
+// Fixed point of the paths' weights; a path's weight is clamped to 64.
 const float kSelectiveWeightScale = 1024.0f;
 const float kSelectiveMaxPathWeight = 64.0f;
 // Weight of light outside the camera's view (the paper's visibility factor V, by frustum only).
@@ -36,7 +36,7 @@ struct SelectiveMarkParams {
     GpuCamera camera;        // the frame's camera: changes in its view weigh more
     uint pathCount;
     uint maxDeposits;
-    uint groups;             // path i is in group i mod groups
+    uint groups;             // path i is in group i mod groups (unused by the kernel; kept for the layout)
     uint regionCount;        // <= kSelectiveMaxRegions
     uint lightCount;         // lights the bit mask covers
     uint useCamera;          // 0: every change weighs as if in view
