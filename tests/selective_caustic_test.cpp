@@ -7,8 +7,14 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <gtest/gtest.h>
+#include <filesystem>
+#include <fstream>
 
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
 #include "gpu_scene/scene_buffers.h"
 #include "gpu_test_support.h"
 #include "photon/scene_changes.h"
@@ -190,6 +196,41 @@ TEST_F(SelectiveCaustic, BudgetRetracesWhatTheCameraSeesFirst) {
     EXPECT_LT(rightOutOfView, 0.3);
     const auto [leftNoView, rightNoView] = retracedShares(nullptr);
     EXPECT_LT(std::abs(leftNoView - rightNoView), 0.5 * (leftInView - rightOutOfView));
+}
+
+// `render --frames --verify-update` on scenes/glass-moving.gltf: every frame's stats hold each
+// map's stale photons against a full retrace: none with the tracks, some with pilots alone; the
+// flags need --frames and the selective update.
+TEST(SelectiveCausticCli, VerifyUpdateReportsStalePhotonsPerFrameAndMap) {
+    const std::filesystem::path dir = test::freshTempDir("selective", "verify");
+    const std::string scene = std::string(VKPHOTON_SCENES) + "/glass-moving.gltf";
+    const std::string common = "--width 24 --height 24 --spp 1 --integrator photon --photons 4000 --caustic-photons 20000 "
+                               "--gather-rays 0 --quiet --frames 0:3 --verify-update";
+    uint64_t stale[2] = {0, 0};
+    for (const int pilots : {0, 1}) {
+        const std::string name = pilots ? "pilots" : "tracks";
+        auto run = test::runVkphoton(fmt::format("render {} {} --photon-detect {} -o {}/{}-#.exr --stats-json {}/{}.json", scene,
+                                           common, name, dir.string(), name, dir.string(), name));
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+        EXPECT_NE(run.output.find("frame 3: verify-update:"), std::string::npos) << run.output;
+        std::ifstream in(dir / (name + ".json"));
+        const nlohmann::json stats = nlohmann::json::parse(in);
+        ASSERT_EQ(stats["frames"].size(), 4u);
+        for (const auto& frame : stats["frames"]) {
+            ASSERT_EQ(frame["verify"]["maps"].size(), 2u);  // the global and the caustic map
+            EXPECT_EQ(frame["verify"]["maps"][1]["map"], "caustic");
+            stale[pilots] += frame["verify"]["stalePhotons"].get<uint64_t>();
+        }
+        EXPECT_EQ(stats["verifyUpdate"]["stalePhotons"].get<uint64_t>(), stale[pilots]);
+    }
+    EXPECT_EQ(stale[0], 0u) << "the tracks find every changed path";
+    EXPECT_GT(stale[1], 0u) << "pilots alone miss some";
+    for (const std::string flags : {"--verify-update", "--frames 0:1 --photon-update full --verify-update",
+                                    "--photon-detect pilots"}) {
+        const auto run = test::runVkphoton(fmt::format("render {} {} -o {}/bad-#.exr --quiet", scene, flags, dir.string()));
+        EXPECT_EQ(run.exitCode, 2) << flags;
+        EXPECT_NE(run.output.find("need --frames"), std::string::npos) << run.output;
+    }
 }
 
 // Regions: an instance's world bounds under its transform, widened by the ray-offset margin; a
