@@ -83,6 +83,16 @@ TEST_F(SelectiveCaustic, MovedGlassSphereLeavesNoStalePhotons) {
         const SelectiveVerification exact = tracked.verify();
         EXPECT_EQ(exact.stalePhotons, 0u);
         EXPECT_EQ(exact.stalePaths, 0u);
+        // Without the round-robin filling the budget, a frame costs the pilots, the stale paths and
+        // one group: what changed, and the same slots.
+        SelectiveSettings leanSettings = mapSettings(caustic, true);
+        leanSettings.fillBudget = false;
+        SelectivePhotonUpdate lean(test::gpu(), leanSettings);
+        lean.update(a.scene, a.arrays, a.buffers, false);
+        const SelectiveFrameStats leanMoved = lean.update(b.scene, b.arrays, b.buffers, false);
+        EXPECT_LE(leanMoved.photonPathsTraced, kGroups + leanMoved.stalePathsFound + lean.pathsInGroup(0));
+        EXPECT_LT(leanMoved.photonPathsTraced, moved.photonPathsTraced);
+        EXPECT_EQ(lean.verify().stalePhotons, 0u);
         // The old detection misses paths through the small sphere: the diagnostic sees them.
         const SelectiveVerification missed = pilots.verify();
         EXPECT_GT(missed.stalePhotons, 0u);

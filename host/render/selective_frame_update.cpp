@@ -51,6 +51,10 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
         s.budget = m_options.budget;
         s.segmentShift = ms.segmentShift;  // the slots split as the map does
         s.trackPaths = m_options.trackPaths;
+        // With the tracks every change of moved instances and lights is found and a rebuilt scene
+        // marks every path: the round-robin refresh only has to catch what neither sees, one group
+        // per frame; with pilots alone it fills the budget, as the paper's update does.
+        s.fillBudget = !m_options.trackPaths;
         it = m_maps.emplace(key, std::make_unique<SelectivePhotonUpdate>(m_context, s)).first;
     }
     const auto start = Clock::now();

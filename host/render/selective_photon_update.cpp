@@ -321,7 +321,8 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
     // of pilot hits). Ordered by weight per path traced, ties to the longest unrefreshed group and
     // the lower path; what does not fit is passed over for smaller ones. Detection is per path, so
     // the order is too: a Halton group's paths meet a small object in several places. Room for
-    // refreshGroups groups of the round-robin refresh is kept; then the refresh fills the budget.
+    // refreshGroups groups of the round-robin refresh is kept; then the refresh fills the budget
+    // (SelectiveSettings::fillBudget) or takes those groups only.
     struct Unit {
         double weight;  // per path traced
         uint32_t group;
@@ -358,13 +359,15 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
             chosenPaths.push_back(unit.path);
         }
     }
+    uint32_t refreshed = 0;
     for (uint32_t visited = 0; visited < m_settings.groups; ++visited) {
         const uint32_t g = m_refreshCursor;
         if (done[g]) {
             m_refreshCursor = (m_refreshCursor + 1) % m_settings.groups;
             continue;
         }
-        if (!fits(g)) break;
+        if (!fits(g) || (!m_settings.fillBudget && refreshed >= m_settings.refreshGroups)) break;
+        refreshed += 1;
         chosen.push_back(g);
         done[g] = 1;
         stats.photonPathsTraced += pathsInGroup(g);

@@ -44,6 +44,8 @@ struct SelectiveSettings {
     uint32_t pilotsPerGroup = 1;
     uint32_t budget = 0;           // paths traced per frame (pilots included); 0: paths / 8
     uint32_t refreshGroups = 1;    // unchanged groups refreshed per frame at least (round-robin)
+    bool fillBudget = true;        // the refresh fills the budget (false: refreshGroups groups only, when
+                                   // the tracks find what changed and the rest needs no refreshing)
     bool batched = true;           // the frame's groups in one dispatch (false: one per group, the reference)
     bool trackPaths = true;        // exact detection by the paths' tracks (false: pilots only, as in the paper)
     uint32_t segmentShift = 0;     // slots (and tracks) per buffer of the persistent slots: 2^shift (0: the default, 128 MiB)
