@@ -547,6 +547,42 @@ def hall_moving(path):
     b.write(path)
 
 
+# A small glass sphere sliding over the floor of a room, its caustic in view: the case pilot photons find
+# worst (few of them meet a small refractive object) and the selective update's path tracks find exactly.
+def glass_moving(path):
+    """A 3 x 2.5 x 3 m room (white floor and ceiling, red and green side walls) lit by a 0.3 m ceiling light, and a
+    glass sphere (radius 0.15, ior 1.5) sliding along x on the floor from x = -0.8 to 0.8 in the first second
+    (LINEAR keys at 0 and 1 s, then still), its caustic on the floor beside it; a camera looks down at its way."""
+    b = GltfBuilder()
+    white = b.material("white", WHITE)
+    red = b.material("red", RED)
+    green = b.material("green", GREEN)
+    ex, h, ez = 1.5, 2.5, 1.5
+    quad(b, "floor", [(-ex, 0, ez), (ex, 0, ez), (ex, 0, -ez), (-ex, 0, -ez)], white)
+    quad(b, "ceiling", [(-ex, h, -ez), (ex, h, -ez), (ex, h, ez), (-ex, h, ez)], white)
+    quad(b, "back", [(-ex, 0, -ez), (ex, 0, -ez), (ex, h, -ez), (-ex, h, -ez)], white)
+    quad(b, "front", [(-ex, 0, ez), (-ex, h, ez), (ex, h, ez), (ex, 0, ez)], white)
+    quad(b, "left", [(-ex, 0, ez), (-ex, 0, -ez), (-ex, h, -ez), (-ex, h, ez)], red)
+    quad(b, "right", [(ex, 0, -ez), (ex, 0, ez), (ex, h, ez), (ex, h, -ez)], green)
+    light = b.material("light", (0.0, 0.0, 0.0), emissive=(60.0, 55.0, 45.0))
+    r, y = 0.15, h - 0.01
+    quad(b, "light", [(-r, y, -r), (r, y, -r), (r, y, r), (-r, y, r)], light)
+    radius = 0.15
+    glass = b.material("glass", (1.0, 1.0, 1.0), metallic=0.0, roughness=0.0, extensions={
+        "KHR_materials_transmission": {"transmissionFactor": 1.0},
+        "KHR_materials_ior": {"ior": 1.5},
+        "KHR_materials_volume": {"thicknessFactor": 2 * radius},
+    })
+    sphere = sphere_mesh(b, "glass-sphere", (0.0, 0.0, 0.0), radius, glass, segments=32, rings=16)
+    # Keys exact in float, so frame 0 equals the still pose bit for bit and every frame from 1 s on the end pose.
+    start, end = (-0.8, radius, 0.25), (0.8, radius, 0.25)
+    b.doc["nodes"][sphere]["translation"] = list(start)
+    b.animate_translation("sphere-slides", sphere, [0.0, 1.0], [start, end])
+    eye = (0.0, 1.6, 2.2)
+    b.camera(eye, yfov=math.radians(45), aspect=1.0, rotation=look_at_rotation(eye, (0.0, 0.0, 0.1)))
+    b.write(path)
+
+
 def spheres_outdoor(path):
     """Three spheres on a ground square and no lights: a scene for environments (--env, docs/environment.md)."""
     b = GltfBuilder()
@@ -625,6 +661,7 @@ def main():
     cornell_glass(os.path.join(args.out, "cornell-glass.gltf"))
     cornell_moving(os.path.join(args.out, "cornell-moving.gltf"))
     hall_moving(os.path.join(args.out, "hall-moving.gltf"))
+    glass_moving(os.path.join(args.out, "glass-moving.gltf"))
     rooms_10x10(os.path.join(args.out, "rooms-10x10.gltf"))
     door_slit(os.path.join(args.out, "door-slit.gltf"))
     spheres_outdoor(os.path.join(args.out, "spheres-outdoor.gltf"))

@@ -7,10 +7,21 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "photon/photon_map_update.h"
 
 namespace vkp {
+
+// --verify-update: one map's persistent photons against a full retrace of the same paths.
+struct MapVerification {
+    std::string map;            // "global" or "caustic"
+    uint64_t paths = 0;
+    uint64_t stalePhotons = 0;  // slots whose content differs from the full retrace's
+    uint64_t stalePaths = 0;
+    uint64_t staleGroups = 0;
+};
 
 // What the photon maps of one frame cost, for --stats-json's "frames" array.
 struct FramePhotonCounts {
@@ -19,6 +30,9 @@ struct FramePhotonCounts {
     uint64_t changedPilots = 0;      // selective: pilot paths whose photons changed since the last frame
     uint64_t groupsMarked = 0;       // selective: groups with a changed pilot this frame
     uint64_t groupsPending = 0;      // selective: marked groups left for later frames (budget)
+    uint64_t stalePathsFound = 0;    // selective: paths whose tracks met a change this frame
+    uint64_t stalePathsLeft = 0;     // selective: stale paths left for later frames (budget)
+    std::vector<MapVerification> verification;  // --verify-update: per map, after the update
 };
 
 class FrameUpdate : public PhotonMapUpdate {

@@ -50,12 +50,22 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
         s.pilotsPerGroup = m_options.pilotsPerGroup;
         s.budget = m_options.budget;
         s.segmentShift = ms.segmentShift;  // the slots split as the map does
+        s.trackPaths = m_options.trackPaths;
+        // With the tracks every change of moved instances and lights is found and a rebuilt scene
+        // marks every path: the round-robin refresh only has to catch what neither sees, one group
+        // per frame; with pilots alone it fills the budget, as the paper's update does.
+        s.fillBudget = !m_options.trackPaths;
         it = m_maps.emplace(key, std::make_unique<SelectivePhotonUpdate>(m_context, s)).first;
     }
     const auto start = Clock::now();
     const SelectiveFrameStats frame = it->second->update(map.scene(), map.arrays(), map.buffers(), info.firstFrame,
-                                                         info.sceneGeneration);
+                                                         info.sceneGeneration, info.camera);
     const double traceSeconds = secondsSince(start);
+    if (m_options.verify) {  // a diagnostic: the full retrace is neither counted nor timed
+        const SelectiveVerification v = it->second->verify();
+        m_counts.verification.push_back({(ms.requiredFlags & gpu::kPhotonCaustic) != 0 ? "caustic" : "global", v.paths,
+                                         v.stalePhotons, v.stalePaths, v.staleGroups});
+    }
     PhotonMapStats stats = map.buildFromSlots(it->second->slots(), firstPath);
     stats.traced.emitted = frame.photonPathsTraced;
     stats.traceSeconds += traceSeconds;
@@ -64,6 +74,8 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
     m_counts.changedPilots += frame.changedPilots;
     m_counts.groupsMarked += it->second->markedGroups().size();
     m_counts.groupsPending += frame.groupsPending;
+    m_counts.stalePathsFound += frame.stalePathsFound;
+    m_counts.stalePathsLeft += frame.stalePathsLeft;
     return stats;
 }
 

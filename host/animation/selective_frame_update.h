@@ -19,6 +19,8 @@ struct SelectiveUpdateOptions {
     uint32_t budget = 0;          // --photon-budget: paths per map and frame, pilots included; 0: paths / 8 + pilots
     uint32_t groups = 2310;       // --photon-groups
     uint32_t pilotsPerGroup = 1;
+    bool trackPaths = true;       // --photon-detect tracks (exact for moved instances and lights) or pilots
+    bool verify = false;          // --verify-update: compare each updated map with a full retrace
 };
 
 class SelectiveFrameUpdate : public FrameUpdate {

@@ -56,6 +56,8 @@ struct RenderCommandOptions {
     bool photonUpdateFull = false;      // --photon-update full: retrace every photon path per frame
     uint32_t photonBudget = 0;          // --photon-budget: selective paths per map and frame; 0: paths / 8 + pilots
     uint32_t photonGroups = 2310;       // --photon-groups: selective update's Halton-periodic groups
+    bool photonDetectPilots = false;    // --photon-detect pilots: the paper's pilots only (no path tracks)
+    bool verifyUpdate = false;          // --verify-update: each selective map against a full retrace
     bool sceneRebuildEachFrame = false; // --scene-update rebuild: a new scene and kernels every frame
 };
 

@@ -93,10 +93,13 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
         SelectiveUpdateOptions selective;
         selective.budget = options.photonBudget;
         selective.groups = options.photonGroups;
+        selective.trackPaths = !options.photonDetectPilots;
+        selective.verify = options.verifyUpdate;
         updateOwner = std::make_unique<SelectiveFrameUpdate>(context, selective);
     }
     FrameUpdate& update = *updateOwner;
     nlohmann::json frames = nlohmann::json::array();
+    uint64_t verifiedStalePhotons = 0, verifiedFramesStale = 0;  // --verify-update, over the frames
     nlohmann::json lastStats;
     uint32_t written = 0;
     for (uint32_t f = range.first; f <= range.last && !interruptRequested().load(); ++f) {
@@ -168,6 +171,8 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
                           {"changedPilots", counts.changedPilots},
                           {"groupsMarked", counts.groupsMarked},
                           {"groupsPending", counts.groupsPending},
+                          {"stalePathsFound", counts.stalePathsFound},
+                          {"stalePathsLeft", counts.stalePathsLeft},
                           {"seconds", seconds},
                           {"sceneUpdateSeconds", sceneUpdateSeconds},
                           {"flattenSeconds", flattenSeconds},
@@ -181,6 +186,23 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
                           {"partial", stats.get<bool>("partial")},
                           {"meanRadiance", meanRadiance(result.image)},
                           {"output", exrPath.string()}});
+        if (options.verifyUpdate) {  // per map and in total; a summary line per frame
+            nlohmann::json maps = nlohmann::json::array();
+            uint64_t stalePhotons = 0, stalePaths = 0, staleGroups = 0;
+            for (const MapVerification& v : counts.verification) {
+                maps.push_back({{"map", v.map}, {"paths", v.paths}, {"stalePhotons", v.stalePhotons},
+                                {"stalePaths", v.stalePaths}, {"staleGroups", v.staleGroups}});
+                stalePhotons += v.stalePhotons;
+                stalePaths += v.stalePaths;
+                staleGroups += v.staleGroups;
+            }
+            frames.back()["verify"] = {{"maps", maps}, {"stalePhotons", stalePhotons}, {"stalePaths", stalePaths},
+                                       {"staleGroups", staleGroups}};
+            verifiedStalePhotons += stalePhotons;
+            verifiedFramesStale += stalePhotons > 0 ? 1 : 0;
+            fmt::print(stderr, "frame {}: verify-update: {} stale photons in {} paths ({} groups) over {} maps\n", f,
+                       stalePhotons, stalePaths, staleGroups, counts.verification.size());
+        }
         for (const std::string& warning : stats.warnings()) fmt::print(stderr, "warning: frame {}: {}\n", f, warning);
         if (!options.quiet)
             fmt::print(stderr, "frame {} (t = {:.3f} s): wrote {} ({:.2f} s, scene update {:.3f} s, {} photon paths)\n", f,
@@ -193,8 +215,13 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
         json["settings"]["frames"] = {{"first", range.first}, {"last", range.last}, {"fps", options.fps},
                                       {"animation", options.animation}};
         json["timings"]["totalSeconds"] = secondsSince(start);
+        if (options.verifyUpdate)
+            json["verifyUpdate"] = {{"stalePhotons", verifiedStalePhotons}, {"framesWithStalePhotons", verifiedFramesStale}};
         writeTextAtomically(options.statsJson, json.dump(2) + "\n");
     }
+    if (options.verifyUpdate)
+        fmt::print(stderr, "verify-update: {} stale photons in {} of {} frame(s)\n", verifiedStalePhotons,
+                   verifiedFramesStale, written);
     if (!options.quiet)
         fmt::print(stderr, "wrote {} of {} frame(s) in {:.2f} s\n", written, range.count(), secondsSince(start));
     if (context.validationEnabled()) context.throwOnValidationMessages();

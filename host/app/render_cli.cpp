@@ -52,6 +52,7 @@ private:
     std::string m_framesText;            // parsed after CLI11 (animation/frame_sequence.h)
     std::string m_photonUpdate = "selective";
     std::string m_sceneUpdate = "inplace";
+    std::string m_photonDetect = "tracks";
     std::string m_integratorName = kDefaultIntegrator;
     bool m_progressive = false;
     std::unique_ptr<IntegratorOptions> m_integratorOptions;
@@ -132,6 +133,14 @@ void RenderCommand::addAnimationOptions() {
                       "3, 5, 7, 11)")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    m_cmd->add_option("--photon-detect", m_photonDetect,
+                      "--frames, selective: how changed photon paths are found: tracks (every path's segments "
+                      "against the old and new bounds of what moved, and pilots for the rest) or pilots only")
+        ->check(CLI::IsMember({"tracks", "pilots"}))
+        ->capture_default_str();
+    m_cmd->add_flag("--verify-update", render.verifyUpdate,
+                    "--frames, selective: after each update retrace every path in full and count the stored "
+                    "photons that differ (stale photons, paths, groups per map in --stats-json)");
 }
 
 void RenderCommand::addIntegratorOptions() {
@@ -182,10 +191,14 @@ int RenderCommand::run() {
     if (m_cmd->get_option("--frames")->count() > 0) render.frames = parseFrameRange(m_framesText);
     render.photonUpdateFull = m_photonUpdate == "full";
     render.sceneRebuildEachFrame = m_sceneUpdate == "rebuild";
+    render.photonDetectPilots = m_photonDetect == "pilots";
     if (!render.frames)
         refuseWithout(*m_cmd, {"--photon-update", "--scene-update", "--photon-budget", "--photon-groups", "--fps",
-                               "--animation"},
+                               "--animation", "--photon-detect", "--verify-update"},
                       "--frames");
+    if (render.photonUpdateFull)
+        refuseWithout(*m_cmd, {"--photon-detect", "--verify-update", "--photon-budget", "--photon-groups"},
+                      "--photon-update selective");
     if (render.frame.direct != DirectLight::Raster) refuseWithout(*m_cmd, {"--area-light-samples"}, "--direct raster");
     render.lightSamplerAuto = m_cmd->get_option("--light-sampler")->count() == 0;
     render.lightSampling.checkGiven(*m_cmd);

@@ -6,7 +6,9 @@ namespace vkp {
 
 PhotonMapStats buildFramePhotonMap(const Frame& frame, PhotonMap& map, uint32_t firstPath) {
     if (frame.photonUpdate == nullptr) return map.build(firstPath);
-    return frame.photonUpdate->buildPhotonMap(map, firstPath, frame.update);
+    FrameUpdateInfo info = frame.update;
+    info.camera = &frame.gpuCamera;
+    return frame.photonUpdate->buildPhotonMap(map, firstPath, info);
 }
 
 }  // namespace vkp

@@ -12,9 +12,10 @@ namespace vkp {
 
 class PhotonTracePass {
 public:
-    // `pathList`: the Halton offsets PhotonTraceParams.pathList reads (at least 16 bytes).
+    // `pathList`: the Halton offsets PhotonTraceParams.pathList reads (at least 16 bytes);
+    // `tracks`: the paths' tracks PhotonTraceParams.trackPaths writes (at least one GpuPathTrack).
     PhotonTracePass(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& photons,
-                    const vk::Buffer& counters, const vk::Buffer& pathList);
+                    const vk::Buffer& counters, const vk::Buffer& pathList, const vk::Buffer& tracks);
 
     void record(VkCommandBuffer cmd, const gpu::PhotonTraceParams& params) const;
 

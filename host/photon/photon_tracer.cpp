@@ -16,17 +16,21 @@ PhotonTracer::PhotonTracer(vk::Context& context, const Scene& scene, const Scene
     if (!(m_totalPower > 0.0)) throw InputError("the scene's lights emit no power: no photons to trace");
 }
 
-void PhotonTracer::ensureCapacity(uint64_t photonBytes, uint64_t listBytes) {
+void PhotonTracer::ensureCapacity(uint64_t photonBytes, uint64_t listBytes, uint64_t trackBytes) {
+    trackBytes = std::max<uint64_t>(trackBytes, sizeof(gpu::GpuPathTrack));
     const bool photonsFit = m_photons && m_photons.size() >= photonBytes;
     const bool listFits = m_pathList && m_pathList.size() >= listBytes;
-    if (photonsFit && listFits) return;
+    const bool tracksFit = m_tracks && m_tracks.size() >= trackBytes;
+    if (photonsFit && listFits && tracksFit) return;
     m_pass.reset();  // bound to the old buffers; made again by the next trace
     if (!photonsFit) m_photons = vk::Buffer(m_context, "photon slots", photonBytes, vk::kStorageUsage);
     if (!listFits) m_pathList = vk::Buffer(m_context, "photon path list", std::max<uint64_t>(listBytes, 16), vk::kStorageUsage);
+    if (!tracksFit) m_tracks = vk::Buffer(m_context, "photon path tracks", trackBytes, vk::kStorageUsage);
 }
 
-void PhotonTracer::reserve(uint32_t paths, uint32_t maxDeposits) {
-    ensureCapacity(uint64_t(paths) * maxDeposits * sizeof(gpu::GpuPhoton), 16);  // the kernel: at the first trace
+void PhotonTracer::reserve(uint32_t paths, uint32_t maxDeposits, bool tracks) {
+    // the kernel: at the first trace
+    ensureCapacity(uint64_t(paths) * maxDeposits * sizeof(gpu::GpuPhoton), 16, tracks ? uint64_t(paths) * sizeof(gpu::GpuPathTrack) : 0);
 }
 
 PhotonCounters PhotonTracer::trace(const PhotonSettings& settings) { return run(settings, settings.paths, false, {}); }
@@ -44,7 +48,7 @@ PhotonCounters PhotonTracer::run(const PhotonSettings& settings, uint32_t paths,
     if (paths == 0 || settings.maxDeposits == 0)
         throw InputError("photon tracing needs at least one path and one deposit per path");
     const uint64_t slots = uint64_t(paths) * settings.maxDeposits;
-    ensureCapacity(slots * sizeof(gpu::GpuPhoton), 16);
+    ensureCapacity(slots * sizeof(gpu::GpuPhoton), 16, settings.trackPaths ? uint64_t(paths) * sizeof(gpu::GpuPathTrack) : 0);
 
     gpu::PhotonTraceParams params{};
     params.sceneCenter = m_sceneCenter;
@@ -56,11 +60,13 @@ PhotonCounters PhotonTracer::run(const PhotonSettings& settings, uint32_t paths,
     params.pathStride = std::max(settings.pathStride, 1u);
     params.pathList = listed ? 1u : 0u;
     params.requiredFlags = settings.requiredFlags;
+    params.trackPaths = settings.trackPaths ? 1u : 0u;
     params.lightCount = m_buffers.lightCount();
     params.totalPower = static_cast<float>(m_totalPower);
     // The kernel is made at the first trace (its pipeline is compiled then): a tracer that never
     // traces (a photon map filled from a selective update's slots) costs no compile.
-    if (!m_pass) m_pass = std::make_unique<PhotonTracePass>(m_context, m_buffers, m_photons, m_counters, m_pathList);
+    if (!m_pass)
+        m_pass = std::make_unique<PhotonTracePass>(m_context, m_buffers, m_photons, m_counters, m_pathList, m_tracks);
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
         m_photons.fillZero(cmd);
         m_counters.fillZero(cmd);

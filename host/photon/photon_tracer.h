@@ -11,6 +11,7 @@
 #include "photon/photon_path_options.h"
 #include "photon/photon_trace_pass.h"
 #include "gpu_scene/scene_buffers.h"
+#include "shared/path_track.glsl"
 #include "shared/photon.glsl"
 #include "vk/buffer.h"
 
@@ -23,6 +24,7 @@ struct PhotonSettings {
     uint32_t seed = 0;
     uint32_t pathStride = 1;      // Halton indices firstPath + j * pathStride (a selective-update group)
     uint32_t requiredFlags = 0;   // gpu::kPhotonPrimary or kPhotonCaustic: store only that kind (PhotonTraceParams)
+    bool trackPaths = false;      // also write each path's track (tracks(), shared/path_track.glsl)
 };
 
 struct PhotonCounters {
@@ -63,10 +65,13 @@ public:
     PhotonCounters traceList(const PhotonSettings& settings, std::span<const uint32_t> paths,
                              const std::function<void(VkCommandBuffer)>& after = {});
 
-    // Allocates the slots of `paths` paths now, so traces of up to that many never reallocate.
-    void reserve(uint32_t paths, uint32_t maxDeposits);
+    // Allocates the slots (and with `tracks` the tracks) of `paths` paths now, so traces of up to
+    // that many never reallocate.
+    void reserve(uint32_t paths, uint32_t maxDeposits, bool tracks = false);
 
     const vk::Buffer& photons() const { return m_photons; }
+    // GpuPathTrack per path of the last trace with PhotonSettings::trackPaths (path j at j).
+    const vk::Buffer& tracks() const { return m_tracks; }
     // Watts carried by a photon of relative power 1: total light power / paths.
     double nominalPhotonPower() const { return m_nominalPower; }
     uint64_t slotCount() const { return m_slotCount; }  // slots written by the last trace
@@ -81,10 +86,11 @@ private:
     vk::Buffer m_photons;
     vk::Buffer m_counters;
     vk::Buffer m_pathList;                    // PhotonTraceParams.pathList's offsets (traceList)
-    std::unique_ptr<PhotonTracePass> m_pass;  // bound to m_photons and m_pathList: rebuilt when one is reallocated
+    vk::Buffer m_tracks;                      // PhotonTraceParams.trackPaths's tracks (one placeholder until asked)
+    std::unique_ptr<PhotonTracePass> m_pass;  // bound to m_photons, m_pathList and m_tracks: rebuilt when one is reallocated
     PhotonCounters run(const PhotonSettings& settings, uint32_t paths, bool listed,
                        const std::function<void(VkCommandBuffer)>& after);
-    void ensureCapacity(uint64_t photonBytes, uint64_t listBytes);
+    void ensureCapacity(uint64_t photonBytes, uint64_t listBytes, uint64_t trackBytes = 0);
     double m_nominalPower = 0.0;
     uint64_t m_slotCount = 0;
 };

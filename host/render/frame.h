@@ -21,6 +21,7 @@ struct FrameUpdateInfo {
     double time = 0.0;        // seconds: frame / fps
     bool firstFrame = true;   // the first frame of the sequence (or a still render)
     uint64_t sceneGeneration = 0;  // changes when the frames loop rebuilt the scene (new buffers)
+    const gpu::GpuCamera* camera = nullptr;  // the frame's view (set by buildFramePhotonMap): what is visible first
 };
 
 // Who computes the direct light at the first path vertex (--direct).

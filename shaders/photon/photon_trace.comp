@@ -13,6 +13,8 @@
 // deposit's number, so the path's own trajectory is unchanged), each then weighted n / M: the
 // map's expected flux is every deposit's, as if the path had n slots (ending the path at M lost
 // the light it still carried: 17 % of a furnace of albedo 0.8 at 8 slots).
+// With params.trackPaths each path also writes its track (shared/path_track.glsl): its ray origins,
+// last hit or escape direction and light, which a selective update tests against what moved.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 
@@ -21,12 +23,14 @@
 #include "render/path_vertex.glsl"
 #include "shared/halton.glsl"
 #include "shared/photon.glsl"
+#include "shared/path_track.glsl"
 
 layout(local_size_x = kPhotonTraceGroupSize) in;
 
 layout(std430, set = 0, binding = kPhotonTracePhotonBinding) buffer Photons { GpuPhoton photons[]; };
 layout(std430, set = 0, binding = kPhotonTraceCounterBinding) buffer Counters { uint counters[]; };
 layout(std430, set = 0, binding = kPhotonTracePathListBinding) readonly buffer PathList { uint pathList[]; };
+layout(std430, set = 0, binding = kPhotonTraceTrackBinding) writeonly buffer Tracks { GpuPathTrack tracks[]; };
 
 layout(push_constant) uniform Push { PhotonTraceParams params; };
 
@@ -135,6 +139,22 @@ EmittedPhoton emitPhoton(uint index, vec2 uPosition, vec2 uDirection, float uSid
     return e;
 }
 
+// The path's track as it is traced: vertex k of the path (a ray origin or its last hit) kept
+// exactly while k < kPathTrackVertices, and from the last kept one on bounded by a box.
+uint trackCount = 0u;
+vec3 trackLo = vec3(kInfinity);
+vec3 trackHi = vec3(-kInfinity);
+
+void trackVertex(uint local, vec3 p) {
+    if (params.trackPaths == 0u) return;
+    if (trackCount < kPathTrackVertices) tracks[local].vertex[trackCount] = vec4(p, 0.0f);
+    if (trackCount + 1u >= kPathTrackVertices) {
+        trackLo = min(trackLo, p);
+        trackHi = max(trackHi, p);
+    }
+    trackCount += 1u;
+}
+
 void main() {
     uint local = gl_GlobalInvocationID.x;
     if (local >= params.pathCount || params.lightCount == 0u) return;
@@ -155,13 +175,19 @@ void main() {
     Ray ray = rayFrom(e.origin, e.dir);
     uint outcome = kPhotonCounterCount;  // set by each break below; left as is, the loop's bound or
     uint bounces = 0u;                   // lavapipe's budget ended the path (fewer bounces)
+    vec3 lastHit = vec3(0.0f);
+    bool endsAtHit = false;  // the path's last ray hit a surface (else it left the scene or was cut before tracing)
     for (uint depth = 0u; depth < kPhotonMaxBounces; ++depth) {
         bounces += 1u;
         PathVertex v;
+        trackVertex(local, ray.origin);
+        endsAtHit = false;
         if (!traceVertex(ray, v)) {
             outcome = kPhotonCounterLost;
             break;
         }
+        endsAtHit = true;
+        lastHit = v.hit.position;
         power *= v.transmittance;
 
         if (storesPhotons(v.bsdf)) {
@@ -212,6 +238,19 @@ void main() {
         outcome = kPhotonCounterTruncated;
     }
     atomicAdd(counters[outcome], 1u);
+    if (params.trackPaths != 0u) {
+        if (endsAtHit) trackVertex(local, lastHit);
+        uint header = min(trackCount, kPathTrackVertices);
+        if (trackCount > kPathTrackVertices) header |= kPathTrackOverflow;
+        if (outcome == kPhotonCounterLost) header |= kPathTrackEscaped;
+        tracks[local].vertex[0].w = uintBitsToFloat(header);
+        tracks[local].vertex[1].w = uintBitsToFloat(lightIndex);
+        tracks[local].vertex[2].w = ray.dir.x;
+        tracks[local].vertex[3].w = ray.dir.y;
+        tracks[local].vertex[4].w = ray.dir.z;
+        tracks[local].boxLo = vec4(trackLo, 0.0f);
+        tracks[local].boxHi = vec4(trackHi, 0.0f);
+    }
     if (deposits > params.maxDeposits) {  // each kept deposit stands for deposits / maxDeposits of them
         float weight = float(deposits) / float(params.maxDeposits);
         for (uint k = 0u; k < params.maxDeposits; ++k) {

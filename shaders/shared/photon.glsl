@@ -97,7 +97,8 @@ struct PhotonTraceParams {
     uint requiredFlags;   // kPhotonPrimary / kPhotonCaustic: the only kind the map keeps. Other deposits
                           // take no slot, and a path ends once it can make no more of that kind (the
                           // caustic map's paths pass photon-storing surfaces they leave by a delta lobe)
-    uint pad0;
+    uint trackPaths;      // 1: write each path's track (shared/path_track.glsl) at the track binding, path
+                          // `local` at index local (a selective update's exact change detection); 0: off
     uint pad1;
     uint pad2;
 };

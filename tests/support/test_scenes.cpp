@@ -174,6 +174,7 @@ Mesh sphereMesh(float r, uint32_t material, int rings, int segments) {
                 for (int k = 0; k < 3; ++k) {
                     t.p[k] = r * tri[k];
                     t.n[k] = tri[k];
+                    t.uv[k] = glm::vec2(0.0f);  // Triangle leaves them uninitialised
                 }
                 if (glm::length(glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0])) < 1e-8f) continue;  // at the poles
                 t.material = material;
@@ -209,6 +210,24 @@ glm::mat4 randomTransform(std::mt19937& rng, const Bounds& bounds, float size) {
 }
 
 // The Cornell box with a sphere and a box mesh placed `count` times (plus their static part).
+Scene glassSphereOverFloor(glm::vec3 centre, float radius) {
+    Scene scene = shadowTestScene();
+    addQuad(scene, {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2});  // floor, facing up
+    addPointLight(scene, {0.0f, 1.5f, 0.0f}, glm::vec3(20.0f));
+    scene.bounds.grow(glm::vec3(0.0f, 1.5f, 0.0f));
+    Material glass;
+    glass.name = "glass";
+    glass.metallic = 0.0f;
+    glass.roughness = 0.0f;
+    glass.transmission = 1.0f;
+    glass.ior = 1.5f;
+    glass.thickness = 2.0f * radius;
+    scene.materials.push_back(glass);
+    scene.meshes.push_back(sphereMesh(radius, static_cast<uint32_t>(scene.materials.size() - 1), 16, 24));
+    scene.instances.push_back({0, glm::translate(glm::mat4(1.0f), centre), -1});
+    return scene;
+}
+
 Scene instancedCornell(uint32_t count, uint32_t seed) {
     Scene scene = shippedScene("cornell-box");
     Material grey;

@@ -51,5 +51,10 @@ glm::mat4 randomTransform(std::mt19937& rng, const Bounds& bounds, float size);
 // The Cornell box with `count` instances (alternately the sphere and the box, grey, non-emissive)
 // at random transforms in the middle of the room.
 Scene instancedCornell(uint32_t count, uint32_t seed);
+// A glass sphere (radius `radius`, ior 1.5, an instance of a mesh: it moves in place) centred at
+// `centre` over a grey floor [-2, 2] x [-2, 2] (y = 0) under a point light at (0, 1.5, 0), which
+// focuses a caustic on the floor under it; the bounds are the floor's and the light's, whatever
+// the sphere's place (as an animation's frames keep the still bounds).
+Scene glassSphereOverFloor(glm::vec3 centre, float radius = 0.25f);
 
 }  // namespace vkp::test

@@ -19,6 +19,7 @@
 #include "shared/kernels/photon_trace.glsl"
 #include "shared/kernels/prefix_scan.glsl"
 #include "shared/kernels/raster_direct.glsl"
+#include "shared/kernels/selective_mark.glsl"
 #include "util/errors.h"
 #include "vk/buffer.h"
 #include "vk/kernel.h"
@@ -65,7 +66,8 @@ std::vector<vk::KernelInterface> everyKernel() {
             vk::interfaceOf<CausticEstimateKernel>(), vk::interfaceOf<FinalGatherKernel>(),
             vk::interfaceOf<SppmUpdateKernel>(), vk::interfaceOf<RadiancePhotonsKernel>(),
             vk::interfaceOf<GuideCacheBuildKernel>(), vk::interfaceOf<ShadowVolumeBuildKernel>(),
-            vk::interfaceOf<RasterDirectKernel>(), vk::interfaceOf<AovKernel>()};
+            vk::interfaceOf<RasterDirectKernel>(), vk::interfaceOf<AovKernel>(),
+            vk::interfaceOf<SelectiveMarkKernel>()};
 }
 
 class KernelInterfaceTest : public test::GpuTest {};

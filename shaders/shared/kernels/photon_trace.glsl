@@ -11,6 +11,7 @@ const uint kPhotonTraceGroupSize = 64u;
 const uint kPhotonTracePhotonBinding = kSceneBindingCount + 0u;   // GpuPhoton per slot: (path - firstPath) * maxDeposits + k
 const uint kPhotonTraceCounterBinding = kSceneBindingCount + 1u;  // uint[kPhotonCounterCount]
 const uint kPhotonTracePathListBinding = kSceneBindingCount + 2u; // uint per path: Halton offset (PhotonTraceParams.pathList)
+const uint kPhotonTraceTrackBinding = kSceneBindingCount + 3u;    // GpuPathTrack per path (PhotonTraceParams.trackPaths)
 
 // Slots of the counter buffer.
 const uint kPhotonCounterStoredCaustic = 0u;
@@ -35,7 +36,7 @@ namespace vkp::gpu {
 
 struct PhotonTraceKernel {
     static constexpr const char* kShader = "photon_trace.comp";
-    static constexpr uint32_t kBindingCount = kPhotonTracePathListBinding + 1u;
+    static constexpr uint32_t kBindingCount = kPhotonTraceTrackBinding + 1u;
     static constexpr uint32_t kGroupSize = kPhotonTraceGroupSize;
     using Push = PhotonTraceParams;
 };
