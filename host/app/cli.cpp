@@ -13,6 +13,7 @@
 #include "app/commands.h"
 #include "app/info_command.h"
 #include "app/merge_command.h"
+#include "image/exposure.h"
 #include "render/crop_window.h"
 #include "util/cli_choice.h"
 #include "util/check_range.h"
@@ -240,8 +241,12 @@ int runCommandLine(int argc, const char* const* argv) {
                           "(clip to [0, 1]); the EXR stays linear")
         ->transform(oneOf(views))
         ->option_text(choiceText(views, render.display.view));
-    renderCmd->add_option("--exposure", render.display.exposureEv,
-                          "Exposure of the PNG in stops: the radiance is scaled by 2^EV before the view transform")
+    std::string exposureText = "auto";  // parsed after CLI11 (image/exposure.h)
+    renderCmd->add_option("--exposure", exposureText,
+                          "Exposure of the PNG in stops: the radiance is scaled by 2^EV before the view transform; "
+                          "auto meters the image (its trimmed log-average luminance to mid grey 0.18); the EXR "
+                          "stays linear and records the EV")
+        ->type_name("auto|EV")
         ->capture_default_str();
     const std::vector<std::pair<std::string, LightSampler>> lightSamplers{{"power", LightSampler::Power},
                                                                           {"bvh", LightSampler::Bvh},
@@ -376,7 +381,7 @@ int runCommandLine(int argc, const char* const* argv) {
             if (!tileText.empty()) render.frame.crop = parseTile(tileText, render.frame.width, render.frame.height);
             if (!cropText.empty()) render.frame.crop = parseCrop(cropText);
             render.frame.check();
-            render.display.check();
+            render.display = parseExposure(exposureText, render.display);
             render.environment.check();
             if (renderCmd->get_option("--aov")->count() > 0) render.aov = parseAovList(aovList);
             if (renderCmd->get_option("--frames")->count() > 0) render.frames = parseFrameRange(framesText);
