@@ -12,6 +12,7 @@
 #include "app/interrupt.h"
 #include "app/progress.h"
 #include "image/atomic_file.h"
+#include "image/exposure.h"
 #include "image/exr.h"
 #include "image/metrics.h"
 #include "image/png.h"
@@ -165,6 +166,13 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     stats.set("timings.loadSeconds", loadSeconds);
     stats.set("timings.totalSeconds", totalSeconds);
 
+    // --exposure auto: metered on this image (a part of an image meters its window; `vkphoton
+    // merge` meters the joined image again).
+    // Under a constant environment its pixels are the backdrop, which the meter leaves out.
+    const std::optional<glm::vec3> backdrop = scene.environment.present && scene.environment.width == 0
+                                                  ? std::optional<glm::vec3>(scene.environment.radiance)
+                                                  : std::nullopt;
+    const DisplaySettings display = resolveExposure(options.display, result.image, backdrop);
     const FrameSettings& frame = options.frame;
     const auto spp = stats.get<uint32_t>("counters.samplesPerPixel");
     const auto renderSeconds = stats.get<double>("timings.renderSeconds");
@@ -183,10 +191,12 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
         {"vkphoton/partial", partial ? "true" : "false"},
         {"vkphoton/stopReason", stopReason},
         // The PNG's display settings; the EXR's pixels are linear radiance, untouched by them.
-        {"vkphoton/exposure", fmt::format("{}", options.display.exposureEv)},
         {"vkphoton/tonemap", viewTransformName(options.display.view)},
         {"vkphoton/environment", scene.environment.present ? scene.environment.source : "none"},
     };
+    for (auto& attribute : exposureAttributes(display, backdrop)) attributes.push_back(std::move(attribute));
+    stats.set("display.exposure", double(display.exposureEv));
+    stats.set("display.exposureMode", std::string(display.autoExposure ? "auto" : "fixed"));
     // --tile / --crop: where the part belongs, for `vkphoton merge` (app/merge_command.h).
     for (auto& attribute : partAttributes(frame, stats)) attributes.push_back(std::move(attribute));
     if (frame.crop) stats.set("crop", frame.crop->text());
@@ -197,7 +207,7 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     }
     // Both or neither: a signal or a failure never leaves a new EXR beside an old PNG.
     writeFilesTogether({{exrPath, exrBytes(exrPath, result.image, attributes, aovs)},
-                        {pngPath, pngBytes(pngPath, result.image, options.display)}});
+                        {pngPath, pngBytes(pngPath, result.image, display)}});
     if (!options.statsJson.empty()) {
         nlohmann::json json = stats.toJson();
         json["meanRadiance"] = meanRadiance(result.image);
@@ -206,6 +216,8 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     for (const std::string& warning : stats.warnings()) fmt::print(stderr, "warning: {}\n", warning);
     if (!options.quiet) {
         for (const std::string& note : stats.notes()) fmt::print(stderr, "{}\n", note);
+        if (display.autoExposure)
+            fmt::print(stderr, "exposure auto: EV {:+.2f} (the PNG; --exposure EV fixes it)\n", display.exposureEv);
         fmt::print(stderr, "wrote {} and {} ({} spp{}, {:.2f} s rendering, {:.2f} Mpaths/s)\n", printable(exrPath.string()),
                    printable(pngPath.string()), spp, partial ? ", partial: " + stopReason : "", renderSeconds,
                    stats.get<double>("counters.pathsPerSecond") / 1e6);

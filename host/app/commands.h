@@ -34,7 +34,8 @@ struct RenderCommandOptions {
     std::filesystem::path output;       // .exr; empty: out/<scene name>.exr
     std::filesystem::path statsJson;    // empty: none
     FrameSettings frame;
-    DisplaySettings display;            // the PNG's exposure and view transform
+    // The PNG's exposure and view transform: metered (--exposure auto) unless --exposure EV.
+    DisplaySettings display{ViewTransform::AgX, 0.0f, true};
     AovSettings aov;                    // --aov: extra EXR channels
     EnvironmentSettings environment;   // --env, --env-strength, --env-rotation
     // --light-sampler, --triangle-sampling, the photon cells' flags. Without --light-sampler the

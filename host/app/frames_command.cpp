@@ -7,6 +7,7 @@
 #include "app/merge_command.h"
 #include "app/progress.h"
 #include "image/atomic_file.h"
+#include "image/exposure.h"
 #include "image/exr.h"
 #include "image/metrics.h"
 #include "image/png.h"
@@ -155,6 +156,14 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
             {"vkphoton/partial", stats.get<bool>("partial") ? "true" : "false"},
             {"vkphoton/stopReason", stats.get<std::string>("stopReason")},
         };
+        // --exposure auto meters each frame on its own, so frame N still equals frame N rendered
+        // alone; a sequence that must not change exposure takes a fixed --exposure EV.
+        const Environment& environment = frameScene.scene().environment;
+        const std::optional<glm::vec3> backdrop =
+            environment.present && environment.width == 0 ? std::optional<glm::vec3>(environment.radiance) : std::nullopt;
+        const DisplaySettings display = resolveExposure(options.display, result.image, backdrop);
+        for (auto& attribute : exposureAttributes(display, backdrop)) attributes.push_back(std::move(attribute));
+        attributes.emplace_back("vkphoton/tonemap", viewTransformName(display.view));
         // --tile / --crop: the same part of every frame, with what `vkphoton merge` needs.
         for (auto& attribute : partAttributes(settings, stats)) attributes.push_back(std::move(attribute));
         if (settings.crop) stats.set("crop", settings.crop->text());
@@ -162,7 +171,7 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
         if (options.aov.any())
             aovs = aovChannels(renderAovs(renderer.gpuScene(), makeFrame(frameScene.scene(), settings)), options.aov);
         writeFilesTogether({{exrPath, exrBytes(exrPath, result.image, attributes, aovs)},
-                            {pngPath, pngBytes(pngPath, result.image, options.display)}});
+                            {pngPath, pngBytes(pngPath, result.image, display)}});
         ++written;
         frames.push_back({{"frame", f},
                           {"time", time},
@@ -185,6 +194,7 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
                           {"triangles", renderer.gpuScene().arrays().triangles.size()},
                           {"partial", stats.get<bool>("partial")},
                           {"meanRadiance", meanRadiance(result.image)},
+                          {"exposure", display.exposureEv},
                           {"output", exrPath.string()}});
         if (options.verifyUpdate) {  // per map and in total; a summary line per frame
             nlohmann::json maps = nlohmann::json::array();

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "scene/environment.h"
 #include "scene/gltf_extensions.h"
 #include "scene/gltf_loader.h"
 
@@ -65,6 +66,12 @@ void printText(const json& r) {
     const json& l = r["lights"];
     fmt::print("lights       {} point, {} spot, {} directional; {} emissive triangles\n", l["point"].get<int>(),
                l["spot"].get<int>(), l["directional"].get<int>(), l["emissiveTriangles"].get<uint64_t>());
+    if (l["emissiveTriangles"].get<uint64_t>() > 0)
+        fmt::print("             emitters give {:.3g} % of the light a white sky would{}\n",
+                   100.0 * l["emitterShare"].get<double>(),
+                   l["defaultSky"].get<bool>()
+                       ? fmt::format(": under {:g} %, render adds the white sky", 100.0 * kMinEmitterShare)
+                       : std::string());
     const json& cameras = r["cameras"];
     fmt::print("cameras      {}{}\n", cameras.size(),
                cameras.empty() ? " (renders use a three-quarter view framing the bounds)" : "");
@@ -117,6 +124,13 @@ json sceneReport(const Scene& scene) {
                         {"spot", byType[int(LightType::Spot)]},
                         {"directional", byType[int(LightType::Directional)]},
                         {"emissiveTriangles", emissiveTriangles}};
+    // The default lighting rule (scene/environment.h): is the white sky added without --env?
+    const EmitterShare emitters = emissiveTriangles > 0 ? emitterShare(scene) : EmitterShare{};
+    const double share = emitters.share();
+    report["lights"]["emitterShare"] = share;
+    report["lights"]["emitterPower"] = emitters.emitterPower;  // W, as the light sampler weighs them
+    report["lights"]["defaultSkyPower"] = emitters.skyPower;
+    report["lights"]["defaultSky"] = scene.lights.empty() && share < kMinEmitterShare;
     report["cameras"] = json::array();
     for (const Camera& c : scene.cameras)
         report["cameras"].push_back(c.orthoHalfHeight > 0.0f

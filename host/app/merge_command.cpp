@@ -8,6 +8,7 @@
 
 #include "app/commands.h"
 #include "image/atomic_file.h"
+#include "image/exposure.h"
 #include "image/png.h"
 #include "image/view_transform.h"
 #include "render/crop_window.h"
@@ -86,6 +87,9 @@ DisplaySettings displayOf(const Part& part) {
             display.exposureEv = DisplaySettings().exposureEv;
         }
     }
+    // Metered parts: the joined image is metered again, as the full render would have been.
+    const auto mode = part.attributes.find("vkphoton/exposureMode");
+    display.autoExposure = mode != part.attributes.end() && mode->second == "auto";
     return display;
 }
 
@@ -167,14 +171,20 @@ int runMerge(const MergeCommandOptions& options) {
         const auto it = part.attributes.find("vkphoton/renderSeconds");
         if (it != part.attributes.end()) renderSeconds += std::atof(it->second.c_str());
     }
+    const auto backdrop = parts.front().attributes.find(kExposureBackgroundAttribute);
+    const DisplaySettings display =
+        resolveExposure(displayOf(parts.front()), full,
+                        backdrop == parts.front().attributes.end() ? std::nullopt : parseExposureBackground(backdrop->second));
     for (const auto& [key, value] : parts.front().attributes)
         if (key.rfind("vkphoton/", 0) == 0 && key != kCrop && key != kFullWidth && key != kFullHeight &&
-            key != kPartSettings && key != "vkphoton/totalSeconds")
+            key != kPartSettings && key != "vkphoton/totalSeconds" && key != "vkphoton/exposure")
             attributes.emplace_back(key, value);
+    if (parts.front().attributes.count("vkphoton/exposure"))
+        attributes.emplace_back("vkphoton/exposure", fmt::format("{}", display.exposureEv));
     attributes.emplace_back("vkphoton/renderSeconds", fmt::format("{:.3f}", renderSeconds));
     attributes.emplace_back("vkphoton/mergedParts", std::to_string(parts.size()));
     writeFilesTogether({{exrPath, exrBytes(exrPath, full, attributes)},
-                        {pngPath, pngBytes(pngPath, full, displayOf(parts.front()))}});
+                        {pngPath, pngBytes(pngPath, full, display)}});
     if (!options.quiet)
         fmt::print(stderr, "merged {} parts into {} and {} ({}x{})\n", parts.size(), name(exrPath), name(pngPath), width,
                    height);

@@ -12,6 +12,7 @@
 #include "app/cli_options.h"
 #include "app/commands.h"
 #include "app/subcommand.h"
+#include "image/exposure.h"
 #include "render/crop_window.h"
 #include "util/check_range.h"
 #include "util/cli_choice.h"
@@ -53,6 +54,7 @@ private:
     std::string m_photonUpdate = "selective";
     std::string m_sceneUpdate = "inplace";
     std::string m_photonDetect = "tracks";
+    std::string m_exposureText = "auto";  // parsed after CLI11 (image/exposure.h)
     std::string m_integratorName = kDefaultIntegrator;
     bool m_progressive = false;
     std::unique_ptr<IntegratorOptions> m_integratorOptions;
@@ -96,8 +98,11 @@ RenderCommand::RenderCommand(CLI::App& app) {
                       "to [0, 1]); the EXR stays linear")
         ->transform(oneOf(views))
         ->option_text(choiceText(views, render.display.view));
-    m_cmd->add_option("--exposure", render.display.exposureEv,
-                      "Exposure of the PNG in stops: the radiance is scaled by 2^EV before the view transform")
+    m_cmd->add_option("--exposure", m_exposureText,
+                      "Exposure of the PNG in stops: the radiance is scaled by 2^EV before the view transform; auto "
+                      "meters the image (its trimmed log-average luminance to mid grey 0.18); the EXR stays linear "
+                      "and records the EV")
+        ->type_name("auto|EV")
         ->capture_default_str();
     render.lightSampling.addOptions(*m_cmd);
     addIntegratorOptions();
@@ -185,7 +190,7 @@ int RenderCommand::run() {
     if (!m_tileText.empty()) render.frame.crop = parseTile(m_tileText, render.frame.width, render.frame.height);
     if (!m_cropText.empty()) render.frame.crop = parseCrop(m_cropText);
     render.frame.check();
-    render.display.check();
+    render.display = parseExposure(m_exposureText, render.display);
     render.environment.check();
     if (m_cmd->get_option("--aov")->count() > 0) render.aov = parseAovList(m_aovList);
     if (m_cmd->get_option("--frames")->count() > 0) render.frames = parseFrameRange(m_framesText);

@@ -30,6 +30,9 @@ struct DisplaySettings {
     // towards white instead of skewing to the nearest primary or secondary.
     ViewTransform view = ViewTransform::AgX;
     float exposureEv = 0.0f;  // the radiance is scaled by 2^exposureEv first
+    // --exposure auto: exposureEv is to be metered from the image (image/exposure.h) before the
+    // PNG is written; the PNG writer itself always applies exposureEv.
+    bool autoExposure = false;
 
     // Throws InputError naming --exposure unless it is finite and within [-64, 64].
     void check() const;

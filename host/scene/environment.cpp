@@ -10,7 +10,11 @@
 #include <fmt/format.h>
 #include <stb/stb_image.h>
 
+#include "gpu_scene/textured_emission.h"
 #include "image/exr.h"
+#include "scene/environment_distribution.h"
+#include "shared/constants.glsl"
+#include "shared/sampling.glsl"
 #include "scene/scene.h"
 #include "util/errors.h"
 
@@ -160,19 +164,50 @@ bool sceneHasLights(const Scene& scene) {
     return false;
 }
 
+EmitterShare emitterShare(const Scene& scene) {
+    EmitterShare share;
+    const TexturedEmission emission(scene);
+    for (const Triangle& t : scene.triangles) {
+        if (t.material >= scene.materials.size()) continue;
+        const Material& m = scene.materials[t.material];
+        if (!glm::any(glm::greaterThan(m.emissive, glm::vec3(0.0f)))) continue;
+        const double le = gpu::luminance(glm::vec3(emission.meanEmission(t)));
+        const double area = 0.5 * glm::length(glm::cross(glm::dvec3(t.p[1] - t.p[0]), glm::dvec3(t.p[2] - t.p[0])));
+        share.emitterPower += gpu::kPi * le * area * (m.doubleSided ? 2.0 : 1.0);
+    }
+    Environment sky;
+    sky.present = true;
+    sky.radiance = glm::vec3(1.0f);
+    const double radius = scene.bounds.empty() ? 0.0 : 0.5 * glm::length(glm::dvec3(scene.bounds.extent()));
+    share.skyPower = environmentPower(sky, std::max(radius, 1e-6));
+    return share;
+}
+
 void applyEnvironment(Scene& scene, const EnvironmentSettings& settings, std::string& note,
                       const EnvironmentLimits& limits) {
     settings.check();
     Environment env;
     glm::vec3 constant(0.0f);
     if (settings.value.empty()) {
-        if (sceneHasLights(scene)) {
+        if (!scene.lights.empty()) {  // punctual lights light the scene; --exposure auto shows it
             scene.environment = Environment{};
             return;
         }
+        if (sceneHasLights(scene)) {
+            const EmitterShare share = emitterShare(scene);
+            if (share.share() >= kMinEmitterShare) {
+                scene.environment = Environment{};
+                return;
+            }
+            note = fmt::format("note: the emissive surfaces give {:.2g} % of the light a white sky would (under {:g} %): "
+                               "the scene is lit by a uniform white environment of radiance 1 as well (--env to choose "
+                               "another, --env 0 for the emitters alone)",
+                               100.0 * share.share(), 100.0 * kMinEmitterShare);
+        } else {
+            note = "note: the scene has no lights: it is lit by a uniform white environment of radiance 1 (--env to "
+                   "choose another, --env 0 to refuse such scenes)";
+        }
         constant = glm::vec3(1.0f);
-        note = "note: the scene has no lights: it is lit by a uniform white environment of radiance 1 (--env to choose "
-               "another, --env 0 to refuse such scenes)";
     } else if (parseEnvironmentConstant(settings.value, constant)) {
         for (int k = 0; k < 3; ++k)
             if (!std::isfinite(constant[k]) || constant[k] < 0.0f || constant[k] > 1.0e20f)

@@ -7,6 +7,7 @@
 
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_morph.h"
+#include "scene/gltf_primitive_modes.h"
 #include "util/errors.h"
 
 namespace vkp {
@@ -152,12 +153,12 @@ std::vector<bool> planInstancedMeshes(const tinygltf::Model& model, const std::v
         uint64_t triangles = 0;
         bool emissive = false;
         for (const tinygltf::Primitive& primitive : model.meshes[m].primitives) {
-            if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != -1) continue;
+            if (!isTriangleMode(primitive.mode)) continue;
             const auto position = primitive.attributes.find("POSITION");
             const int accessor = primitive.indices >= 0 ? primitive.indices
                                  : position != primitive.attributes.end() ? position->second : -1;
             if (accessor >= 0 && static_cast<size_t>(accessor) < model.accessors.size())
-                triangles += model.accessors[accessor].count / 3;
+                triangles += triangleCountOfMode(primitive.mode, model.accessors[accessor].count);
             if (primitive.material >= 0 && static_cast<size_t>(primitive.material) < materials.size()) {
                 const glm::vec3 e = materials[primitive.material].emissive;
                 emissive = emissive || e.x > 0.0f || e.y > 0.0f || e.z > 0.0f;

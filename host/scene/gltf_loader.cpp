@@ -24,6 +24,7 @@
 #include "scene/gltf_files.h"
 #include "scene/gltf_instancing.h"
 #include "scene/gltf_materials.h"
+#include "scene/gltf_primitive_modes.h"
 #include "scene/gltf_preflight.h"
 #include "scene/gltf_draco.h"
 #include "scene/gltf_meshopt.h"
@@ -187,12 +188,12 @@ private:
             if (instanced) meshCounted[node.mesh] = true;
             if (node.mesh >= 0 && size_t(node.mesh) < m_model.meshes.size())
                 for (const tinygltf::Primitive& primitive : m_model.meshes[node.mesh].primitives) {
-                    if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != -1) continue;
+                    if (!isTriangleMode(primitive.mode)) continue;
                     const auto position = primitive.attributes.find("POSITION");
                     const int accessor = primitive.indices >= 0 ? primitive.indices
                                          : position != primitive.attributes.end() ? position->second : -1;
                     if (accessor >= 0 && size_t(accessor) < m_model.accessors.size())
-                        triangles += m_model.accessors[accessor].count / 3 * copies;
+                        triangles += triangleCountOfMode(primitive.mode, m_model.accessors[accessor].count) * copies;
                 }
             stack.insert(stack.end(), node.children.rbegin(), node.children.rend());
         }
@@ -488,9 +489,9 @@ private:
 
     void addPrimitive(const tinygltf::Primitive& primitive, const glm::dmat4& world, const std::string& element) {
         m_primitiveElement = element;
-        if (primitive.mode != TINYGLTF_MODE_TRIANGLES && primitive.mode != -1) {
+        if (!isTriangleMode(primitive.mode)) {
             ++m_skippedPrimitives;
-            warn(fmt::format("{}: mode {} is not TRIANGLES (4); skipped", element, primitive.mode));
+            warn(fmt::format("{}: mode {} (points or lines) has no triangles; skipped", element, primitive.mode));
             return;
         }
         const auto attribute = [&](const char* name) {
@@ -523,11 +524,16 @@ private:
             indices.resize(v.positions.size());
             for (size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<uint32_t>(i);
         }
-        if (indices.size() % 3 != 0) fail(element, fmt::format("{} vertices is not a multiple of 3", indices.size()));
+        // A strip or fan of n >= 3 vertices draws n - 2 triangles (fewer draw none); a list needs 3 per triangle.
+        if (primitive.mode != TINYGLTF_MODE_TRIANGLE_STRIP && primitive.mode != TINYGLTF_MODE_TRIANGLE_FAN &&
+            indices.size() % 3 != 0)
+            fail(element, fmt::format("{} vertices is not a multiple of 3", indices.size()));
         for (size_t i = 0; i < indices.size(); ++i)
             if (indices[i] >= v.positions.size())
                 fail(element, fmt::format("index {} (element {} of accessors[{}]) is out of range ({} vertices)",
                                           indices[i], i, primitive.indices, v.positions.size()));
+        // Strips and fans (modes 5 and 6) as triangle lists, with the specification's winding.
+        indices = triangleListIndices(primitive.mode, indices);
         const uint32_t material = primitiveMaterial(primitive, element);
         checkTexCoordSets(m_scene.materials[material], v, element);
         const Material& m = m_scene.materials[material];

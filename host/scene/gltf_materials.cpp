@@ -117,7 +117,95 @@ Material GltfMaterials::convert(int index) {
         fail(element + ".alphaCutoff", fmt::format("{} is not a non-negative number", source.alphaCutoff));
     readExtensions(source, element, m);
     validate(element, m);
+    // After validate: the base colour it clamped becomes the emission.
+    if (extension(source.extensions, "KHR_materials_unlit")) applyUnlit(m);
     return m;
+}
+
+// KHR_materials_pbrSpecularGlossiness by the conversion the Khronos extensions give for it
+// (KHR_materials_specular's and KHR_materials_ior's "specular-glossiness" notes): base colour =
+// diffuse, metallic 0, roughness = 1 - glossiness, KHR_materials_specular with specularColor =
+// the specular colour (factor x texture RGB) and specularFactor 1, and KHR_materials_ior's ior 0
+// (an infinite index: the specular reflectance is the specular colour in every direction). The
+// extension overrides pbrMetallicRoughness, which is its fallback for viewers without it.
+void GltfMaterials::readSpecularGlossiness(const tinygltf::Value& e, const std::string& element, Material& m) {
+    m.baseColor = glm::vec4(1.0f);
+    if (e.IsObject() && e.Has("diffuseFactor")) {
+        const tinygltf::Value& v = e.Get("diffuseFactor");
+        if (!v.IsArray() || v.ArrayLen() != 4) fail(element + ".diffuseFactor", "needs 4 numbers");
+        for (int k = 0; k < 4; ++k) {
+            if (!v.Get(k).IsNumber()) fail(element + ".diffuseFactor", "needs 4 numbers");
+            m.baseColor[k] = static_cast<float>(v.Get(k).GetNumberAsDouble());
+        }
+    }
+    m.baseColorTexture = extensionTexture(e, "diffuseTexture", true, element);
+    m.metallic = 0.0f;
+    m.metallicRoughnessTexture = -1;
+    m.specular = 1.0f;
+    m.specularTexture = -1;
+    m.specularColor = vec3Or(e, "specularFactor", glm::vec3(1.0f), element);
+    m.ior = 0.0f;
+    const double glossiness = numberOr(e, "glossinessFactor", 1.0, element);
+    if (!(glossiness >= 0.0 && glossiness <= 1.0))
+        fail(element + ".glossinessFactor", fmt::format("{} is not within [0, 1]", glossiness));
+    m.roughness = static_cast<float>(1.0 - glossiness);
+    // The texture's RGB (sRGB) is the specular colour, its A (linear) the glossiness.
+    m.specularColorTexture = extensionTexture(e, "specularGlossinessTexture", true, element);
+    if (m.specularColorTexture >= 0) {
+        m.metallicRoughnessTexture = roughnessFromGlossiness(m.specularColorTexture, static_cast<float>(glossiness));
+        m.roughness = 1.0f;  // the baked texture holds 1 - glossinessFactor x A
+    }
+}
+
+int GltfMaterials::roughnessFromGlossiness(int viewIndex, float glossinessFactor) {
+    TextureView view = m_scene.textureViews[viewIndex];
+    const auto key = std::make_pair(view.image, glossinessFactor);
+    if (const auto it = m_roughnessOf.find(key); it != m_roughnessOf.end()) {
+        view.image = it->second;
+    } else {
+        const Texture& source = m_scene.textures[view.image];
+        Texture t;
+        t.name = source.name + " (roughness = 1 - glossiness)";
+        t.width = source.width;
+        t.height = source.height;
+        t.srgb = false;
+        t.rgba8.resize(source.rgba8.size());
+        for (size_t i = 0; i < t.rgba8.size(); ++i) {
+            const float gloss = glossinessFactor * float(source.rgba8[i] >> 24) / 255.0f;
+            const auto roughness = static_cast<uint32_t>(std::lround(255.0f * (1.0f - gloss)));
+            t.rgba8[i] = (roughness << 8) | 0xff000000u;  // R (occlusion) 0, G roughness, B (metallic) 0, A 1
+        }
+        view.image = static_cast<int>(m_scene.textures.size());
+        m_scene.textures.push_back(std::move(t));
+        m_roughnessOf[key] = view.image;
+    }
+    if (const auto it = m_viewOf.find(view); it != m_viewOf.end()) return it->second;
+    const int index = static_cast<int>(m_scene.textureViews.size());
+    m_scene.textureViews.push_back(view);
+    m_viewOf[view] = index;
+    return index;
+}
+
+// KHR_materials_unlit: the surface shows its base colour (factor x texture) and is not lit. As a
+// radiometric material: it emits radiance = base colour (the base colour texture becomes the
+// emissive texture, sRGB as before) and reflects and transmits nothing (black base colour, no
+// specular, coat, sheen or transmission); alpha (MASK, BLEND) is kept. So every ray that reaches
+// it, the camera's and bounced ones, sees the base colour, and, being an emitter, it lights what
+// is around it like any emissive surface (a rasterizer's unlit surface lights nothing). COLOR_0
+// does not multiply emission in vkphoton, so an unlit surface ignores vertex colours.
+void GltfMaterials::applyUnlit(Material& m) {
+    m.emissive = glm::vec3(m.baseColor);
+    m.emissiveTexture = m.baseColorTexture;
+    m.baseColor = glm::vec4(0.0f, 0.0f, 0.0f, m.baseColor.w);  // the texture's alpha still cuts out
+    m.metallic = 0.0f;
+    m.metallicRoughnessTexture = -1;
+    m.specular = 0.0f;
+    m.specularTexture = -1;
+    m.transmission = 0.0f;
+    m.transmissionTexture = -1;
+    m.clearcoat = 0.0f;
+    m.sheenColor = glm::vec3(0.0f);
+    m.normalTexture = -1;
 }
 
 void GltfMaterials::readExtensions(const tinygltf::Material& source, const std::string& element, Material& m) {
@@ -154,6 +242,8 @@ void GltfMaterials::readExtensions(const tinygltf::Material& source, const std::
         m.sheenColorTexture = extensionTexture(*e, "sheenColorTexture", true, sheen);
         m.sheenRoughnessTexture = extensionTexture(*e, "sheenRoughnessTexture", false, sheen);
     }
+    if (const auto* e = extension(source.extensions, "KHR_materials_pbrSpecularGlossiness"))
+        readSpecularGlossiness(*e, name("KHR_materials_pbrSpecularGlossiness"), m);
     // Not rendered: one line per material, naming it.
     for (const char* ext : {"KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_dispersion"})
         if (extension(source.extensions, ext))

@@ -40,6 +40,13 @@ private:
     // A textureInfo object `key` of an extension object (KHR_materials_*), or -1 when absent.
     int extensionTexture(const tinygltf::Value& object, const char* key, bool srgb, const std::string& element);
     double textureScale(const tinygltf::Value& object, const char* key, const std::string& element);
+    // KHR_materials_pbrSpecularGlossiness and KHR_materials_unlit, converted to what the
+    // metallic-roughness material renders (docs/scene-format.md, "Materials").
+    void readSpecularGlossiness(const tinygltf::Value& extension, const std::string& element, Material& material);
+    void applyUnlit(Material& material);
+    // A metallic-roughness texture (G = 1 - glossinessFactor x A of the view's image, B = 0) for
+    // a specularGlossinessTexture view: one image per (image, factor).
+    int roughnessFromGlossiness(int view, float glossinessFactor);
     Texture convertImage(int source, bool srgb);
 
     const tinygltf::Model& m_model;
@@ -47,6 +54,7 @@ private:
     Warn m_warn;
     std::map<std::pair<int, bool>, int> m_textureOf;  // (image, srgb) -> Scene::textures index
     std::map<TextureView, int> m_viewOf;              // -> Scene::textureViews index
+    std::map<std::pair<int, float>, int> m_roughnessOf;  // (image, glossinessFactor) -> Scene::textures index
     int m_default = -1;
 };
 

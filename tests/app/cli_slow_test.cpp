@@ -352,9 +352,10 @@ TEST(Cli, ExposureAndTonemapChangeThePngNotTheExr) {
     ExrAttributes a, b;
     const ImageRgb imageA = readExr(dir / "a.exr", &a), imageB = readExr(dir / "b.exr", &b);
     EXPECT_EQ(imageA.pixels, imageB.pixels);  // linear, whatever the PNG shows
-    EXPECT_EQ(exrAttribute(a, "vkphoton/exposure"), "0");
+    EXPECT_EQ(exrAttribute(a, "vkphoton/exposureMode"), "auto");  // metered: AutoExposure.*
     EXPECT_EQ(exrAttribute(a, "vkphoton/tonemap"), "agx");
     EXPECT_EQ(exrAttribute(b, "vkphoton/exposure"), "2.5");
+    EXPECT_EQ(exrAttribute(b, "vkphoton/exposureMode"), "fixed");
     EXPECT_EQ(exrAttribute(b, "vkphoton/tonemap"), "clamp");
     EXPECT_NE(fileBytes(dir / "a.png"), fileBytes(dir / "b.png"));
 
@@ -469,7 +470,8 @@ const std::map<std::string, std::vector<std::string>> kNumericFlags = {
 const std::map<std::string, std::string> kValidHostileValues = {{"--exposure", "-1"}, {"--env-rotation", "-1"}};
 
 // Options whose help names their unit instead of a numeric type (checked with the table anyway).
-const std::map<std::string, std::string> kNumericTypeNames = {{"--fov", "FLOAT"}, {"--env-rotation", "FLOAT"}};
+const std::map<std::string, std::string> kNumericTypeNames = {
+    {"--fov", "FLOAT"}, {"--env-rotation", "FLOAT"}, {"--exposure", "FLOAT"}};  // --exposure: auto or EV
 
 // The table above must list every option whose help gives a numeric type: a new flag fails here
 // until it is added (and so tested below).

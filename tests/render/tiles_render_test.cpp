@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -58,6 +59,22 @@ void expectPartsMergeToTheFullRender(const std::string& name, const std::string&
     const ImageRgb joined = readExr(dir / "merged.exr");
     EXPECT_TRUE(sameBits(whole, joined)) << name << ": the merged parts differ from the full render";
     EXPECT_GT(meanValue(whole), 0.0);
+    // --exposure auto (the default): each part metered its own window; merge meters the joined
+    // image again, so the PNG and the recorded EV are the full render's.
+    const auto bytes = [](const fs::path& path) {
+        std::ifstream in(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    EXPECT_EQ(bytes(dir / "full.png"), bytes(dir / "merged.png")) << name << ": the merged PNG differs";
+    ExrAttributes fullHeader, mergedHeader;
+    readExr(dir / "full.exr", &fullHeader);
+    readExr(dir / "merged.exr", &mergedHeader);
+    const auto exposure = [](const ExrAttributes& attributes) {
+        for (const auto& [key, value] : attributes)
+            if (key == "vkphoton/exposure") return value;
+        return std::string("<missing>");
+    };
+    EXPECT_EQ(exposure(fullHeader), exposure(mergedHeader)) << name;
     fs::remove_all(dir);
 }
 
