@@ -18,6 +18,7 @@
 #include "util/check_range.h"
 #include "util/errors.h"
 #include "util/printable.h"
+#include "view/view_command.h"
 
 namespace vkp {
 namespace {
@@ -351,6 +352,44 @@ int runCommandLine(int argc, const char* const* argv) {
     compareCmd->add_option("b", compare.b, "Second EXR")->required();
     compareCmd->add_flag("--quiet", compare.quiet, "No output, only the exit code");
 
+    // `vkphoton view` (host/view/, docs/viewer.md): the render options that apply to a window.
+    ViewCommandOptions view;
+    bool viewBsdfOnly = false;
+    std::string viewIntegrator = integratorKinds().front().name;
+    CLI::App* viewCmd = app.add_subcommand(
+        "view", "Open an interactive window that refines the image progressively (orbit, pan, dolly, select and move "
+                "nodes; photon maps updated selectively); needs a display (DISPLAY)");
+    viewCmd->add_option("scene", view.render.scene, "glTF 2.0 scene (.gltf or .glb)")->required();
+    addFrameOptions(*viewCmd, view.render.frame, viewBsdfOnly);
+    addViewOptions(*viewCmd, view.render.frame.view);
+    addEnvironmentOptions(*viewCmd, view.render.environment);
+    addDeviceOptions(*viewCmd, view.render.device, view.render.validate, view.render.maxMemoryGiB, view.render.textures);
+    addSceneIndexOption(*viewCmd, view.render.sceneIndex);
+    viewCmd->add_option("--integrator", viewIntegrator, integratorHelp + " (I switches to the next)")
+        ->check(registeredIntegrator())
+        ->option_text(fmt::format("{} [{}]", integratorChoices, viewIntegrator));
+    std::map<std::string, std::unique_ptr<IntegratorConfig>> viewConfigs;
+    for (const IntegratorKind& kind : integratorKinds()) {
+        viewConfigs[kind.name] = kind.makeConfig();
+        viewConfigs[kind.name]->addOptions(*viewCmd);
+    }
+    viewCmd->add_option("--events", view.events, "Replay an event script, one command a line (docs/viewer.md)");
+    viewCmd->add_option("--stats-json", view.render.statsJson,
+                        "Write the time to the first image and, per change, to its first image and its photon paths");
+    viewCmd->add_option("--photon-budget", view.render.photonBudget,
+                        "Photon paths traced per map and move, pilots included [default: paths / 8 + one pilot per group]")
+        ->check(CLI::PositiveNumber);
+    viewCmd->add_option("--photon-groups", view.render.photonGroups, "Selective update's photon groups")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    viewCmd->add_option("--animation", view.render.animation, "Space plays only glTF animation N [default: all]")
+        ->check(CLI::NonNegativeNumber);
+    viewCmd->add_option("--tonemap", view.render.display.view, "The window's and screenshots' view transform")
+        ->transform(oneOf(views))
+        ->option_text(choiceText(views, view.render.display.view));
+    viewCmd->add_option("--exposure", view.render.display.exposureEv, "Exposure in stops")->capture_default_str();
+    viewCmd->add_flag("--quiet", view.render.quiet, "No messages but errors");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -413,6 +452,24 @@ int runCommandLine(int argc, const char* const* argv) {
             return runMerge(merge);
         }
         if (compareCmd->parsed()) return runCompare(compare);
+        if (viewCmd->parsed()) {
+            requireNonEmpty(*viewCmd, "--stats-json", view.render.statsJson);
+            requireNonEmpty(*viewCmd, "--events", view.events);
+            view.render.frame.nextEventEstimation = !viewBsdfOnly;
+            view.render.frame.check();
+            view.render.display.check();
+            view.render.environment.check();
+            view.render.lightSamplerAuto = true;
+            // I cycles through the kinds from the chosen one; each keeps its parsed options.
+            std::vector<std::pair<std::string, const IntegratorConfig*>> kinds;
+            size_t first = 0;
+            for (const IntegratorKind& kind : integratorKinds()) {
+                if (kind.name == viewIntegrator) first = kinds.size();
+                kinds.emplace_back(kind.name, viewConfigs.at(kind.name).get());
+            }
+            kinds[first].second->check();
+            return runView(view, kinds, first);
+        }
         return runDevices();
     } catch (const InputError& e) {
         fmt::print(stderr, "error: {}\n", printable(e.what()));

@@ -20,6 +20,9 @@ struct FrameUpdateInfo {
     double time = 0.0;        // seconds: frame / fps
     bool firstFrame = true;   // the first frame of the sequence (or a still render)
     uint64_t sceneGeneration = 0;  // changes when the frames loop rebuilt the scene (new buffers)
+    // false: nothing in the scene moved since the last build (`vkphoton view` after a camera
+    // move): a selective update reuses its persistent paths as they are and traces none.
+    bool retrace = true;
 };
 
 // What the photon maps of one frame cost, for --stats-json's "frames" array.
@@ -29,6 +32,7 @@ struct FramePhotonCounts {
     uint64_t changedPilots = 0;      // selective: pilot paths whose photons changed since the last frame
     uint64_t groupsMarked = 0;       // selective: groups with a changed pilot this frame
     uint64_t groupsPending = 0;      // selective: marked groups left for later frames (budget)
+    uint64_t fullPhotonPaths = 0;    // the paths of the maps built: what a full retrace traces
 };
 
 class FrameUpdate {
