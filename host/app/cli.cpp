@@ -389,6 +389,9 @@ int runCommandLine(int argc, const char* const* argv) {
         ->option_text(choiceText(views, view.render.display.view));
     viewCmd->add_option("--exposure", view.render.display.exposureEv, "Exposure in stops")->capture_default_str();
     viewCmd->add_flag("--quiet", view.render.quiet, "No messages but errors");
+    viewCmd->add_flag("--preview,!--no-preview", view.preview,
+                      "Integrators with a preparation (photon maps, guides): one path-traced sample of a change "
+                      "first (the default), or none (--no-preview)");
 
     try {
         app.parse(argc, argv);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/integrators/path_integrator.h"
 #include "render/stats.h"
 #include "render/terminations.h"
 #include "util/stopwatch.h"
@@ -21,6 +22,7 @@ ProgressiveSession::ProgressiveSession(vk::Context& context, const SessionSettin
 ProgressiveSession::~ProgressiveSession() {
     // The integrator and the raster pass refer to the scene's buffers: release them first.
     m_integrator.reset();
+    m_preview.reset();
     m_raster.reset();
 }
 
@@ -29,6 +31,7 @@ bool ProgressiveSession::setScene(Scene scene) {
     if (change.rebuilt) {
         m_raster.reset();
         m_integrator.reset();
+        m_preview.reset();
         if (m_config) m_integrator = m_config->create(m_frameScene.renderer().gpuScene());
         m_needFull = true;
     }
@@ -42,7 +45,7 @@ void ProgressiveSession::setIntegrator(const IntegratorConfig& config) {
     m_needFull = true;  // its maps are new (the selective update keys them by their settings)
 }
 
-void ProgressiveSession::restart(PhotonRefresh refresh) {
+void ProgressiveSession::restart(PhotonRefresh refresh, bool allowPreview) {
     const auto start = Clock::now();
     if (m_needFull) refresh = PhotonRefresh::Full;
     Renderer& renderer = m_frameScene.renderer();
@@ -60,11 +63,33 @@ void ProgressiveSession::restart(PhotonRefresh refresh) {
     m_frame.rasterDirect = &m_raster->direct();
     m_frame.rasterFlags = m_raster->pathFlags();
     m_context.submitAndWait([&](VkCommandBuffer cmd) { m_film->recordClear(cmd); });
-    m_integrator->prepare(m_frame, *m_film);
     m_needFull = false;
     m_samples = 0;
     m_batch = 1;
+    m_pendingRefresh.reset();
+    m_preparedNow = false;
+    if (m_settings.preview && allowPreview && m_integrator->name() != "path") {
+        // One path-traced sample of the changed scene: on screen before the maps are traced.
+        if (!m_preview) m_preview = std::make_unique<PathIntegrator>(renderer.gpuScene());
+        m_preview->prepare(m_frame, *m_film);
+        m_context.submitAndWait([&](VkCommandBuffer cmd) {
+            m_preview->recordSamples(cmd, 0, 1);
+            vk::computeToHostBarrier(cmd);
+        });
+        m_pendingRefresh = refresh;
+        m_lastPrepareSeconds = secondsSince(start);
+        return;
+    }
+    prepareIntegrator(refresh);
+    m_lastPrepareSeconds = secondsSince(start);
+}
 
+void ProgressiveSession::prepareIntegrator(PhotonRefresh refresh) {
+    if (m_pendingRefresh) m_context.submitAndWait([&](VkCommandBuffer cmd) { m_film->recordClear(cmd); });
+    m_pendingRefresh.reset();
+    m_integrator->prepare(m_frame, *m_film);
+    m_samples = 0;
+    m_batch = 1;
     const FramePhotonCounts counts = m_update->takeCounts();
     m_lastPhotonPaths = counts.photonPathsTraced;
     m_lastFullPhotonPaths = counts.fullPhotonPaths;
@@ -84,16 +109,23 @@ void ProgressiveSession::restart(PhotonRefresh refresh) {
         else
             m_refreshRoundsLeft = 0;
     }
-    m_lastPrepareSeconds = secondsSince(start);
 }
 
 void ProgressiveSession::refreshRound() {
     const uint32_t left = m_refreshRoundsLeft > 0 ? m_refreshRoundsLeft - 1 : 0;
-    restart(PhotonRefresh::Selective);
+    restart(PhotonRefresh::Selective, false);  // the image is already the moved scene's
     m_refreshRoundsLeft = left;
 }
 
 uint32_t ProgressiveSession::step(double targetSeconds) {
+    m_preparedNow = false;
+    if (m_pendingRefresh) {
+        const auto start = Clock::now();
+        prepareIntegrator(*m_pendingRefresh);
+        m_lastPrepareSeconds += secondsSince(start);
+        m_preparedNow = true;
+        return 0;
+    }
     if (complete() || !m_integrator) return 0;
     const uint32_t count =
         std::min({m_batch, m_integrator->maxSamplesPerBatch(), m_settings.frame.samplesPerPixel - m_samples});
@@ -113,7 +145,7 @@ uint32_t ProgressiveSession::step(double targetSeconds) {
 
 ImageRgb ProgressiveSession::image() {
     ImageRgb image = m_film->resolve();
-    if (m_integrator) m_integrator->finish(image, m_samples);
+    if (m_integrator && !m_pendingRefresh) m_integrator->finish(image, m_samples);
     return image;
 }
 

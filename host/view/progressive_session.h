@@ -37,6 +37,9 @@ struct SessionSettings {
     FrameSettings frame;               // size, spp (where accumulation stops), seed, camera, --direct
     LightSampling lightSampling;
     SelectiveUpdateOptions selective;  // --photon-budget, --photon-groups
+    // Integrators with a preparation (photon maps, guides) show one path-traced sample of the
+    // changed scene first, then prepare: the change is on screen before the maps are traced.
+    bool preview = true;
 };
 
 class ProgressiveSession {
@@ -52,11 +55,18 @@ public:
     void setView(const ViewOverride& view) { m_settings.frame.view = view; }
 
     // Starts accumulating afresh: the frame (camera), raster direct light, a cleared film and
-    // the integrator's prepare() (photon maps as `refresh` says). Blocks for the preparation.
-    void restart(PhotonRefresh refresh);
+    // the integrator's prepare() (photon maps as `refresh` says), which blocks. With a preview
+    // (SessionSettings::preview, an integrator other than the path tracer, `allowPreview`) the
+    // film gets one path-traced sample instead and the preparation waits for the next step().
+    void restart(PhotonRefresh refresh, bool allowPreview = true);
     // One batch of samples, sized towards `targetSeconds` (at least one sample); nothing once
-    // the frame's spp are done. Returns the samples rendered.
+    // the frame's spp are done. Returns the samples rendered. After a preview it first prepares
+    // the integrator (and returns 0 with preparedNow() true).
     uint32_t step(double targetSeconds);
+    // Whether the film holds the preview's sample (the integrator not prepared yet).
+    bool inPreview() const { return m_pendingRefresh.has_value(); }
+    // Whether the last step() prepared the integrator after a preview (its counts are then new).
+    bool preparedNow() const { return m_preparedNow; }
     // After a selective restart: whether a further round is due to refresh stale photon groups.
     bool refreshDue() const { return m_refreshRoundsLeft > 0; }
     uint32_t refreshRoundsLeft() const { return m_refreshRoundsLeft; }
@@ -85,6 +95,9 @@ private:
     FrameScene m_frameScene;
     const IntegratorConfig* m_config = nullptr;
     std::unique_ptr<Integrator> m_integrator;
+    std::unique_ptr<Integrator> m_preview;          // the path tracer, for previews
+    std::optional<PhotonRefresh> m_pendingRefresh;  // a preview is shown; prepare with this
+    bool m_preparedNow = false;
     std::unique_ptr<FrameUpdate> m_update;
     std::unique_ptr<Film> m_film;
     std::unique_ptr<RasterDirectLight> m_raster;
@@ -94,6 +107,7 @@ private:
     uint32_t m_samples = 0;
     uint32_t m_batch = 1;
     uint32_t m_refreshRoundsLeft = 0;
+    void prepareIntegrator(PhotonRefresh refresh);
     uint64_t m_lastPhotonPaths = 0;
     uint64_t m_lastFullPhotonPaths = 0;
     double m_lastPrepareSeconds = 0.0;

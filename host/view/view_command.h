@@ -19,6 +19,7 @@ struct ViewCommandOptions {
     // --stats-json, --photon-budget, --photon-groups, --quiet.
     RenderCommandOptions render;
     std::filesystem::path events;  // --events: the script; empty: none
+    bool preview = true;           // --no-preview: no path-traced sample before a preparation
 };
 
 // `integrators`: the kinds I cycles through (name, config with its options parsed), starting at

@@ -100,11 +100,14 @@ int runView(const ViewCommandOptions& options,
     const uint32_t width = render.frame.width, height = render.frame.height;
     const std::string sceneName = render.scene.filename().string();
     ViewWindow window(width, height, fmt::format("vkphoton view: {}", sceneName));
+    nlohmann::json startup;  // where the time to the first image goes (--stats-json "startup")
+    startup["windowSeconds"] = secondsSince(start);
 
     vk::ContextOptions contextOptions{render.validate, render.device};
     contextOptions.instanceExtensions = ViewWindow::requiredInstanceExtensions();
     contextOptions.canPresent = &ViewWindow::canPresent;
     vk::Context context(contextOptions);
+    startup["deviceSeconds"] = secondsSince(start);
     GltfLimits limits = deviceSceneLimits(context, render.maxMemoryGiB);
     limits.sceneIndex = render.sceneIndex;
     limits.instanceEveryMesh = true;  // any node can be moved in place
@@ -122,6 +125,7 @@ int runView(const ViewCommandOptions& options,
     if (render.lightSamplerAuto) settings.lightSampling.sampler = autoLightSampler(still);
     settings.selective.budget = render.photonBudget;
     settings.selective.groups = render.photonGroups;
+    settings.preview = options.preview;
     bool noteShown = false;
     auto prepared = [&](Scene scene) {
         std::string note;
@@ -136,15 +140,24 @@ int runView(const ViewCommandOptions& options,
         chooseCamera(still, render.frame.cameraIndex, float(width) / float(height), render.frame.view);
     CameraController camera(initialCamera, render.frame.view.lookAt.value_or(stillBounds.center()));
 
+    startup["loadSeconds"] = secondsSince(start);
     ProgressiveSession session(context, settings);
     session.setScene(prepared(std::move(still)));
+    startup["sceneSeconds"] = secondsSince(start);  // BVH, upload
     size_t integratorIndex = first;
     session.setIntegrator(*integrators[integratorIndex].second);
+    startup["integratorSeconds"] = secondsSince(start);  // its kernels (pipelines compiled on first use)
     SwapchainPresenter presenter(context, window.createSurface(context.instance()), width, height);
     if (!render.quiet)
         fmt::print(stderr, "vkphoton view: {} on {}{}; press H for help\n", printable(render.scene.string()),
                    context.deviceName(), context.validationEnabled() ? " with validation" : "");
     session.restart(PhotonRefresh::Full);
+    // Photon maps, raster light (set once the integrator is prepared: after the preview, if any).
+    auto startupPrepared = [&]() {
+        startup["prepareSeconds"] = session.lastPrepareSeconds();
+        startup["photonPathsTraced"] = session.lastPhotonPaths();
+    };
+    if (!session.inPreview()) startupPrepared();
 
     ViewStats stats(start);
     GltfSceneSource::NodeOffsets offsets;
@@ -335,6 +348,11 @@ int runView(const ViewCommandOptions& options,
             restartAt = Clock::now();
         }
         rendered = session.step(kFrameSeconds);
+        if (session.preparedNow()) {  // after a preview: the change's own counts are known now
+            if (stats.changes().empty()) startupPrepared();
+            else stats.prepared(session.lastPhotonPaths(), session.lastFullPhotonPaths(), session.lastPrepareSeconds());
+            rendered = session.step(kFrameSeconds);  // the integrator's first samples, shown at once
+        }
         if (rendered > 0 || shownSamples != session.samples() || redraw) {
             image = session.image();
             std::vector<uint8_t> rgba = displayBytes(image, render.display);
@@ -342,7 +360,7 @@ int runView(const ViewCommandOptions& options,
             presenter.present(rgba);
             shownSamples = session.samples();
             redraw = false;
-            stats.presented(Clock::now());
+            stats.presented(Clock::now(), session.inPreview());
             const double seconds = secondsSince(restartAt);
             window.setTitle(fmt::format("vkphoton view: {} | {} | {}/{} spp | {:.1f} spp/s | {} photon paths{}{}", sceneName,
                                         session.integratorName(), session.samples(), session.settings().frame.samplesPerPixel,
@@ -363,6 +381,8 @@ int runView(const ViewCommandOptions& options,
         json["width"] = width;
         json["height"] = height;
         json["spp"] = render.frame.samplesPerPixel;
+        json["preview"] = settings.preview;
+        json["startup"] = startup;
         writeTextAtomically(render.statsJson, json.dump(2) + "\n");
     }
     if (!render.quiet && stats.firstImageSeconds())
