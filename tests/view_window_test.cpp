@@ -3,6 +3,7 @@
 // moves a node, checked against offline renders of the moved and unmoved scene; the stats of a
 // move, a camera change and a click-and-drag; and (VKPHOTON_VALIDATE=1, which the suite sets and
 // the binary inherits) no validation message, since any one makes the view exit 1.
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -144,10 +145,13 @@ TEST(ViewXvfb, MovedNodeMatchesAnOfflineRenderOfTheMovedScene) {
     const ImageRgb unmoved = readExr(dir / "r0.exr"), moved = readExr(dir / "r1.exr");
     const double afterToMoved = relativeMse(after, moved), afterToUnmoved = relativeMse(after, unmoved);
     const double beforeToUnmoved = relativeMse(before, unmoved), beforeToMoved = relativeMse(before, moved);
+    std::printf("relMSE after move: %.4f to the moved render, %.4f to the unmoved; before: %.4f to the unmoved, "
+                "%.4f to the moved\n", afterToMoved, afterToUnmoved, beforeToUnmoved, beforeToMoved);
     EXPECT_LT(afterToMoved, 0.2 * afterToUnmoved) << afterToMoved << " vs " << afterToUnmoved;
     EXPECT_LT(beforeToUnmoved, 0.2 * beforeToMoved) << beforeToUnmoved << " vs " << beforeToMoved;
-    // Same spp, same seed: the noise of one 8-spp render against another, not a bias.
-    EXPECT_LT(afterToMoved, 0.05) << afterToMoved;
+    // Same spp, same seed, and the refresh rounds leave the maps a full retrace of the moved scene
+    // traces: nearly the same pixels (the view instances the sphere, the offline render flattens it).
+    EXPECT_LT(afterToMoved, 0.01) << afterToMoved;  // 0.0001 measured (2026-11-27): instanced vs flattened sphere
     const auto meanAfter = meanRadiance(after), meanMoved = meanRadiance(moved);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(meanAfter[c], meanMoved[c], 0.03 * meanMoved[c]) << c;
 
@@ -171,8 +175,8 @@ TEST(ViewXvfb, ClickShiftDragMovesTheNodeAndOrbitTracesNoPhotons) {
     const fs::path dir = test::freshTempDir("view", "drag");
     // The glass sphere's centre (0.35, 0.35, 0.25) is near pixel (40, 48) of the 64x64 image.
     writeText(dir / "events.txt",
-              "samples 1\nclick 40 48\ndrag 40 48 34 48 shift\nsamples 1\norbit 15 5\nsamples 1\n"
-              "key h\nclick 2 32\nquit\n");
+              "samples 1\nclick 40 48\ndrag 40 48 34 48 shift\nsamples 1\nkey h\nclick 2 32\norbit 15 5\n"
+              "samples 1\nquit\n");
     const RunResult view = runViewUnderXvfb(kGlass + " " + kPhotonFlags + " --spp 2 --events " +
                                             (dir / "events.txt").string() + " --stats-json " +
                                             (dir / "stats.json").string());
