@@ -148,10 +148,12 @@ int runView(const ViewCommandOptions& options,
     session.setIntegrator(*integrators[integratorIndex].second);
     startup["integratorSeconds"] = secondsSince(start);  // its kernels (pipelines compiled on first use)
     SwapchainPresenter presenter(context, window.createSurface(context.instance()), width, height);
+    startup["presenterSeconds"] = secondsSince(start);  // the surface and swapchain
     if (!render.quiet)
         fmt::print(stderr, "vkphoton view: {} on {}{}; press H for help\n", printable(render.scene.string()),
                    context.deviceName(), context.validationEnabled() ? " with validation" : "");
     session.restart(PhotonRefresh::Full);
+    startup["restartSeconds"] = secondsSince(start);  // frame, raster light, film; the preview or the preparation
     // Photon maps, raster light (set once the integrator is prepared: after the preview, if any).
     auto startupPrepared = [&]() {
         startup["prepareSeconds"] = session.lastPrepareSeconds();
@@ -347,7 +349,8 @@ int runView(const ViewCommandOptions& options,
             shownSamples = UINT32_MAX;
             restartAt = Clock::now();
         }
-        rendered = session.step(kFrameSeconds);
+        // A preview is shown before the preparation that follows it blocks the loop.
+        if (!(session.inPreview() && shownSamples == UINT32_MAX)) rendered = session.step(kFrameSeconds);
         if (session.preparedNow()) {  // after a preview: the change's own counts are known now
             if (stats.changes().empty()) startupPrepared();
             else stats.prepared(session.lastPhotonPaths(), session.lastFullPhotonPaths(), session.lastPrepareSeconds());
@@ -361,6 +364,7 @@ int runView(const ViewCommandOptions& options,
             shownSamples = session.samples();
             redraw = false;
             stats.presented(Clock::now(), session.inPreview());
+            if (!startup.contains("firstPresentSeconds")) startup["firstPresentSeconds"] = secondsSince(start);
             const double seconds = secondsSince(restartAt);
             window.setTitle(fmt::format("vkphoton view: {} | {} | {}/{} spp | {:.1f} spp/s | {} photon paths{}{}", sceneName,
                                         session.integratorName(), session.samples(), session.settings().frame.samplesPerPixel,
