@@ -220,7 +220,10 @@ int runView(const ViewCommandOptions& options,
             case ScriptCommand::Screenshot:
                 done = shownSamples != UINT32_MAX;
                 if (done) writeScreenshot(e.path, image, options, session);
-                if (done && !render.quiet) fmt::print(stderr, "{}: wrote {} ({} spp)\n", e.where, printable(e.path.string()), shownSamples);
+                if (done && !render.quiet)
+                    fmt::print(stderr, "{}: wrote {} ({})\n", e.where, printable(e.path.string()),
+                               session.inPreview() ? std::string("the preview: one path-traced sample")
+                                                   : fmt::format("{} spp", shownSamples));
                 break;
             case ScriptCommand::Move: {
                 ViewAction a;
