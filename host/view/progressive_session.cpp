@@ -1,6 +1,7 @@
 #include "view/progressive_session.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "render/integrators/path_integrator.h"
@@ -20,6 +21,7 @@ ProgressiveSession::ProgressiveSession(vk::Context& context, const SessionSettin
 }
 
 ProgressiveSession::~ProgressiveSession() {
+    cancel();
     // The integrator and the raster pass refer to the scene's buffers: release them first.
     m_integrator.reset();
     m_preview.reset();
@@ -62,14 +64,19 @@ void ProgressiveSession::restart(PhotonRefresh refresh, bool allowPreview) {
                                                    renderer.lightReach() ? &*renderer.lightReach() : nullptr);
     m_frame.rasterDirect = &m_raster->direct();
     m_frame.rasterFlags = m_raster->pathFlags();
-    m_context.submitAndWait([&](VkCommandBuffer cmd) { m_film->recordClear(cmd); });
     m_needFull = false;
     m_samples = 0;
     m_batch = 1;
     m_pendingRefresh.reset();
     m_preparedNow = false;
-    if (m_settings.preview && allowPreview && m_integrator->name() != "path") {
+    m_previewImage = false;
+    m_stop = false;
+    m_frame.control.stop = &m_stop;  // cancel(): the photon passes stop between chunks
+    m_clearFilm = true;
+    const bool prepares = m_integrator->name() != "path";  // photon maps, guides: seconds on lavapipe
+    if (m_settings.preview && allowPreview && prepares) {
         // One path-traced sample of the changed scene: on screen before the maps are traced.
+        m_context.submitAndWait([&](VkCommandBuffer cmd) { m_film->recordClear(cmd); });
         if (!m_preview) m_preview = std::make_unique<PathIntegrator>(renderer.gpuScene());
         m_preview->prepare(m_frame, *m_film);
         m_context.submitAndWait([&](VkCommandBuffer cmd) {
@@ -77,19 +84,20 @@ void ProgressiveSession::restart(PhotonRefresh refresh, bool allowPreview) {
             vk::computeToHostBarrier(cmd);
         });
         m_pendingRefresh = refresh;
-        m_lastPrepareSeconds = secondsSince(start);
-        return;
+        m_previewImage = true;
+    } else if (prepares) {
+        // A refresh round: the film keeps the last image until the preparation is done.
+        m_pendingRefresh = refresh;
+    } else {
+        prepareIntegrator(refresh);
     }
-    prepareIntegrator(refresh);
     m_lastPrepareSeconds = secondsSince(start);
 }
 
 void ProgressiveSession::prepareIntegrator(PhotonRefresh refresh) {
-    if (m_pendingRefresh) m_context.submitAndWait([&](VkCommandBuffer cmd) { m_film->recordClear(cmd); });
-    m_pendingRefresh.reset();
+    if (m_clearFilm) m_context.submitAndWait([&](VkCommandBuffer cmd) { m_film->recordClear(cmd); });
+    m_clearFilm = false;
     m_integrator->prepare(m_frame, *m_film);
-    m_samples = 0;
-    m_batch = 1;
     const FramePhotonCounts counts = m_update->takeCounts();
     m_lastPhotonPaths = counts.photonPathsTraced;
     m_lastFullPhotonPaths = counts.fullPhotonPaths;
@@ -100,7 +108,9 @@ void ProgressiveSession::prepareIntegrator(PhotonRefresh refresh) {
     }
     // After a move the first round retraced the changed groups within the budget; the rounds
     // that follow refresh the rest round-robin, and after paths / (paths per round) of them every
-    // group has been traced in the moved scene. A camera change leaves the count as it was.
+    // group has been traced in the moved scene. A camera change leaves the count as it was, and
+    // a refresh round counts itself down (refreshRound).
+    if (m_refreshing) return;
     if (refresh == PhotonRefresh::Full) {
         m_refreshRoundsLeft = 0;
     } else if (refresh == PhotonRefresh::Selective) {
@@ -114,16 +124,39 @@ void ProgressiveSession::prepareIntegrator(PhotonRefresh refresh) {
 void ProgressiveSession::refreshRound() {
     const uint32_t left = m_refreshRoundsLeft > 0 ? m_refreshRoundsLeft - 1 : 0;
     restart(PhotonRefresh::Selective, false);  // the image is already the moved scene's
+    m_refreshing = true;
     m_refreshRoundsLeft = left;
+}
+
+void ProgressiveSession::cancel() {
+    if (!m_preparation.valid()) return;
+    m_stop = true;
+    try {
+        m_preparation.get();
+    } catch (...) {
+    }
 }
 
 uint32_t ProgressiveSession::step(double targetSeconds) {
     m_preparedNow = false;
-    if (m_pendingRefresh) {
-        const auto start = Clock::now();
-        prepareIntegrator(*m_pendingRefresh);
-        m_lastPrepareSeconds += secondsSince(start);
+    if (m_preparation.valid()) {
+        // The preparation runs on its own thread; the window keeps being polled meanwhile.
+        if (m_preparation.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return 0;
+        m_preparation.get();  // rethrows its error
+        m_lastPrepareSeconds += secondsSince(m_prepareStart);
         m_preparedNow = true;
+        m_lastWasRefresh = m_refreshing;
+        m_refreshing = false;
+        m_samples = 0;
+        m_batch = 1;
+        return 0;
+    }
+    if (m_pendingRefresh) {
+        const PhotonRefresh refresh = *m_pendingRefresh;
+        m_pendingRefresh.reset();
+        m_previewImage = false;
+        m_prepareStart = Clock::now();
+        m_preparation = std::async(std::launch::async, [this, refresh] { prepareIntegrator(refresh); });
         return 0;
     }
     if (complete() || !m_integrator) return 0;
@@ -145,7 +178,7 @@ uint32_t ProgressiveSession::step(double targetSeconds) {
 
 ImageRgb ProgressiveSession::image() {
     ImageRgb image = m_film->resolve();
-    if (m_integrator && !m_pendingRefresh) m_integrator->finish(image, m_samples);
+    if (m_integrator && !inPreview()) m_integrator->finish(image, m_samples);
     return image;
 }
 

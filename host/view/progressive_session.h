@@ -11,7 +11,9 @@
 // round-robin has visited every group (then the maps equal a full retrace of the moved scene).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <future>
 #include <memory>
 #include <optional>
 #include <string>
@@ -55,18 +57,29 @@ public:
     void setView(const ViewOverride& view) { m_settings.frame.view = view; }
 
     // Starts accumulating afresh: the frame (camera), raster direct light, a cleared film and
-    // the integrator's prepare() (photon maps as `refresh` says), which blocks. With a preview
-    // (SessionSettings::preview, an integrator other than the path tracer, `allowPreview`) the
-    // film gets one path-traced sample instead and the preparation waits for the next step().
+    // the integrator's prepare() (photon maps as `refresh` says). The path tracer prepares at
+    // once. Integrators with a preparation (photon maps, guides) prepare on a thread of their own,
+    // started by the next step(), so the window is polled meanwhile; before it the film gets one
+    // path-traced sample (the preview; SessionSettings::preview and `allowPreview`), or, without
+    // a preview, keeps the last image until the preparation is done.
     void restart(PhotonRefresh refresh, bool allowPreview = true);
     // One batch of samples, sized towards `targetSeconds` (at least one sample); nothing once
-    // the frame's spp are done. Returns the samples rendered. After a preview it first prepares
-    // the integrator (and returns 0 with preparedNow() true).
+    // the frame's spp are done. Returns the samples rendered. After a restart that defers the
+    // preparation it starts it (returns 0), while it runs it returns 0 (preparing()), and the
+    // call that finds it done returns 0 with preparedNow() true (rethrowing its error).
+    // Nothing but step(), cancel() and the accessors may be called while preparing().
     uint32_t step(double targetSeconds);
-    // Whether the film holds the preview's sample (the integrator not prepared yet).
-    bool inPreview() const { return m_pendingRefresh.has_value(); }
-    // Whether the last step() prepared the integrator after a preview (its counts are then new).
+    bool preparing() const { return m_preparation.valid(); }
+    // Stops a running preparation (its photon passes stop between chunks) and waits for it.
+    void cancel();
+    // Whether the film holds the preview's sample or the last image (the integrator not prepared).
+    bool inPreview() const { return m_pendingRefresh.has_value() || m_preparation.valid(); }
+    // Whether the last step() found the preparation done (its counts are then new), and whether
+    // that preparation was a refresh round.
     bool preparedNow() const { return m_preparedNow; }
+    bool lastWasRefresh() const { return m_lastWasRefresh; }
+    // Whether the film holds a preview not yet followed by its preparation (show it first).
+    bool hasPreviewImage() const { return m_previewImage; }
     // After a selective restart: whether a further round is due to refresh stale photon groups.
     bool refreshDue() const { return m_refreshRoundsLeft > 0; }
     uint32_t refreshRoundsLeft() const { return m_refreshRoundsLeft; }
@@ -96,8 +109,15 @@ private:
     const IntegratorConfig* m_config = nullptr;
     std::unique_ptr<Integrator> m_integrator;
     std::unique_ptr<Integrator> m_preview;          // the path tracer, for previews
-    std::optional<PhotonRefresh> m_pendingRefresh;  // a preview is shown; prepare with this
+    std::optional<PhotonRefresh> m_pendingRefresh;  // a preparation to start at the next step()
+    std::future<void> m_preparation;                // the preparation's thread
+    Clock::time_point m_prepareStart;
+    std::atomic<bool> m_stop{false};                // the frame's stop flag: cancel()
+    bool m_clearFilm = false;                       // the preparation clears the film first
+    bool m_refreshing = false;                      // the restart was a refresh round
+    bool m_lastWasRefresh = false;
     bool m_preparedNow = false;
+    bool m_previewImage = false;
     std::unique_ptr<FrameUpdate> m_update;
     std::unique_ptr<Film> m_film;
     std::unique_ptr<RasterDirectLight> m_raster;

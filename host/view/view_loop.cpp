@@ -200,8 +200,44 @@ int runView(const ViewCommandOptions& options,
         offsets[node] += delta;
     };
 
+    std::vector<ViewAction> deferred;  // input that arrived while the integrator prepared
+    auto lastTitle = Clock::now();
     while (!quit && !window.closeRequested()) {
         std::vector<ViewAction> actions = window.poll();
+        bool justPrepared = false;
+        if (session.preparing()) {
+            session.step(0.0);  // finds the preparation done (or rethrows its error)
+            if (session.preparing()) {
+                // The window stays responsive: input is kept for when the preparation is done,
+                // Q or Esc stop it.
+                for (const ViewAction& a : actions) {
+                    if (a.kind == ViewAction::Kind::Key && a.key == ViewKey::Quit) quit = true;
+                    deferred.push_back(a);
+                }
+                if (quit || window.closeRequested()) {
+                    session.cancel();
+                    break;
+                }
+                if (secondsSince(lastTitle) > 0.5) {
+                    window.setTitle(fmt::format("vkphoton view: {} | {} | preparing ({:.0f} s){}", sceneName,
+                                                session.integratorName(), secondsSince(restartAt),
+                                                deferred.empty() ? std::string() : ", input queued"));
+                    lastTitle = Clock::now();
+                }
+                std::this_thread::sleep_for(std::chrono::duration<double>(kIdleSeconds));
+                continue;
+            }
+            justPrepared = session.preparedNow();
+        }
+        if (!deferred.empty()) {
+            actions.insert(actions.begin(), deferred.begin(), deferred.end());
+            deferred.clear();
+        }
+        if (justPrepared) {  // the restart's own counts are known now
+            if (session.lastWasRefresh()) stats.refresh(session.lastPhotonPaths());
+            else if (stats.changes().empty()) startupPrepared();
+            else stats.prepared(session.lastPhotonPaths(), session.lastFullPhotonPaths(), session.lastPrepareSeconds());
+        }
         // The script: commands run in order, each after the previous one finished (a change has
         // been shown, a wait is over).
         while (next < events.size() && stats.lastChangeShown() && actions.empty()) {
@@ -344,21 +380,17 @@ int runView(const ViewCommandOptions& options,
         }
 
         // Samples: one bounded batch per iteration; once the image holding the last change has
-        // been shown, the stale photon groups a move left are refreshed round by round.
+        // been shown, the stale photon groups a move left are refreshed round by round (each
+        // prepared on its own thread while the window shows the last image).
         uint32_t rendered = 0;
-        if (session.refreshDue() && shownSamples != UINT32_MAX) {
+        if (!session.inPreview() && session.refreshDue() && shownSamples != UINT32_MAX) {
             session.refreshRound();
-            stats.refresh(session.lastPhotonPaths());
-            shownSamples = UINT32_MAX;
+            shownSamples = UINT32_MAX;  // the image on screen is the last round's
             restartAt = Clock::now();
         }
-        // A preview is shown before the preparation that follows it blocks the loop.
-        if (!(session.inPreview() && shownSamples == UINT32_MAX)) rendered = session.step(kFrameSeconds);
-        if (session.preparedNow()) {  // after a preview: the change's own counts are known now
-            if (stats.changes().empty()) startupPrepared();
-            else stats.prepared(session.lastPhotonPaths(), session.lastFullPhotonPaths(), session.lastPrepareSeconds());
-            rendered = session.step(kFrameSeconds);  // the integrator's first samples, shown at once
-        }
+        // A preview is shown before the preparation that follows it starts.
+        if (!(session.hasPreviewImage() && shownSamples == UINT32_MAX)) rendered = session.step(kFrameSeconds);
+        if (session.preparing()) continue;  // the film is the preparation's until it is done
         if (rendered > 0 || shownSamples != session.samples() || redraw) {
             image = session.image();
             std::vector<uint8_t> rgba = displayBytes(image, render.display);
