@@ -240,7 +240,8 @@ int runView(const ViewCommandOptions& options,
         }
         // The script: commands run in order, each after the previous one finished (a change has
         // been shown, a wait is over).
-        while (next < events.size() && stats.lastChangeShown() && actions.empty()) {
+        // (Not in the iteration that finds a preparation done: its first image is shown first.)
+        while (!justPrepared && next < events.size() && stats.lastChangeShown() && actions.empty()) {
             const ScriptEvent& e = events[next];
             bool done = true;
             switch (e.command) {
