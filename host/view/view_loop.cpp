@@ -234,6 +234,7 @@ int runView(const ViewCommandOptions& options,
             deferred.clear();
         }
         if (justPrepared) {  // the restart's own counts are known now
+            shownSamples = UINT32_MAX;  // its first image is not on screen yet (a refresh round waits for it)
             if (session.lastWasRefresh()) stats.refresh(session.lastPhotonPaths());
             else if (stats.changes().empty()) startupPrepared();
             else stats.prepared(session.lastPhotonPaths(), session.lastFullPhotonPaths(), session.lastPrepareSeconds());
