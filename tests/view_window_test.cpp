@@ -72,6 +72,13 @@ fs::path movedScene(const fs::path& dir, const std::string& name, const glm::vec
     return path;
 }
 
+TEST(ViewCommand, HelpListsItsOptions) {
+    const RunResult r = runWithoutDisplay("view --help");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    for (const char* flag : {"--events", "--stats-json", "--no-preview", "--integrator", "--photons", "--spp"})
+        EXPECT_NE(r.output.find(flag), std::string::npos) << flag << "\n" << r.output;
+}
+
 TEST(ViewCommand, NoDisplayExitsWithTwoNamingDisplay) {
     const RunResult r = runWithoutDisplay("view " + kGlass + " --spp 1");
     EXPECT_EQ(r.exitCode, 2) << r.output;
