@@ -44,9 +44,18 @@ RunResult runCommand(const std::string& command) {
     return result;
 }
 
-// `vkphoton view ARGS` under a fresh Xvfb server (xvfb-run -a picks a free display).
+// `vkphoton view ARGS` under a fresh Xvfb server. xvfb-run -a takes the first free display from
+// -n on; tests that ctest runs side by side start their search at different numbers (from the
+// process id) and try again when two still chose the same one ("Xvfb failed to start").
 RunResult runViewUnderXvfb(const std::string& args) {
-    return runCommand("xvfb-run -a -s '-screen 0 640x480x24' " + std::string(VKPHOTON_BINARY) + " view " + args);
+    RunResult r;
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        const int display = 100 + int((::getpid() * 7 + attempt * 101) % 800);
+        r = runCommand("xvfb-run -a -n " + std::to_string(display) + " -s '-screen 0 640x480x24' " +
+                       std::string(VKPHOTON_BINARY) + " view " + args);
+        if (r.output.find("Xvfb failed to start") == std::string::npos) break;
+    }
+    return r;
 }
 
 RunResult runWithoutDisplay(const std::string& args) {
