@@ -372,7 +372,8 @@ int runView(const ViewCommandOptions& options,
             const bool rebuilt = session.setScene(sceneNow());
             if (!viewKind.empty()) session.setView(camera.view(render.frame.view));
             session.restart(rebuilt ? PhotonRefresh::Full : PhotonRefresh::Selective);
-            stats.change(sceneKind, at, session.lastPhotonPaths(), session.lastFullPhotonPaths(), session.lastPrepareSeconds());
+            stats.change(sceneKind, at, session.lastPhotonPaths(), session.lastFullPhotonPaths(), session.lastPrepareSeconds(),
+                         rebuilt);
             shownSamples = UINT32_MAX;
             restartAt = Clock::now();
             if (selected >= 0) updateMask();

@@ -3,13 +3,14 @@
 namespace vkp {
 
 void ViewStats::change(const std::string& kind, Clock::time_point at, uint64_t photonPaths, uint64_t fullPhotonPaths,
-                       double prepareSeconds) {
+                       double prepareSeconds, bool sceneRebuilt) {
     ViewChange c;
     c.kind = kind;
     c.at = std::chrono::duration<double>(at - m_start).count();
     c.photonPathsTraced = photonPaths;
     c.fullPhotonPaths = fullPhotonPaths;
     c.prepareSeconds = prepareSeconds;
+    c.sceneRebuilt = sceneRebuilt;
     m_changes.push_back(c);
     m_changeStart.push_back(at);
 }
@@ -50,7 +51,8 @@ nlohmann::json ViewStats::toJson(Clock::time_point now) const {
                            {"fullPhotonPaths", c.fullPhotonPaths},
                            {"refreshPhotonPaths", c.refreshPhotonPaths},
                            {"refreshRounds", c.refreshRounds},
-                           {"prepareSeconds", c.prepareSeconds}});
+                           {"prepareSeconds", c.prepareSeconds},
+                           {"sceneRebuilt", c.sceneRebuilt}});
     return {{"firstImageSeconds", orNull(m_firstImage)},
             {"firstIntegratorImageSeconds", orNull(m_firstIntegratorImage)},
             {"framesPresented", m_frames},

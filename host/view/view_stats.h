@@ -24,6 +24,7 @@ struct ViewChange {
     uint64_t refreshPhotonPaths = 0;            // traced by the refresh rounds that followed it
     uint32_t refreshRounds = 0;
     double prepareSeconds = 0.0;                // the restart: scene update, photon maps, raster light
+    bool sceneRebuilt = false;                  // the change could not move in place (a new GpuScene: full retrace)
 };
 
 class ViewStats {
@@ -32,7 +33,7 @@ public:
 
     // A change applied at `at` (before its restart), with what the restart traced.
     void change(const std::string& kind, Clock::time_point at, uint64_t photonPaths, uint64_t fullPhotonPaths,
-                double prepareSeconds);
+                double prepareSeconds, bool sceneRebuilt = false);
     // The last change's photon counts, known once its integrator was prepared (after a preview).
     void prepared(uint64_t photonPaths, uint64_t fullPhotonPaths, double prepareSeconds);
     // A refresh round after the last change traced `photonPaths`.
