@@ -99,9 +99,12 @@ void ProgressiveSession::prepareIntegrator(PhotonRefresh refresh) {
     m_clearFilm = false;
     m_integrator->prepare(m_frame, *m_film);
     const FramePhotonCounts counts = m_update->takeCounts();
-    m_lastPhotonPaths = counts.photonPathsTraced;
-    m_lastFullPhotonPaths = counts.fullPhotonPaths;
-    if (counts.fullPhotonPaths == 0) {  // maps outside the seam (progressive photon mapping) or none
+    if (counts.fullPhotonPaths > 0) {  // maps built through the seam (the photon integrator)
+        m_lastPhotonPaths = counts.photonPathsTraced;
+        m_lastFullPhotonPaths = counts.fullPhotonPaths;
+    } else if (refresh == PhotonRefresh::Reuse) {
+        m_lastPhotonPaths = 0;  // maps kept as they were (--deposit all), or none: the last full count stands
+    } else {  // maps outside the seam (progressive photon mapping: per sample) or none
         Stats stats;
         m_integrator->report(stats);
         m_lastPhotonPaths = m_lastFullPhotonPaths = stats.getOr<uint64_t>("photons.pathsTraced", 0);
