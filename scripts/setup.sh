@@ -13,6 +13,7 @@ packages=(
   libdraco-dev libmeshoptimizer-dev  # compressed glTF geometry (KHR_draco_mesh_compression, EXT_meshopt_compression)
   libembree-dev  # bench/embree_bench: the CPU reference for ray rates (docs/benchmarks.md)
   clang-14 libclang-rt-14-dev  # the glTF loader fuzzer (fuzz/): libFuzzer, ASan, UBSan
+  libglfw3-dev xvfb xauth  # `vkphoton view`'s window (GLFW), and the X server its tests run it under (xvfb-run)
 )
 missing=()
 for p in "${packages[@]}"; do

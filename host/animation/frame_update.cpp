@@ -8,6 +8,7 @@ PhotonMapStats FrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t firstPath, c
     (void)info;  // a full retrace does not depend on what moved
     const PhotonMapStats stats = map.build(firstPath);
     m_counts.photonPathsTraced += stats.traced.emitted;
+    m_counts.fullPhotonPaths += map.settings().paths;
     return stats;
 }
 

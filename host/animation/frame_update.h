@@ -33,6 +33,7 @@ struct FramePhotonCounts {
     uint64_t stalePathsFound = 0;    // selective: paths whose tracks met a change this frame
     uint64_t stalePathsLeft = 0;     // selective: stale paths left for later frames (budget)
     std::vector<MapVerification> verification;  // --verify-update: per map, after the update
+    uint64_t fullPhotonPaths = 0;    // the paths of the maps built: what a full retrace traces
 };
 
 class FrameUpdate : public PhotonMapUpdate {

@@ -57,6 +57,13 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
         s.fillBudget = !m_options.trackPaths;
         it = m_maps.emplace(key, std::make_unique<SelectivePhotonUpdate>(m_context, s)).first;
     }
+    if (!info.retrace && !info.firstFrame && it->second->frame() > 0) {
+        // Nothing moved (a camera change in `vkphoton view`): the slots as they are, none traced.
+        PhotonMapStats stats = map.buildFromSlots(it->second->slots(), firstPath);
+        stats.traced.emitted = 0;
+        m_counts.fullPhotonPaths += ms.paths;
+        return stats;
+    }
     const auto start = Clock::now();
     const SelectiveFrameStats frame = it->second->update(map.scene(), map.arrays(), map.buffers(), info.firstFrame,
                                                          info.sceneGeneration, info.camera);
@@ -76,6 +83,7 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
     m_counts.groupsPending += frame.groupsPending;
     m_counts.stalePathsFound += frame.stalePathsFound;
     m_counts.stalePathsLeft += frame.stalePathsLeft;
+    m_counts.fullPhotonPaths += ms.paths;
     return stats;
 }
 

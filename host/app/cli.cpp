@@ -22,6 +22,7 @@ int runCommandLine(int argc, const char* const* argv) {
     commands.push_back(addRenderCommand(app));
     commands.push_back(addPhotonsCommand(app));
     commands.push_back(addGuideGridCommand(app));
+    commands.push_back(addViewCommand(app));
     commands.push_back(addInfoCommand(app));
     commands.push_back(addDevicesCommand(app));
     commands.push_back(addMergeCommand(app));

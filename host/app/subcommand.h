@@ -21,6 +21,7 @@ public:
 std::unique_ptr<Subcommand> addRenderCommand(CLI::App& app);
 std::unique_ptr<Subcommand> addPhotonsCommand(CLI::App& app);
 std::unique_ptr<Subcommand> addGuideGridCommand(CLI::App& app);
+std::unique_ptr<Subcommand> addViewCommand(CLI::App& app);
 // info, devices, merge, compare: the commands that render nothing.
 std::unique_ptr<Subcommand> addInfoCommand(CLI::App& app);
 std::unique_ptr<Subcommand> addDevicesCommand(CLI::App& app);

@@ -154,9 +154,16 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
 void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
     const PhotonIntegratorSettings& p = m_settings;
     vk::Context& context = m_scene.context();
-    m_stats = Stats();
     m_window = frame.pixelRange();
-    buildMaps(frame);
+    // A camera change in `vkphoton view` (nothing moved: FrameUpdateInfo::retrace false) keeps
+    // maps that do not depend on the camera (--deposit all: no importance decision); only the
+    // camera passes below are made again.
+    const bool keepMaps = m_globalMap && frame.photonUpdate && !frame.update.retrace && !frame.update.firstFrame &&
+                          p.deposit.mode == DepositMode::All && m_stopReason.empty();
+    if (!keepMaps) {
+        m_stats = Stats();
+        buildMaps(frame);
+    }
     const float globalRadius = kGlobalRadiusFactor * m_globalCellSize;
     const PhotonGrid& gatherGrid = m_radiancePhotons ? m_radiancePhotons->grid() : m_globalMap->grid();
 

@@ -22,6 +22,9 @@ struct FrameUpdateInfo {
     bool firstFrame = true;   // the first frame of the sequence (or a still render)
     uint64_t sceneGeneration = 0;  // changes when the frames loop rebuilt the scene (new buffers)
     const gpu::GpuCamera* camera = nullptr;  // the frame's view (set by buildFramePhotonMap): what is visible first
+    // false: nothing in the scene moved since the last build (`vkphoton view` after a camera
+    // move): a selective update reuses its persistent paths as they are and traces none.
+    bool retrace = true;
 };
 
 // Who computes the direct light at the first path vertex (--direct).

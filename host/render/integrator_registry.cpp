@@ -40,6 +40,30 @@ void IntegratorOptions::refuseUnread(const std::string& chosen) const {
     }
 }
 
+std::unique_ptr<IntegratorConfig> configForKind(IntegratorConfig& family, const std::string& kind) {
+    class KindConfig : public IntegratorConfig {
+    public:
+        KindConfig(IntegratorConfig& family, std::string kind) : m_family(family), m_kind(std::move(kind)) {}
+        void check() const override {
+            m_family.choose(m_kind);
+            m_family.check();
+        }
+        std::string startMessage(const FrameSettings& frame) const override {
+            m_family.choose(m_kind);
+            return m_family.startMessage(frame);
+        }
+        std::unique_ptr<Integrator> create(const GpuScene& scene) const override {
+            m_family.choose(m_kind);
+            return m_family.create(scene);
+        }
+
+    private:
+        IntegratorConfig& m_family;
+        std::string m_kind;
+    };
+    return std::make_unique<KindConfig>(family, kind);
+}
+
 const std::vector<IntegratorKind>& integratorKinds() { return registry(); }
 
 void registerIntegrator(IntegratorKind kind) {

@@ -54,6 +54,10 @@ public:
     virtual std::unique_ptr<Integrator> create(const GpuScene& scene) const = 0;
 };
 
+// One kind of a family's config, for a caller that builds several kinds from one parse (`vkphoton
+// view` cycles through them): chooses `kind` on the family's config before it builds.
+std::unique_ptr<IntegratorConfig> configForKind(IntegratorConfig& family, const std::string& kind);
+
 struct IntegratorKind {
     std::string name;     // the value of --integrator
     std::string summary;  // what it is, for --help

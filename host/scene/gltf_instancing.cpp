@@ -109,7 +109,8 @@ uint64_t declaredInstanceCount(const tinygltf::Model& model, const tinygltf::Nod
 }
 
 std::vector<bool> planInstancedMeshes(const tinygltf::Model& model, const std::vector<int>& roots,
-                                      const std::vector<Material>& materials, uint64_t minTriangles) {
+                                      const std::vector<Material>& materials, uint64_t minTriangles,
+                                      bool everyMesh) {
     const size_t meshCount = model.meshes.size();
     std::vector<bool> animatedNode(model.nodes.size(), false);
     for (const tinygltf::Animation& animation : model.animations)
@@ -165,7 +166,7 @@ std::vector<bool> planInstancedMeshes(const tinygltf::Model& model, const std::v
             }
         }
         instanced[m] = !emissive && !perNode[m] && triangles > 0 &&
-                       ((draws[m] >= 2 && triangles >= minTriangles) || (animated[m] && draws[m] >= 1));
+                       ((draws[m] >= 2 && triangles >= minTriangles) || ((animated[m] || everyMesh) && draws[m] >= 1));
     }
     return instanced;
 }

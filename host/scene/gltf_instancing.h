@@ -33,7 +33,10 @@ uint64_t declaredInstanceCount(const tinygltf::Model& model, const tinygltf::Nod
 // node that draws it or one of its ancestors; never when a primitive's material emits light
 // (lights are static triangles, docs/bvh.md), when a skinned node draws it (its vertices are
 // placed in world space by the joints) or when the nodes drawing it give different morph weights.
+// `everyMesh`: every mesh that can be instanced is, drawn once or not (`vkphoton view`, where
+// any node may be moved in place).
 std::vector<bool> planInstancedMeshes(const tinygltf::Model& model, const std::vector<int>& roots,
-                                      const std::vector<Material>& materials, uint64_t minTriangles);
+                                      const std::vector<Material>& materials, uint64_t minTriangles,
+                                      bool everyMesh = false);
 
 }  // namespace vkp

@@ -127,7 +127,7 @@ public:
             fail(m_limits.sceneIndex >= 0 ? fmt::format("--scene {}", m_sceneIndex) : sceneName,
                  fmt::format("does not exist (the file has {} scene(s))", m_model.scenes.size()));
         m_instancedMesh = planInstancedMeshes(m_model, m_model.scenes[m_sceneIndex].nodes, m_scene.materials,
-                                              m_limits.instanceMinTriangles);
+                                              m_limits.instanceMinTriangles, m_limits.instanceEveryMesh);
         checkSize(m_model.scenes[m_sceneIndex].nodes, sceneName);
         findParents();
     }
@@ -135,16 +135,19 @@ public:
     // The scene's triangles, instances, lights and cameras in world space, with the local
     // transforms of `overrides` (indexed by node; nullopt or absent: the node's own) in place of
     // the file's. keepBase false: the last flatten of this loader (no copy of the textures).
-    Scene flatten(const std::vector<std::optional<glm::dmat4>>* overrides, bool keepBase = true) {
+    Scene flatten(const std::vector<std::optional<glm::dmat4>>* overrides, bool keepBase = true,
+                  const std::vector<glm::dvec3>* worldOffsets = nullptr) {
         const std::string sceneName = fmt::format("scenes[{}]", m_sceneIndex);
         Scene base = keepBase ? m_scene : Scene{};  // materials, textures and file facts; no geometry yet
         m_overrides = overrides;
+        m_worldOffsets = worldOffsets;
         m_skippedPrimitives = 0;
         m_triangleKeys.clear();
         m_meshSlot.assign(m_model.meshes.size(), -1);
         m_nodeWorld.assign(m_model.nodes.size(), std::nullopt);
         walk(m_model.scenes[m_sceneIndex].nodes);
         m_overrides = nullptr;
+        m_worldOffsets = nullptr;
         if (m_scene.triangles.empty() && m_scene.instances.empty())
             fail(sceneName, m_skippedPrimitives ? "no triangle geometry to render (primitives of other modes are skipped)"
                                                 : "no triangle geometry to render");
@@ -315,7 +318,9 @@ private:
             if (seen[pending.node]) fail(element, "is reached twice from the scene (a node has one parent; no cycles)");
             seen[pending.node] = true;
             const tinygltf::Node& node = m_model.nodes[pending.node];
-            const glm::dmat4 world = pending.parent * local(pending.node);
+            glm::dmat4 world = pending.parent * local(pending.node);
+            if (m_worldOffsets && size_t(pending.node) < m_worldOffsets->size())
+                world[3] += glm::dvec4((*m_worldOffsets)[pending.node], 0.0);  // translate(offset) * world
             if (!isFinite(world)) fail(element, "the world transform is not finite");
             visit(node, world, element);
             for (auto it = node.children.rbegin(); it != node.children.rend(); ++it) stack.push_back({*it, world});
@@ -802,6 +807,7 @@ private:
     std::set<std::string> m_warned;                         // warnOnce()
     int m_sceneIndex = 0;
     const std::vector<std::optional<glm::dmat4>>* m_overrides = nullptr;  // flatten()'s animated local transforms
+    const std::vector<glm::dvec3>* m_worldOffsets = nullptr;              // flatten()'s node translations (view)
 };
 
 // Loader errors start with the file; the parts above name only the element.
@@ -838,15 +844,28 @@ GltfSceneSource::GltfSceneSource(const std::filesystem::path& path, const GltfLi
 
 GltfSceneSource::~GltfSceneSource() = default;
 
-Scene GltfSceneSource::sceneAt(double seconds) {
+Scene GltfSceneSource::sceneAt(double seconds, const NodeOffsets* offsets) {
     return withFileName(m_path, [&] {
         const std::vector<std::optional<glm::dmat4>> local = m_animation->localTransforms(seconds);
-        return m_state->flatten(&local);
+        return m_state->flatten(&local, true, offsets);
     });
 }
 
-Scene GltfSceneSource::stillScene() {
-    return withFileName(m_path, [&] { return m_state->flatten(nullptr); });
+Scene GltfSceneSource::stillScene(const NodeOffsets* offsets) {
+    return withFileName(m_path, [&] { return m_state->flatten(nullptr, true, offsets); });
+}
+
+int GltfSceneSource::findNode(const std::string& name) const {
+    const auto& nodes = m_state->model().nodes;
+    for (size_t i = 0; i < nodes.size(); ++i)
+        if (nodes[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+std::string GltfSceneSource::nodeName(int index) const {
+    const auto& nodes = m_state->model().nodes;
+    if (index < 0 || size_t(index) >= nodes.size()) return {};
+    return nodes[index].name.empty() ? fmt::format("nodes[{}]", index) : nodes[index].name;
 }
 
 Scene loadGltf(const std::filesystem::path& path, const GltfLimits& limits) {

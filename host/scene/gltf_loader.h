@@ -29,6 +29,9 @@ struct GltfLimits {
     // this many triangles is kept once as an instanced mesh (docs/bvh.md) instead of copied per
     // drawing; 0: every repeated mesh, UINT64_MAX: none (animated nodes' meshes always are).
     uint64_t instanceMinTriangles = 64;
+    // Not a limit: every mesh that can be instanced is (`vkphoton view`: any node may be moved in
+    // place; emissive and skinned meshes stay flattened).
+    bool instanceEveryMesh = false;
 };
 
 // Host memory the loader, the BVH build and the upload need per triangle at their peak, for the
@@ -63,10 +66,17 @@ public:
     GltfSceneSource& operator=(const GltfSceneSource&) = delete;
 
     SceneAnimation& animation() { return *m_animation; }
-    // The scene with the selected animation(s) sampled at `seconds`.
-    Scene sceneAt(double seconds);
+    // World-space translations per node index (shorter than the node list: the rest 0): a node's
+    // world transform becomes translate(offset) * its world transform, and its children follow
+    // (`vkphoton view` moves nodes so).
+    using NodeOffsets = std::vector<glm::dvec3>;
+    // The scene with the selected animation(s) sampled at `seconds`, nodes moved by `offsets`.
+    Scene sceneAt(double seconds, const NodeOffsets* offsets = nullptr);
     // The scene as loadGltf gives it: every node at its static TRS (no animation applied).
-    Scene stillScene();
+    Scene stillScene(const NodeOffsets* offsets = nullptr);
+    // The index of the first node named `name`, or -1; a node's name ("nodes[i]" when unnamed).
+    int findNode(const std::string& name) const;
+    std::string nodeName(int index) const;
 
 private:
     class State;

@@ -78,7 +78,18 @@ DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
     return info;
 }
 
-VkInstance createBareInstance(bool validate, const void* next) {
+// Whether the device offers VK_KHR_swapchain (a window's presentation needs it).
+bool hasSwapchainExtension(VkPhysicalDevice device) {
+    uint32_t count = 0;
+    vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> extensions(count);
+    vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
+    return std::any_of(extensions.begin(), extensions.end(), [](const VkExtensionProperties& e) {
+        return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
+    });
+}
+
+VkInstance createBareInstance(bool validate, const void* next, const std::vector<std::string>& requested = {}) {
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "vkphoton";
     app.applicationVersion = VK_MAKE_VERSION(0, 1, 0);
@@ -87,6 +98,7 @@ VkInstance createBareInstance(bool validate, const void* next) {
 
     std::vector<const char*> layers;
     std::vector<const char*> extensions;
+    for (const std::string& name : requested) extensions.push_back(name.c_str());
     if (validate) {
         uint32_t count = 0;
         vkEnumerateInstanceLayerProperties(&count, nullptr);
@@ -148,9 +160,9 @@ std::vector<DeviceInfo> listDevices() {
 }
 
 Context::Context(const ContextOptions& options)
-    : m_validate(options.validate || validationRequestedByEnvironment()) {
+    : m_validate(options.validate || validationRequestedByEnvironment()), m_canPresent(options.canPresent) {
     try {
-        createInstance(options.synchronizationValidation);
+        createInstance(options.synchronizationValidation, options.instanceExtensions);
         pickPhysicalDevice(options.device);
         createDevice();
         createTerminationCounters();
@@ -208,7 +220,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL Context::onDebugMessage(
     return VK_FALSE;
 }
 
-void Context::createInstance(bool synchronizationValidation) {
+void Context::createInstance(bool synchronizationValidation, const std::vector<std::string>& extensions) {
     VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
         VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
@@ -226,7 +238,7 @@ void Context::createInstance(bool synchronizationValidation) {
     features.pNext = &messengerInfo;
     // Chaining the messenger info also reports problems during instance creation itself.
     const void* chain = synchronizationValidation ? static_cast<const void*>(&features) : &messengerInfo;
-    m_instance = createBareInstance(m_validate, m_validate ? chain : nullptr);
+    m_instance = createBareInstance(m_validate, m_validate ? chain : nullptr, extensions);
     if (!m_validate) return;
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(m_instance, "vkCreateDebugUtilsMessengerEXT"));
@@ -240,6 +252,14 @@ void Context::pickPhysicalDevice(const std::string& request) {
         throw RuntimeError("no Vulkan device found (Debian: apt-get install mesa-vulkan-drivers)");
     std::vector<DeviceInfo> infos;
     for (uint32_t i = 0; i < devices.size(); ++i) infos.push_back(describe(devices[i], i));
+    // A window: only devices that can present to it (headless commands never ask).
+    if (m_canPresent)
+        for (DeviceInfo& info : infos) {
+            uint32_t family = 0;
+            if (info.suitable && !(hasSwapchainExtension(devices[info.index]) && findQueueFamily(devices[info.index], family) &&
+                                   m_canPresent(m_instance, devices[info.index], family)))
+                info.suitable = false;
+        }
 
     int chosen = -1;
     if (!request.empty()) {
@@ -255,8 +275,8 @@ void Context::pickPhysicalDevice(const std::string& request) {
             throw InputError(fmt::format("--device {}: no such device; available:{}", request, names));
         }
         if (!infos[chosen].suitable)
-            throw InputError(fmt::format("--device {}: '{}' lacks Vulkan 1.3 or a compute queue",
-                                         request, infos[chosen].name));
+            throw InputError(fmt::format("--device {}: '{}' lacks Vulkan 1.3 or a compute queue{}",
+                                         request, infos[chosen].name, m_canPresent ? ", or cannot present to the window" : ""));
     } else {
         for (const auto& info : infos) {
             if (!info.suitable) continue;
@@ -266,7 +286,9 @@ void Context::pickPhysicalDevice(const std::string& request) {
             if (chosen < 0 || deviceRank(a.deviceType) < deviceRank(b.deviceType))
                 chosen = static_cast<int>(info.index);
         }
-        if (chosen < 0) throw RuntimeError("no Vulkan 1.3 device with a compute queue found");
+        if (chosen < 0)
+            throw RuntimeError(m_canPresent ? "no Vulkan 1.3 device with a compute queue that can present to the window found"
+                                            : "no Vulkan 1.3 device with a compute queue found");
     }
     m_physicalDevice = devices[chosen];
     vkGetPhysicalDeviceProperties(m_physicalDevice, &m_properties);
@@ -319,6 +341,11 @@ void Context::createDevice() {
     info.pNext = &features;
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queueInfo;
+    const char* swapchain = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
+    if (m_canPresent) {  // a window (host/view): the queue chosen above presents too
+        info.enabledExtensionCount = 1;
+        info.ppEnabledExtensionNames = &swapchain;
+    }
     check(vkCreateDevice(m_physicalDevice, &info, nullptr, &m_device), "creating the logical device");
     vkGetDeviceQueue(m_device, m_queueFamily, 0, &m_queue);
 

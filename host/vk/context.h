@@ -22,6 +22,13 @@ struct ContextOptions {
     bool validate = false;      // enable VK_LAYER_KHRONOS_validation; every message is an error
     std::string device;         // "" = automatic; a decimal index or a substring of the name
     bool synchronizationValidation = false;  // with validate: also the layer's hazard tracking
+    // Presentation (`vkphoton view`): the instance extensions the window system needs (GLFW's
+    // list), and `canPresent`, which says whether a device's queue family can present to it.
+    // With canPresent set only devices that can (and have VK_KHR_swapchain) are chosen and the
+    // device enables VK_KHR_swapchain. Left empty (every other command): no surface extension is
+    // asked for, so rendering needs no display.
+    std::vector<std::string> instanceExtensions;
+    std::function<bool(VkInstance, VkPhysicalDevice, uint32_t queueFamily)> canPresent;
 };
 
 struct DeviceInfo {
@@ -64,6 +71,8 @@ public:
     const VkPhysicalDeviceProperties& properties() const { return m_properties; }
     const std::string& deviceName() const { return m_deviceName; }
     bool validationEnabled() const { return m_validate; }
+    // Whether VK_KHR_swapchain is enabled (ContextOptions::canPresent was set).
+    bool presentationEnabled() const { return static_cast<bool>(m_canPresent); }
     bool depthClampEnabled() const { return m_depthClamp; }
     bool geometryShaderEnabled() const { return m_geometryShader; }
     // Largest single buffer: maxMemoryAllocationSize and maxBufferSize, the smaller.
@@ -91,12 +100,13 @@ private:
         const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
 
     void destroy();
-    void createInstance(bool synchronizationValidation);
+    void createInstance(bool synchronizationValidation, const std::vector<std::string>& extensions);
     void pickPhysicalDevice(const std::string& request);
     void createDevice();
     void createTerminationCounters();
 
     bool m_validate = false;
+    std::function<bool(VkInstance, VkPhysicalDevice, uint32_t)> m_canPresent;
     bool m_depthClamp = false;
     bool m_geometryShader = false;
     VkInstance m_instance = VK_NULL_HANDLE;

@@ -1,0 +1,188 @@
+#include "view/progressive_session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "render/path_integrator.h"
+#include "render/stats.h"
+#include "render/terminations.h"
+#include "util/stopwatch.h"
+#include "vk/compute_kernel.h"
+#include "vk/context.h"
+
+namespace vkp {
+
+ProgressiveSession::ProgressiveSession(vk::Context& context, const SessionSettings& settings)
+    : m_context(context), m_settings(settings), m_frameScene(context, settings.lightSampling),
+      m_update(std::make_unique<SelectiveFrameUpdate>(context, settings.selective)) {
+    m_settings.frame.check();
+    m_film = std::make_unique<Film>(context, m_settings.frame.width, m_settings.frame.height);
+}
+
+ProgressiveSession::~ProgressiveSession() {
+    cancel();
+    // The integrator and the raster pass refer to the scene's buffers: release them first.
+    m_integrator.reset();
+    m_preview.reset();
+    m_raster.reset();
+}
+
+bool ProgressiveSession::setScene(Scene scene) {
+    const FrameSceneChange change = m_frameScene.set(std::move(scene));
+    if (change.rebuilt) {
+        m_raster.reset();
+        m_integrator.reset();
+        m_preview.reset();
+        if (m_config) m_integrator = m_config->create(m_frameScene.renderer().gpuScene());
+        m_needFull = true;
+    }
+    return change.rebuilt;
+}
+
+void ProgressiveSession::setIntegrator(const IntegratorConfig& config) {
+    m_config = &config;
+    m_integrator.reset();
+    m_integrator = config.create(m_frameScene.renderer().gpuScene());
+    m_needFull = true;  // its maps are new (the selective update keys them by their settings)
+}
+
+void ProgressiveSession::restart(PhotonRefresh refresh, bool allowPreview) {
+    const auto start = Clock::now();
+    if (m_needFull) refresh = PhotonRefresh::Full;
+    Renderer& renderer = m_frameScene.renderer();
+    FrameSettings settings = m_settings.frame;
+    settings.photonUpdate = m_update.get();
+    settings.update.frame = m_round++;
+    settings.update.firstFrame = refresh == PhotonRefresh::Full;
+    settings.update.sceneGeneration = m_frameScene.generation();
+    settings.update.retrace = refresh != PhotonRefresh::Reuse;
+    m_raster.reset();
+    m_frame = makeFrame(m_frameScene.scene(), settings);
+    clearTerminations(m_context);
+    m_raster = std::make_unique<RasterDirectLight>(renderer.gpuScene(), settings, m_frame.gpuCamera,
+                                                   renderer.lightReach() ? &*renderer.lightReach() : nullptr);
+    m_frame.rasterDirect = &m_raster->direct();
+    m_frame.rasterFlags = m_raster->pathFlags();
+    m_needFull = false;
+    m_samples = 0;
+    m_batch = 1;
+    m_pendingRefresh.reset();
+    m_preparedNow = false;
+    m_previewImage = false;
+    m_stop = false;
+    m_frame.control.stop = &m_stop;  // cancel(): the photon passes stop between chunks
+    m_clearFilm = true;
+    const bool prepares = m_integrator->name() != "path";  // photon maps, guides: seconds on lavapipe
+    if (m_settings.preview && allowPreview && prepares) {
+        // One path-traced sample of the changed scene: on screen before the maps are traced.
+        m_context.submitAndWait([&](VkCommandBuffer cmd) { m_film->recordClear(cmd); });
+        if (!m_preview) m_preview = std::make_unique<PathIntegrator>(renderer.gpuScene());
+        m_preview->prepare(m_frame, *m_film);
+        m_context.submitAndWait([&](VkCommandBuffer cmd) {
+            m_preview->recordSamples(cmd, 0, 1);
+            vk::computeToHostBarrier(cmd);
+        });
+        m_pendingRefresh = refresh;
+        m_previewImage = true;
+    } else if (prepares) {
+        // A refresh round: the film keeps the last image until the preparation is done.
+        m_pendingRefresh = refresh;
+    } else {
+        prepareIntegrator(refresh);
+    }
+    m_lastPrepareSeconds = secondsSince(start);
+}
+
+void ProgressiveSession::prepareIntegrator(PhotonRefresh refresh) {
+    if (m_clearFilm) m_context.submitAndWait([&](VkCommandBuffer cmd) { m_film->recordClear(cmd); });
+    m_clearFilm = false;
+    m_integrator->prepare(m_frame, *m_film);
+    const FramePhotonCounts counts = m_update->takeCounts();
+    if (counts.fullPhotonPaths > 0) {  // maps built through the seam (the photon integrator)
+        m_lastPhotonPaths = counts.photonPathsTraced;
+        m_lastFullPhotonPaths = counts.fullPhotonPaths;
+    } else if (refresh == PhotonRefresh::Reuse) {
+        m_lastPhotonPaths = 0;  // maps kept as they were (--deposit all), or none: the last full count stands
+    } else {  // maps outside the seam (progressive photon mapping: per sample) or none
+        Stats stats;
+        m_integrator->report(stats);
+        m_lastPhotonPaths = m_lastFullPhotonPaths = stats.getOr<uint64_t>("photons.pathsTraced", 0);
+    }
+    // After a move the first round retraced the changed groups within the budget; the rounds
+    // that follow refresh the rest round-robin, and after paths / (paths per round) of them every
+    // group has been traced in the moved scene. A camera change leaves the count as it was, and
+    // a refresh round counts itself down (refreshRound).
+    if (m_refreshing) return;
+    if (refresh == PhotonRefresh::Full) {
+        m_refreshRoundsLeft = 0;
+    } else if (refresh == PhotonRefresh::Selective) {
+        if (counts.photonPathsTraced > 0 && counts.photonPathsTraced < counts.fullPhotonPaths)
+            m_refreshRoundsLeft = uint32_t(std::ceil(double(counts.fullPhotonPaths) / double(counts.photonPathsTraced))) + 1;
+        else
+            m_refreshRoundsLeft = 0;
+    }
+}
+
+void ProgressiveSession::refreshRound() {
+    const uint32_t left = m_refreshRoundsLeft > 0 ? m_refreshRoundsLeft - 1 : 0;
+    restart(PhotonRefresh::Selective, false);  // the image is already the moved scene's
+    m_refreshing = true;
+    m_refreshRoundsLeft = left;
+}
+
+void ProgressiveSession::cancel() {
+    if (!m_preparation.valid()) return;
+    m_stop = true;
+    try {
+        m_preparation.get();
+    } catch (...) {
+    }
+}
+
+uint32_t ProgressiveSession::step(double targetSeconds) {
+    m_preparedNow = false;
+    if (m_preparation.valid()) {
+        // The preparation runs on its own thread; the window keeps being polled meanwhile.
+        if (m_preparation.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return 0;
+        m_preparation.get();  // rethrows its error
+        m_lastPrepareSeconds += secondsSince(m_prepareStart);
+        m_preparedNow = true;
+        m_lastWasRefresh = m_refreshing;
+        m_refreshing = false;
+        m_samples = 0;
+        m_batch = 1;
+        return 0;
+    }
+    if (m_pendingRefresh) {
+        const PhotonRefresh refresh = *m_pendingRefresh;
+        m_pendingRefresh.reset();
+        m_previewImage = false;
+        m_prepareStart = Clock::now();
+        m_preparation = std::async(std::launch::async, [this, refresh] { prepareIntegrator(refresh); });
+        return 0;
+    }
+    if (complete() || !m_integrator) return 0;
+    const uint32_t count =
+        std::min({m_batch, m_integrator->maxSamplesPerBatch(), m_settings.frame.samplesPerPixel - m_samples});
+    const auto start = Clock::now();
+    m_integrator->beginSamples(m_samples, count);
+    m_context.submitAndWait([&](VkCommandBuffer cmd) {
+        m_integrator->recordSamples(cmd, m_samples, count);
+        vk::computeToHostBarrier(cmd);
+    });
+    m_samples += count;
+    // Grow or shrink the next batch towards the target time (the window waits for it).
+    const double perSample = secondsSince(start) / count;
+    const double next = perSample > 0.0 ? targetSeconds / perSample : 2.0 * m_batch;
+    m_batch = uint32_t(std::clamp(next, 1.0, 4096.0));
+    return count;
+}
+
+ImageRgb ProgressiveSession::image() {
+    ImageRgb image = m_film->resolve();
+    if (m_integrator && !inPreview()) m_integrator->finish(image, m_samples);
+    return image;
+}
+
+}  // namespace vkp

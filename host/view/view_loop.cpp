@@ -1,0 +1,437 @@
+#include <algorithm>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "image/atomic_file.h"
+#include "image/exr.h"
+#include "image/png.h"
+#include "image/view_transform.h"
+#include "scene/gltf_loader.h"
+#include "util/errors.h"
+#include "util/printable.h"
+#include "view/camera_controller.h"
+#include "view/event_script.h"
+#include "view/node_picking.h"
+#include "view/progressive_session.h"
+#include "view/swapchain_presenter.h"
+#include "view/view_command.h"
+#include "view/view_stats.h"
+#include "view/view_window.h"
+#include "vk/context.h"
+
+namespace vkp {
+namespace {
+
+// Each loop iteration renders about this long before it presents and polls the window again.
+constexpr double kFrameSeconds = 1.0 / 30.0;
+// With nothing left to render the loop waits this long for input.
+constexpr double kIdleSeconds = 0.05;
+
+// The RGBA bytes the window shows: the PNG's display transform, then the selection's outline.
+std::vector<uint8_t> displayBytes(const ImageRgb& image, const DisplaySettings& display) {
+    std::vector<uint8_t> rgba(size_t(image.width) * image.height * 4, 255);
+    for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
+        const auto rgb = toDisplayBytes(glm::vec3(image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]),
+                                        display);
+        rgba[4 * i] = rgb[0];
+        rgba[4 * i + 1] = rgb[1];
+        rgba[4 * i + 2] = rgb[2];
+    }
+    return rgba;
+}
+
+// EXR and PNG side by side, as `render` writes them (PATH may name either).
+void writeScreenshot(const std::filesystem::path& path, const ImageRgb& image, const ViewCommandOptions& options,
+                     ProgressiveSession& session) {
+    std::filesystem::path exr = path, png = path;
+    exr.replace_extension(".exr");
+    png.replace_extension(".png");
+    if (exr.has_parent_path()) std::filesystem::create_directories(exr.parent_path());
+    const FrameSettings& frame = session.settings().frame;
+    const ExrAttributes attributes{
+        {"vkphoton/scene", options.render.scene.string()},
+        {"vkphoton/integrator", session.integratorName()},
+        {"vkphoton/spp", std::to_string(session.samples())},
+        {"vkphoton/sppRequested", std::to_string(frame.samplesPerPixel)},
+        {"vkphoton/seed", std::to_string(frame.seed)},
+        {"vkphoton/maxDepth", std::to_string(frame.maxDepth)},
+        {"vkphoton/device", session.context().deviceName()},
+        {"vkphoton/exposure", fmt::format("{}", options.render.display.exposureEv)},
+        {"vkphoton/tonemap", viewTransformName(options.render.display.view)},
+        {"vkphoton/source", "view"},
+    };
+    writeFilesTogether({{exr, exrBytes(exr, image, attributes)}, {png, pngBytes(png, image, options.render.display)}});
+}
+
+// The script's checks that need the scene and the window size: nodes that exist, pixels inside.
+void checkScript(const std::vector<ScriptEvent>& events, const GltfSceneSource& source, uint32_t width, uint32_t height) {
+    auto inside = [&](glm::vec2 p) { return p.x >= 0.0f && p.y >= 0.0f && p.x < float(width) && p.y < float(height); };
+    for (const ScriptEvent& e : events) {
+        if (e.command == ScriptCommand::Move && source.findNode(e.node) < 0)
+            throw InputError(fmt::format("{}: move: unknown node '{}' (no glTF node has that name)", e.where,
+                                         printable(e.node)));
+        if ((e.command == ScriptCommand::Click || e.command == ScriptCommand::Drag) && !inside(e.from))
+            throw InputError(fmt::format("{}: ({}, {}) is outside the {}x{} window", e.where, e.from.x, e.from.y, width,
+                                         height));
+        if (e.command == ScriptCommand::Drag && !inside(e.to))
+            throw InputError(fmt::format("{}: ({}, {}) is outside the {}x{} window", e.where, e.to.x, e.to.y, width,
+                                         height));
+        if (e.command == ScriptCommand::Screenshot) {
+            std::filesystem::path exr = e.path, png = e.path;
+            exr.replace_extension(".exr");
+            png.replace_extension(".png");
+            for (const auto& p : {exr, png})
+                if (p.has_parent_path() && std::filesystem::exists(p.parent_path())) checkWritable(p);
+        }
+    }
+}
+
+}  // namespace
+
+int runView(const ViewCommandOptions& options,
+            const std::vector<std::pair<std::string, const IntegratorConfig*>>& integrators, size_t first) {
+    const auto start = Clock::now();
+    const RenderCommandOptions& render = options.render;
+    const std::vector<ScriptEvent> events = options.events.empty() ? std::vector<ScriptEvent>{}
+                                                                   : readEventScript(options.events);
+    if (!render.statsJson.empty()) checkWritable(render.statsJson);
+    requireDisplay();
+    const uint32_t width = render.frame.width, height = render.frame.height;
+    const std::string sceneName = render.scene.filename().string();
+    ViewWindow window(width, height, fmt::format("vkphoton view: {}", sceneName));
+    nlohmann::json startup;  // where the time to the first image goes (--stats-json "startup")
+    startup["windowSeconds"] = secondsSince(start);
+
+    vk::ContextOptions contextOptions{render.validate, render.device};
+    contextOptions.instanceExtensions = ViewWindow::requiredInstanceExtensions();
+    contextOptions.canPresent = &ViewWindow::canPresent;
+    vk::Context context(contextOptions);
+    startup["deviceSeconds"] = secondsSince(start);
+    GltfLimits limits = deviceSceneLimits(context, render.maxMemoryGiB);
+    limits.sceneIndex = render.sceneIndex;
+    limits.instanceEveryMesh = true;  // any node can be moved in place
+    GltfSceneSource source(render.scene, limits);
+    checkScript(events, source, width, height);
+    source.animation().select(render.animation);
+
+    // As `render --frames` does: every scene takes the still scene's bounds (photon radius,
+    // framing, the directional lights' disk), so moving a node changes nothing else.
+    Scene still = source.stillScene();
+    const Bounds stillBounds = still.bounds;
+    SessionSettings settings;
+    settings.frame = render.frame;
+    settings.lightSampling = render.lightSampling;
+    if (render.lightSamplerAuto) settings.lightSampling.sampler = autoLightSampler(still);
+    settings.selective.budget = render.photonBudget;
+    settings.selective.groups = render.photonGroups;
+    settings.preview = options.preview;
+    bool noteShown = false;
+    auto prepared = [&](Scene scene) {
+        std::string note;
+        applyEnvironment(scene, render.environment, note);
+        if (!note.empty() && !render.quiet && !noteShown) fmt::print(stderr, "{}\n", note);
+        noteShown = true;
+        scene.energyCompensation = !render.noEnergyCompensation;
+        scene.bounds = stillBounds;
+        return scene;
+    };
+    const Camera initialCamera =
+        chooseCamera(still, render.frame.cameraIndex, float(width) / float(height), render.frame.view);
+    CameraController camera(initialCamera, render.frame.view.lookAt.value_or(stillBounds.center()));
+
+    startup["loadSeconds"] = secondsSince(start);
+    ProgressiveSession session(context, settings);
+    session.setScene(prepared(std::move(still)));
+    startup["sceneSeconds"] = secondsSince(start);  // BVH, upload
+    size_t integratorIndex = first;
+    session.setIntegrator(*integrators[integratorIndex].second);
+    startup["integratorSeconds"] = secondsSince(start);  // its kernels (pipelines compiled on first use)
+    SwapchainPresenter presenter(context, window.createSurface(context.instance()), width, height);
+    startup["presenterSeconds"] = secondsSince(start);  // the surface and swapchain
+    if (!render.quiet)
+        fmt::print(stderr, "vkphoton view: {} on {}{}; press H for help\n", printable(render.scene.string()),
+                   context.deviceName(), context.validationEnabled() ? " with validation" : "");
+    session.restart(PhotonRefresh::Full);
+    startup["restartSeconds"] = secondsSince(start);  // frame, raster light, film; the preview or the preparation
+    // Photon maps, raster light (set once the integrator is prepared: after the preview, if any).
+    auto startupPrepared = [&]() {
+        startup["prepareSeconds"] = session.lastPrepareSeconds();
+        startup["photonPathsTraced"] = session.lastPhotonPaths();
+    };
+    if (!session.inPreview()) startupPrepared();
+
+    ViewStats stats(start);
+    GltfSceneSource::NodeOffsets offsets;
+    int selected = -1;
+    std::vector<uint8_t> mask;
+    bool playing = false;
+    double animationTime = 0.0;
+    bool animated = false;  // the scene shows the animation at animationTime (else the still pose)
+    auto lastTick = Clock::now();
+    size_t next = 0;                           // the script's next command
+    std::optional<Clock::time_point> waitFrom; // `seconds`: when the wait began
+    uint32_t shownSamples = UINT32_MAX;        // samples of the image on screen (UINT32_MAX: none yet)
+    bool redraw = true;
+    ImageRgb image;
+    uint32_t screenshots = 0;
+    auto restartAt = Clock::now();  // when the current accumulation's samples began
+    bool quit = false;
+
+    auto sceneNow = [&]() {
+        return prepared(animated ? source.sceneAt(animationTime, &offsets) : source.stillScene(&offsets));
+    };
+    auto updateMask = [&]() {
+        mask = selected >= 0 ? nodeMask(session.scene(), session.arrays(), session.frame().gpuCamera, width, height, selected)
+                             : std::vector<uint8_t>();
+        redraw = true;
+    };
+    // A change: restart the accumulation and record it.
+    auto applyChange = [&](const std::string& kind, PhotonRefresh refresh) {
+        const auto at = Clock::now();
+        session.restart(refresh);
+        stats.change(kind, at, session.lastPhotonPaths(), session.lastFullPhotonPaths(), session.lastPrepareSeconds());
+        shownSamples = UINT32_MAX;
+        restartAt = Clock::now();
+        if (selected >= 0) updateMask();
+    };
+    auto moveNode = [&](int node, glm::dvec3 delta) {
+        if (offsets.size() <= size_t(node)) offsets.resize(size_t(node) + 1, glm::dvec3(0.0));
+        offsets[node] += delta;
+    };
+
+    std::vector<ViewAction> deferred;  // input that arrived while the integrator prepared
+    auto lastTitle = Clock::now();
+    while (!quit && !window.closeRequested()) {
+        std::vector<ViewAction> actions = window.poll();
+        bool justPrepared = false;
+        if (session.preparing()) {
+            session.step(0.0);  // finds the preparation done (or rethrows its error)
+            if (session.preparing()) {
+                // The window stays responsive: input is kept for when the preparation is done,
+                // Q or Esc stop it.
+                for (const ViewAction& a : actions) {
+                    if (a.kind == ViewAction::Kind::Key && a.key == ViewKey::Quit) quit = true;
+                    deferred.push_back(a);
+                }
+                if (quit || window.closeRequested()) {
+                    session.cancel();
+                    break;
+                }
+                if (secondsSince(lastTitle) > 0.5) {
+                    window.setTitle(fmt::format("vkphoton view: {} | {} | preparing ({:.0f} s){}", sceneName,
+                                                session.integratorName(), secondsSince(restartAt),
+                                                deferred.empty() ? std::string() : ", input queued"));
+                    lastTitle = Clock::now();
+                }
+                std::this_thread::sleep_for(std::chrono::duration<double>(kIdleSeconds));
+                continue;
+            }
+            justPrepared = session.preparedNow();
+        }
+        if (!deferred.empty()) {
+            actions.insert(actions.begin(), deferred.begin(), deferred.end());
+            deferred.clear();
+        }
+        if (justPrepared) {  // the restart's own counts are known now
+            shownSamples = UINT32_MAX;  // its first image is not on screen yet (a refresh round waits for it)
+            if (session.lastWasRefresh()) stats.refresh(session.lastPhotonPaths());
+            else if (stats.changes().empty()) startupPrepared();
+            else stats.prepared(session.lastPhotonPaths(), session.lastFullPhotonPaths(), session.lastPrepareSeconds());
+        }
+        // The script: commands run in order, each after the previous one finished (a change has
+        // been shown, a wait is over).
+        // (Not in the iteration that finds a preparation done: its first image is shown first.)
+        while (!justPrepared && next < events.size() && stats.lastChangeShown() && actions.empty()) {
+            const ScriptEvent& e = events[next];
+            bool done = true;
+            switch (e.command) {
+            case ScriptCommand::Samples:
+                done = shownSamples != UINT32_MAX && shownSamples >= std::min(e.samples, session.settings().frame.samplesPerPixel) &&
+                       !session.refreshDue();
+                break;
+            case ScriptCommand::Seconds:
+                if (!waitFrom) waitFrom = Clock::now();
+                done = secondsSince(*waitFrom) >= e.seconds;
+                if (done) waitFrom.reset();
+                break;
+            case ScriptCommand::Screenshot:
+                done = shownSamples != UINT32_MAX;
+                if (done) writeScreenshot(e.path, image, options, session);
+                if (done && !render.quiet)
+                    fmt::print(stderr, "{}: wrote {} ({})\n", e.where, printable(e.path.string()),
+                               session.inPreview() ? std::string("the preview: one path-traced sample")
+                                                   : fmt::format("{} spp", shownSamples));
+                break;
+            case ScriptCommand::Move: {
+                ViewAction a;
+                a.kind = ViewAction::Kind::MoveNode;
+                a.node = e.node;
+                a.delta = e.delta;
+                actions.push_back(a);
+                break;
+            }
+            case ScriptCommand::Orbit: {
+                ViewAction a;
+                a.kind = ViewAction::Kind::Orbit;
+                a.a = e.from;
+                actions.push_back(a);
+                break;
+            }
+            case ScriptCommand::Click: {
+                ViewAction a;
+                a.kind = ViewAction::Kind::Select;
+                a.a = e.from;
+                actions.push_back(a);
+                break;
+            }
+            case ScriptCommand::Drag: actions.push_back(dragAction(e.button, e.from, e.to)); break;
+            case ScriptCommand::Key: {
+                ViewAction a;
+                a.kind = ViewAction::Kind::Key;
+                a.key = e.key;
+                actions.push_back(a);
+                break;
+            }
+            case ScriptCommand::Quit: quit = true; break;
+            }
+            if (!done) break;
+            ++next;
+        }
+
+        // Input: camera and scene changes are gathered, then applied once (one restart).
+        std::string sceneKind, viewKind;
+        for (const ViewAction& a : actions) {
+            switch (a.kind) {
+            case ViewAction::Kind::Orbit:
+                camera.orbit(a.a.x, a.a.y);
+                viewKind = "orbit";
+                break;
+            case ViewAction::Kind::Pan:
+                camera.pan(a.a, a.b, height);
+                viewKind = "pan";
+                break;
+            case ViewAction::Kind::Dolly:
+                camera.dolly(a.amount);
+                viewKind = "dolly";
+                break;
+            case ViewAction::Kind::Select:
+                selected = pickNode(session.scene(), session.arrays(), session.frame().gpuCamera, width, height, a.a);
+                if (!render.quiet)
+                    fmt::print(stderr, "{}\n", selected >= 0 ? fmt::format("selected {}", printable(source.nodeName(selected)))
+                                                             : std::string("nothing selected"));
+                updateMask();
+                break;
+            case ViewAction::Kind::MoveSelected: {
+                glm::vec3 centre;
+                if (selected < 0 || !nodeCentre(session.scene(), selected, centre)) break;
+                moveNode(selected, glm::dvec3(camera.imagePlaneDelta(centre, a.a, a.b, height)));
+                sceneKind = "move";
+                break;
+            }
+            case ViewAction::Kind::MoveNode:
+                moveNode(source.findNode(a.node), a.delta);
+                sceneKind = "move";
+                break;
+            case ViewAction::Kind::Key:
+                switch (a.key) {
+                case ViewKey::Integrator:
+                    integratorIndex = (integratorIndex + 1) % integrators.size();
+                    session.setIntegrator(*integrators[integratorIndex].second);
+                    applyChange("integrator", PhotonRefresh::Full);
+                    break;
+                case ViewKey::Restart: applyChange("restart", PhotonRefresh::Full); break;
+                case ViewKey::Screenshot: {
+                    const std::filesystem::path path =
+                        std::filesystem::path("out") / fmt::format("{}-view-{:04}.exr", render.scene.stem().string(), screenshots++);
+                    if (shownSamples != UINT32_MAX) writeScreenshot(path, image, options, session);
+                    if (!render.quiet) fmt::print(stderr, "wrote {}\n", printable(path.string()));
+                    break;
+                }
+                case ViewKey::PlayPause:
+                    playing = !playing;
+                    animated = true;
+                    lastTick = Clock::now();
+                    break;
+                case ViewKey::Help: fmt::print("{}", viewHelpText()); break;
+                case ViewKey::Quit: quit = true; break;
+                }
+                break;
+            }
+        }
+        if (quit) break;
+        if (playing) {
+            animationTime += secondsSince(lastTick);
+            lastTick = Clock::now();
+            if (source.animation().endTime() > source.animation().startTime() && animationTime > source.animation().endTime())
+                animationTime = source.animation().startTime();
+            if (sceneKind.empty()) sceneKind = "animation";
+        }
+        if (!sceneKind.empty()) {
+            const auto at = Clock::now();
+            const bool rebuilt = session.setScene(sceneNow());
+            if (!viewKind.empty()) session.setView(camera.view(render.frame.view));
+            session.restart(rebuilt ? PhotonRefresh::Full : PhotonRefresh::Selective);
+            stats.change(sceneKind, at, session.lastPhotonPaths(), session.lastFullPhotonPaths(), session.lastPrepareSeconds(),
+                         rebuilt);
+            shownSamples = UINT32_MAX;
+            restartAt = Clock::now();
+            if (selected >= 0) updateMask();
+        } else if (!viewKind.empty()) {
+            session.setView(camera.view(render.frame.view));
+            applyChange(viewKind, PhotonRefresh::Reuse);
+        }
+
+        // Samples: one bounded batch per iteration; once the image holding the last change has
+        // been shown, the stale photon groups a move left are refreshed round by round (each
+        // prepared on its own thread while the window shows the last image).
+        uint32_t rendered = 0;
+        if (!session.inPreview() && session.refreshDue() && shownSamples != UINT32_MAX) {
+            session.refreshRound();
+            shownSamples = UINT32_MAX;  // the image on screen is the last round's
+            restartAt = Clock::now();
+        }
+        // A preview is shown before the preparation that follows it starts.
+        if (!(session.hasPreviewImage() && shownSamples == UINT32_MAX)) rendered = session.step(kFrameSeconds);
+        if (session.preparing()) continue;  // the film is the preparation's until it is done
+        if (rendered > 0 || shownSamples != session.samples() || redraw) {
+            image = session.image();
+            std::vector<uint8_t> rgba = displayBytes(image, render.display);
+            if (!mask.empty()) drawOutline(rgba, mask, width, height);
+            presenter.present(rgba);
+            shownSamples = session.samples();
+            redraw = false;
+            stats.presented(Clock::now(), session.inPreview());
+            if (!startup.contains("firstPresentSeconds")) startup["firstPresentSeconds"] = secondsSince(start);
+            const double seconds = secondsSince(restartAt);
+            window.setTitle(fmt::format("vkphoton view: {} | {} | {}/{} spp | {:.1f} spp/s | {} photon paths{}{}", sceneName,
+                                        session.integratorName(), session.samples(), session.settings().frame.samplesPerPixel,
+                                        seconds > 0.0 ? session.samples() / seconds : 0.0, session.lastPhotonPaths(),
+                                        stats.changes().empty() ? " (first build)" : " (last change)",
+                                        session.refreshDue() ? fmt::format(", refreshing: {} rounds left", session.refreshRoundsLeft())
+                                                             : std::string()));
+        } else if (next >= events.size() || events[next].command != ScriptCommand::Seconds) {
+            std::this_thread::sleep_for(std::chrono::duration<double>(kIdleSeconds));  // idle: nothing to render
+        }
+    }
+
+    if (!render.statsJson.empty()) {
+        nlohmann::json json = stats.toJson(Clock::now());
+        json["scene"] = render.scene.string();
+        json["integrator"] = session.integratorName();
+        json["device"] = context.deviceName();
+        json["width"] = width;
+        json["height"] = height;
+        json["spp"] = render.frame.samplesPerPixel;
+        json["preview"] = settings.preview;
+        json["startup"] = startup;
+        writeTextAtomically(render.statsJson, json.dump(2) + "\n");
+    }
+    if (!render.quiet && stats.firstImageSeconds())
+        fmt::print(stderr, "first image after {:.2f} s; {} change(s), {} frames presented\n", *stats.firstImageSeconds(),
+                   stats.changes().size(), stats.framesPresented());
+    if (context.validationEnabled()) context.throwOnValidationMessages();
+    return kExitOk;
+}
+
+}  // namespace vkp

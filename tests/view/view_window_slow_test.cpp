@@ -1,0 +1,244 @@
+// `vkphoton view` end to end: without a display (exit 2 naming DISPLAY), and under Xvfb, which
+// each test starts itself through xvfb-run (so the suite needs no DISPLAY): an event script that
+// moves a node, checked against offline renders of the moved and unmoved scene; the stats of a
+// move, a camera change and a click-and-drag; and (VKPHOTON_VALIDATE=1, which the suite sets and
+// the binary inherits) no validation message, since any one makes the view exit 1.
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.h"
+#include "image/exr.h"
+#include "image/metrics.h"
+#include "util/errors.h"
+#include "view/view_window.h"
+#include "vk/context.h"
+
+namespace vkp {
+namespace {
+
+namespace fs = std::filesystem;
+using test::RunResult;
+
+const std::string kGlass = std::string(VKPHOTON_SCENES) + "/cornell-glass.gltf";
+// A small photon render: both maps, a few thousand paths, so a run takes seconds on lavapipe.
+const std::string kPhotonFlags =
+    "--integrator photon --photons 20000 --caustic-photons 20000 --gather-rays 2 --width 64 --height 64 --seed 3";
+
+bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+RunResult runCommand(const std::string& command) {
+    RunResult result;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe) return result;
+    char buffer[4096];
+    size_t n;
+    while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
+    const int status = pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+// `vkphoton view ARGS` under a fresh Xvfb server. xvfb-run -a takes the first free display from
+// -n on; tests that ctest runs side by side start their search at different numbers (from the
+// process id) and try again when two still chose the same one ("Xvfb failed to start").
+RunResult runViewUnderXvfb(const std::string& args) {
+    RunResult r;
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        const int display = 100 + int((::getpid() * 7 + attempt * 101) % 800);
+        r = runCommand("xvfb-run -a -n " + std::to_string(display) + " -s '-screen 0 640x480x24' " +
+                       std::string(VKPHOTON_BINARY) + " view " + args);
+        if (r.output.find("Xvfb failed to start") == std::string::npos) break;
+    }
+    return r;
+}
+
+RunResult runWithoutDisplay(const std::string& args) {
+    return runCommand("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(VKPHOTON_BINARY) + " " + args);
+}
+
+void writeText(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+nlohmann::json readJson(const fs::path& path) {
+    std::ifstream in(path);
+    return nlohmann::json::parse(in);
+}
+
+// cornell-glass with node `name` translated by `delta` (its mesh is in world space, the node has
+// no transform of its own): the offline reference of a `move`.
+fs::path movedScene(const fs::path& dir, const std::string& name, const glm::vec3& delta) {
+    std::ifstream in(kGlass);
+    nlohmann::json gltf = nlohmann::json::parse(in);
+    for (auto& node : gltf["nodes"])
+        if (node.value("name", "") == name) node["translation"] = {delta.x, delta.y, delta.z};
+    const fs::path path = dir / "moved.gltf";
+    std::ofstream(path) << gltf.dump();
+    return path;
+}
+
+TEST(ViewCommand, HelpListsItsOptions) {
+    const RunResult r = runWithoutDisplay("view --help");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    for (const char* flag : {"--events", "--stats-json", "--no-preview", "--integrator", "--photons", "--spp"})
+        EXPECT_NE(r.output.find(flag), std::string::npos) << flag << "\n" << r.output;
+}
+
+TEST(ViewCommand, NoDisplayExitsWithTwoNamingDisplay) {
+    const RunResult r = runWithoutDisplay("view " + kGlass + " --spp 1");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("DISPLAY"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("vkphoton render"), std::string::npos) << r.output;
+}
+
+TEST(ViewCommand, BadScriptExitsWithTwoNamingTheLineBeforeAnyWindow) {
+    const fs::path dir = test::freshTempDir("view", "badscript");
+    writeText(dir / "events.txt", "samples 2\n\nwiggle 3\n");
+    const RunResult r = runWithoutDisplay("view " + kGlass + " --events " + (dir / "events.txt").string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("events.txt:3: unknown command 'wiggle'"), std::string::npos) << r.output;
+}
+
+// Presentation asks for surface extensions only when told to: the device chooser then keeps the
+// devices that can present, and headless contexts never ask (render works without a display).
+TEST(ViewCommand, ContextPresentationIsOptIn) {
+    vk::Context headless;
+    EXPECT_FALSE(headless.presentationEnabled());
+    vk::ContextOptions none;
+    none.instanceExtensions = {VK_KHR_SURFACE_EXTENSION_NAME};
+    none.canPresent = [](VkInstance, VkPhysicalDevice, uint32_t) { return false; };
+    try {
+        vk::Context refused(none);
+        FAIL() << "a device was chosen though none can present";
+    } catch (const RuntimeError& e) {
+        EXPECT_NE(std::string(e.what()).find("present"), std::string::npos) << e.what();
+    }
+    vk::ContextOptions any = none;
+    any.canPresent = [](VkInstance, VkPhysicalDevice, uint32_t) { return true; };
+    vk::Context presenting(any);
+    EXPECT_TRUE(presenting.presentationEnabled());
+    EXPECT_EQ(presenting.validationMessages().size(), 0u);
+}
+
+TEST(ViewXvfb, UnknownNodeExitsWithTwoNamingTheLine) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup.sh installs xvfb and xauth)";
+    const fs::path dir = test::freshTempDir("view", "unknownnode");
+    writeText(dir / "events.txt", "samples 1\nmove no-such-node 0 1 0\nquit\n");
+    const RunResult r = runViewUnderXvfb(kGlass + " --spp 1 --width 32 --height 32 --events " +
+                                         (dir / "events.txt").string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("events.txt:2: move: unknown node 'no-such-node'"), std::string::npos) << r.output;
+}
+
+// The screenshot after a move matches an offline render of the moved scene at the same spp far
+// better than one of the scene as it was: the photon maps (caustics, indirect light) and the
+// direct light followed the node. Before the move it matches the unmoved render.
+TEST(ViewXvfb, MovedNodeMatchesAnOfflineRenderOfTheMovedScene) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup.sh installs xvfb and xauth)";
+    const fs::path dir = test::freshTempDir("view", "move");
+    const glm::vec3 delta(-0.25f, 0.0f, 0.1f);
+    writeText(dir / "events.txt", "samples 8\nscreenshot " + (dir / "before.exr").string() +
+                                      "\nmove glass-sphere -0.25 0 0.1\nsamples 8\nscreenshot " +
+                                      (dir / "after.png").string() + "\nquit\n");
+    const RunResult view = runViewUnderXvfb(kGlass + " " + kPhotonFlags + " --spp 8 --events " +
+                                            (dir / "events.txt").string() + " --stats-json " +
+                                            (dir / "stats.json").string());
+    ASSERT_EQ(view.exitCode, 0) << view.output;
+    EXPECT_EQ(view.output.find("validation:"), std::string::npos) << view.output;
+    ASSERT_TRUE(fs::exists(dir / "after.exr") && fs::exists(dir / "after.png") && fs::exists(dir / "before.png"));
+
+    const RunResult r0 = test::runVkphoton("render " + kGlass + " " + kPhotonFlags + " --spp 8 --quiet -o " +
+                                           (dir / "r0.exr").string());
+    ASSERT_EQ(r0.exitCode, 0) << r0.output;
+    const RunResult r1 = test::runVkphoton("render " + movedScene(dir, "glass-sphere", delta).string() + " " +
+                                           kPhotonFlags + " --spp 8 --quiet -o " + (dir / "r1.exr").string());
+    ASSERT_EQ(r1.exitCode, 0) << r1.output;
+    const ImageRgb before = readExr(dir / "before.exr"), after = readExr(dir / "after.exr");
+    const ImageRgb unmoved = readExr(dir / "r0.exr"), moved = readExr(dir / "r1.exr");
+    const double afterToMoved = relativeMse(after, moved), afterToUnmoved = relativeMse(after, unmoved);
+    const double beforeToUnmoved = relativeMse(before, unmoved), beforeToMoved = relativeMse(before, moved);
+    std::printf("relMSE after move: %.4f to the moved render, %.4f to the unmoved; before: %.4f to the unmoved, "
+                "%.4f to the moved\n", afterToMoved, afterToUnmoved, beforeToUnmoved, beforeToMoved);
+    EXPECT_LT(afterToMoved, 0.2 * afterToUnmoved) << afterToMoved << " vs " << afterToUnmoved;
+    EXPECT_LT(beforeToUnmoved, 0.2 * beforeToMoved) << beforeToUnmoved << " vs " << beforeToMoved;
+    // Same spp, same seed, and the refresh rounds leave the maps a full retrace of the moved scene
+    // traces: nearly the same pixels (the view instances the sphere, the offline render flattens it).
+    EXPECT_LT(afterToMoved, 0.01) << afterToMoved;  // 0.0001 measured (2026-11-27): instanced vs flattened sphere
+    const auto meanAfter = meanRadiance(after), meanMoved = meanRadiance(moved);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(meanAfter[c], meanMoved[c], 0.03 * meanMoved[c]) << c;
+
+    const nlohmann::json stats = readJson(dir / "stats.json");
+    ASSERT_TRUE(stats["firstImageSeconds"].is_number());
+    ASSERT_EQ(stats["changes"].size(), 1u) << stats.dump(2);
+    const nlohmann::json& move = stats["changes"][0];
+    EXPECT_EQ(move["kind"], "move");
+    EXPECT_TRUE(move["secondsToFirstImage"].is_number());
+    EXPECT_EQ(move["fullPhotonPaths"].get<uint64_t>(), 40000u);
+    // Selective: the pilots and the changed groups within the budget, not a full retrace.
+    EXPECT_GT(move["photonPathsTraced"].get<uint64_t>(), 0u);
+    EXPECT_LE(move["photonPathsTraced"].get<uint64_t>(), 40000u / 4) << move.dump();
+    EXPECT_GT(move["refreshRounds"].get<uint32_t>(), 0u);
+}
+
+// A click selects the node under the cursor, Shift+drag moves it (a "move" change); an orbit
+// keeps the traced photon paths (none traced for it).
+TEST(ViewXvfb, ClickShiftDragMovesTheNodeAndOrbitTracesNoPhotons) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup.sh installs xvfb and xauth)";
+    const fs::path dir = test::freshTempDir("view", "drag");
+    // The glass sphere's centre (0.35, 0.35, 0.25) is near pixel (40, 48) of the 64x64 image.
+    writeText(dir / "events.txt",
+              "samples 1\nclick 40 48\ndrag 40 48 34 48 shift\nsamples 1\nkey h\nclick 2 32\norbit 15 5\n"
+              "samples 1\nquit\n");
+    const RunResult view = runViewUnderXvfb(kGlass + " " + kPhotonFlags + " --spp 2 --events " +
+                                            (dir / "events.txt").string() + " --stats-json " +
+                                            (dir / "stats.json").string());
+    ASSERT_EQ(view.exitCode, 0) << view.output;
+    EXPECT_NE(view.output.find("selected glass-sphere"), std::string::npos) << view.output;
+    EXPECT_NE(view.output.find("Shift+left drag"), std::string::npos) << view.output;  // H printed the help
+    EXPECT_NE(view.output.find("selected left"), std::string::npos) << view.output;  // the left wall
+    const nlohmann::json stats = readJson(dir / "stats.json");
+    ASSERT_EQ(stats["changes"].size(), 2u) << stats.dump(2);
+    EXPECT_EQ(stats["changes"][0]["kind"], "move");
+    EXPECT_GT(stats["changes"][0]["photonPathsTraced"].get<uint64_t>(), 0u);
+    EXPECT_EQ(stats["changes"][1]["kind"], "orbit");
+    EXPECT_EQ(stats["changes"][1]["photonPathsTraced"].get<uint64_t>(), 0u);
+    EXPECT_EQ(stats["changes"][1]["fullPhotonPaths"].get<uint64_t>(), 40000u);
+}
+
+}  // namespace
+}  // namespace vkp
+
+namespace vkp {
+namespace {
+
+// With --deposit all the maps do not depend on the camera: an orbit keeps them (a preparation of
+// the camera passes only), and the image equals the one after R retraces every path.
+TEST(ViewXvfb, OrbitKeepsCameraIndependentMaps) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup.sh installs xvfb and xauth)";
+    const fs::path dir = test::freshTempDir("view", "keepmaps");
+    writeText(dir / "events.txt", "samples 2\norbit 20 5\nsamples 2\nscreenshot " + (dir / "kept.exr").string() +
+                                      "\nkey r\nsamples 2\nscreenshot " + (dir / "retraced.exr").string() + "\nquit\n");
+    const RunResult view = runViewUnderXvfb(kGlass + " " + kPhotonFlags + " --deposit all --spp 2 --events " +
+                                            (dir / "events.txt").string() + " --stats-json " +
+                                            (dir / "stats.json").string());
+    ASSERT_EQ(view.exitCode, 0) << view.output;
+    const double difference = relativeMse(readExr(dir / "kept.exr"), readExr(dir / "retraced.exr"));
+    EXPECT_LT(difference, 1e-6) << difference;
+    const nlohmann::json stats = readJson(dir / "stats.json");
+    ASSERT_EQ(stats["changes"].size(), 2u) << stats.dump(2);
+    const nlohmann::json& orbit = stats["changes"][0];
+    EXPECT_EQ(orbit["kind"], "orbit");
+    EXPECT_EQ(orbit["photonPathsTraced"].get<uint64_t>(), 0u);
+    EXPECT_EQ(stats["changes"][1]["kind"], "restart");
+    EXPECT_EQ(stats["changes"][1]["photonPathsTraced"].get<uint64_t>(), 40000u);
+    // The camera passes alone (0.12 s measured) against the maps' first build (4 s).
+    EXPECT_LT(orbit["prepareSeconds"].get<double>(), 0.25 * stats["startup"]["prepareSeconds"].get<double>())
+        << stats.dump(2);
+}
+
+}  // namespace
+}  // namespace vkp
