@@ -196,7 +196,6 @@ std::vector<uint32_t> SelectivePhotonUpdate::markStalePaths(const SceneChanges& 
     params.useCamera = camera ? 1u : 0u;
     params.pathCount = m_settings.paths;
     params.maxDeposits = m_settings.maxDeposits;
-    params.groups = m_settings.groups;
     params.regionCount = static_cast<uint32_t>(regions.size());
     params.lightCount = changes.lights.empty() ? 0u : lightCount;
     m_context.submitAndWait([&](VkCommandBuffer cmd) {

@@ -36,12 +36,12 @@ struct SelectiveMarkParams {
     GpuCamera camera;        // the frame's camera: changes in its view weigh more
     uint pathCount;
     uint maxDeposits;
-    uint groups;             // path i is in group i mod groups (unused by the kernel; kept for the layout)
     uint regionCount;        // <= kSelectiveMaxRegions
-    uint lightCount;         // lights the bit mask covers
+    uint lightCount;         // lights the bit mask covers (0: no light changed)
     uint useCamera;          // 0: every change weighs as if in view
     uint pad0;
     uint pad1;
+    uint pad2;
 };
 STATIC_ASSERT_SIZE(SelectiveMarkParams, 96)
 
