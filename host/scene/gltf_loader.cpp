@@ -212,16 +212,18 @@ private:
                                            m_limits.maxMemoryBytes / double(1ull << 30)));
     }
 
-    // What single-precision rendering can handle (docs/scene-format.md, "Scale"): a scene too small
-    // for the ray offsets, too far from the origin for its size, or lights too strong for floats.
+    // What single-precision rendering can handle (docs/scene-format.md, "Scale"): a scene so small
+    // that floats underflow, too far from the origin for its size, or lights too strong for floats.
     void checkScale(const std::string& sceneName) const {
         const glm::dvec3 lo(m_scene.bounds.min), hi(m_scene.bounds.max);
         const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
         const double reach = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
                                        std::abs(hi.z)});
+        // Down to kMinSceneExtent any size renders alike: the ray offsets scale with the scene
+        // (scene_access.glsl rayEpsilon). Below it, products of distances underflow floats.
         if (!(extent >= kMinSceneExtent))
-            fail(sceneName, fmt::format("the geometry spans only {:.3g} units; vkphoton needs at least {:g} (its ray offsets "
-                                        "are 1e-4 units at least): scale the scene up with a node scale",
+            fail(sceneName, fmt::format("the geometry spans only {:.3g} units; below {:g} single precision underflows "
+                                        "(products of distances): scale the scene up with a node scale",
                                         extent, kMinSceneExtent));
         if (reach > kMaxOffsetPerExtent * extent)
             fail(sceneName, fmt::format("the geometry spans {:.3g} units but lies {:.3g} units from the origin: more than "

@@ -38,10 +38,11 @@ constexpr uint64_t kHostBytesPerTriangle = 600;
 
 // The range of world-space coordinates the renderer's single-precision arithmetic handles
 // (docs/scene-format.md, "Scale"): every vertex, light and camera within +-kMaxCoordinate, a
-// scene at least kMinSceneExtent across and no farther from the origin than
-// kMaxOffsetPerExtent times its extent; radiometric intensities up to kMaxRadiometric.
+// scene at least kMinSceneExtent across (the ray offsets scale with it; below, products of
+// distances underflow floats) and no farther from the origin than kMaxOffsetPerExtent times its
+// extent; radiometric intensities up to kMaxRadiometric.
 constexpr double kMaxCoordinate = 1.0e8;
-constexpr double kMinSceneExtent = 1.0e-2;
+constexpr double kMinSceneExtent = 1.0e-5;
 constexpr double kMaxOffsetPerExtent = 1.0e2;
 constexpr double kMaxRadiometric = 1.0e20;
 constexpr double kMaxTotalPower = 1.0e30;
