@@ -189,6 +189,10 @@ int runCommandLine(int argc, const char* const* argv) {
         ->type_name("LIST");
     addDeviceOptions(*renderCmd, render.device, render.validate, render.maxMemoryGiB, render.textures);
     addSceneIndexOption(*renderCmd, render.sceneIndex);
+    renderCmd->add_option("--variant", render.variant,
+                          "KHR_materials_variants: render the file's material variant of this name (`vkphoton info` "
+                          "lists them) [default: each primitive's own material]")
+        ->type_name("NAME");
     renderCmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
     std::string tileText, cropText;  // resolved once --width and --height are known
     CLI::Option* tileOption = renderCmd->add_option(

@@ -31,6 +31,7 @@
 #include "scene/gltf_morph.h"
 #include "scene/gltf_skin.h"
 #include "scene/gltf_tangents.h"
+#include "scene/gltf_variants.h"
 #include "util/errors.h"
 #include "util/printable.h"
 
@@ -285,6 +286,8 @@ private:
         info.skins = m_model.skins.size();
         for (const tinygltf::Animation& a : m_model.animations)
             info.animations.push_back({a.name, a.channels.size(), a.samplers.size()});
+        info.materialVariants = materialVariantNames(m_model);
+        m_variant = materialVariantIndex(info.materialVariants, m_limits.materialVariant);
         for (size_t i = 0; i < m_model.materials.size(); ++i) {
             const tinygltf::Material& source = m_model.materials[i];
             const auto& pbr = source.pbrMetallicRoughness;
@@ -472,10 +475,12 @@ private:
     }
 
     uint32_t primitiveMaterial(const tinygltf::Primitive& primitive, const std::string& element) {
-        if (primitive.material < 0) return m_materials->defaultMaterial();
-        if (static_cast<size_t>(primitive.material) >= m_model.materials.size())
-            fail(element, fmt::format("materials[{}] does not exist", primitive.material));
-        return static_cast<uint32_t>(primitive.material);
+        // KHR_materials_variants: the chosen variant's material where the primitive maps one.
+        const int material = variantMaterial(primitive, m_variant, m_scene.file.materialVariants.size(), element);
+        if (material < 0) return m_materials->defaultMaterial();
+        if (static_cast<size_t>(material) >= m_model.materials.size())
+            fail(element, fmt::format("materials[{}] does not exist", material));
+        return static_cast<uint32_t>(material);
     }
 
     // The three positions, in a rotation-independent order (a triangle listed again from another
@@ -803,6 +808,7 @@ private:
     std::vector<std::optional<glm::dmat4>> m_nodeWorld;     // nodeWorld()'s memo, per flatten
     std::set<std::string> m_warned;                         // warnOnce()
     int m_sceneIndex = 0;
+    int m_variant = -1;  // KHR_materials_variants: the chosen variant (GltfLimits::materialVariant), -1: none
     const std::vector<std::optional<glm::dmat4>>* m_overrides = nullptr;  // flatten()'s animated local transforms
 };
 

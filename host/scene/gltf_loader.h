@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "scene/animation.h"
 #include "scene/scene.h"
@@ -25,6 +26,9 @@ struct GltfLimits {
     uint64_t maxMemoryBytes = UINT64_MAX;      // --max-memory, else the memory available
     // Not a limit: which glTF scene to load (--scene); -1: the file's `scene`, else scene 0.
     int sceneIndex = -1;
+    // Not a limit: the KHR_materials_variants variant to render (--variant), by name; "": every
+    // primitive's own material. A name the file does not list is an InputError naming the ones it does.
+    std::string materialVariant;
     // Not a limit: a glTF mesh drawn at least twice (nodes, EXT_mesh_gpu_instancing) with at least
     // this many triangles is kept once as an instanced mesh (docs/bvh.md) instead of copied per
     // drawing; 0: every repeated mesh, UINT64_MAX: none (animated nodes' meshes always are).
