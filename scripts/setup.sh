@@ -11,6 +11,7 @@ packages=(
   libglm-dev libtinygltf-dev libopenexr-dev libstb-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   libgtest-dev
   libdraco-dev libmeshoptimizer-dev  # compressed glTF geometry (KHR_draco_mesh_compression, EXT_meshopt_compression)
+  libwebp-dev  # WebP textures (EXT_texture_webp)
   libembree-dev  # bench/embree_bench: the CPU reference for ray rates (docs/benchmarks.md)
   clang-14 libclang-rt-14-dev  # the glTF loader fuzzer (fuzz/): libFuzzer, ASan, UBSan
   libglfw3-dev xvfb xauth  # `vkphoton view`'s window (GLFW), and the X server its tests run it under (xvfb-run)

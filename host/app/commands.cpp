@@ -44,9 +44,11 @@ std::filesystem::path defaultOutput(const std::filesystem::path& scene) {
 
 
 Scene loadScene(const std::filesystem::path& path, const vk::Context& context, double maxMemoryGiB, int sceneIndex,
-                const EnvironmentSettings& environment, bool quiet, const TextureOptions& textures) {
+                const EnvironmentSettings& environment, bool quiet, const TextureOptions& textures,
+                const std::string& variant = {}) {
     GltfLimits limits = deviceSceneLimits(context, maxMemoryGiB);
     limits.sceneIndex = sceneIndex;
+    limits.materialVariant = variant;
     Scene scene = loadGltf(path, limits);
     EnvironmentLimits envLimits;
     envLimits.maxMemoryBytes = limits.maxMemoryBytes;
@@ -132,7 +134,7 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     // The device first: its limits bound the scene before it is decoded.
     vk::Context context({options.validate, options.device});
     Scene scene = loadScene(options.scene, context, options.maxMemoryGiB, options.sceneIndex, options.environment, options.quiet,
-                              options.textures);
+                              options.textures, options.variant);
     scene.energyCompensation = !options.noEnergyCompensation;
     const double loadSeconds = secondsSince(start);
     // Validate the camera choice before the expensive set-up.
@@ -193,6 +195,7 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
         // The PNG's display settings; the EXR's pixels are linear radiance, untouched by them.
         {"vkphoton/tonemap", viewTransformName(options.display.view)},
         {"vkphoton/environment", scene.environment.present ? scene.environment.source : "none"},
+        {"vkphoton/materialVariant", options.variant.empty() ? "none" : options.variant},
     };
     for (auto& attribute : exposureAttributes(display, backdrop)) attributes.push_back(std::move(attribute));
     stats.set("display.exposure", double(display.exposureEv));

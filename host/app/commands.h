@@ -47,6 +47,7 @@ struct RenderCommandOptions {
     double maxMemoryGiB = 0.0;          // --max-memory: 0 = the memory available
     TextureOptions textures;            // --max-texture-size, --no-mipmaps
     int sceneIndex = -1;                // --scene: the glTF scene; -1: the file's default
+    std::string variant;                // --variant: a KHR_materials_variants variant by name; "": none
     std::string device;
     bool validate = false;
     bool quiet = false;

@@ -49,6 +49,7 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
     vk::Context context({options.validate, options.device});
     GltfLimits limits = deviceSceneLimits(context, options.maxMemoryGiB);
     limits.sceneIndex = options.sceneIndex;
+    limits.materialVariant = options.variant;
     GltfSceneSource source(options.scene, limits);
     SceneAnimation& animation = source.animation();
     animation.select(options.animation);

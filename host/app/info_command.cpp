@@ -86,6 +86,11 @@ void printText(const json& r) {
     fmt::print("animations   {} ({} channels){}\n", a["count"].get<uint64_t>(), a["channels"].get<uint64_t>(),
                a["count"].get<uint64_t>() ? ": played by render --frames; a still render shows the static node poses" : "");
     fmt::print("nodes        {} ({} skins)\n", r["nodes"].get<uint64_t>(), r["skins"].get<uint64_t>());
+    if (!r["materialVariants"].empty()) {
+        std::string names;
+        for (const json& v : r["materialVariants"]) names += (names.empty() ? "" : ", ") + v.get<std::string>();
+        fmt::print("variants     {}: {} (render --variant NAME)\n", r["materialVariants"].size(), names);
+    }
     const json& extensions = r["extensions"];
     fmt::print("extensions   {}\n", extensions.size());
     for (const json& e : extensions)
@@ -144,6 +149,7 @@ json sceneReport(const Scene& scene) {
     }
     report["animations"] = {{"count", animations.size()}, {"channels", channels}, {"played", false}, {"list", animations}};
     report["nodes"] = scene.file.nodes;
+    report["materialVariants"] = scene.file.materialVariants;  // KHR_materials_variants
     report["skins"] = scene.file.skins;
     report["extensions"] = extensionsJson(scene);
     uint64_t texels = 0;

@@ -76,6 +76,10 @@ RenderCommand::RenderCommand(CLI::App& app) {
         ->type_name("LIST");
     addDeviceOptions(*m_cmd, render.device, render.validate, render.maxMemoryGiB, render.textures);
     addSceneIndexOption(*m_cmd, render.sceneIndex);
+    m_cmd->add_option("--variant", render.variant,
+                      "KHR_materials_variants: render the file's material variant of this name (`vkphoton info` lists "
+                      "them) [default: each primitive's own material]")
+        ->type_name("NAME");
     m_cmd->add_option("--stats-json", render.statsJson, "Write timings and counters as JSON to this file");
     CLI::Option* tileOption =
         m_cmd->add_option("--tile", m_tileText,

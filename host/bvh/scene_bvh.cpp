@@ -100,6 +100,13 @@ void refitTopLevel(std::vector<gpu::GpuBvhNode>& nodes, const InstanceLevel& top
 
 }  // namespace
 
+float rayOffsetScale(const Bounds& bounds) {
+    if (bounds.empty()) return 1.0f;
+    const glm::vec3 reach = glm::max(glm::abs(bounds.min), glm::abs(bounds.max));
+    const float r = std::max(reach.x, std::max(reach.y, reach.z));
+    return r > 0.0f ? r : 1.0f;
+}
+
 SceneBvh buildSceneBvh(const Scene& scene) {
     SceneBvh bvh;
     const Bvh staticTree = buildBvh(scene.triangles);
@@ -109,6 +116,7 @@ SceneBvh buildSceneBvh(const Scene& scene) {
     appendPositions(scene.triangles, staticTree, bvh.triangles);
     InstanceLevel& top = bvh.top;
     top.header.staticTriangles = static_cast<uint32_t>(bvh.triangles.size());
+    top.header.rayOffsetScale = rayOffsetScale(scene.bounds);
     if (scene.instances.empty()) return bvh;
     if (scene.instances.size() > kMaxInstances)
         throw std::length_error("more than " + std::to_string(kMaxInstances) + " instances");

@@ -59,6 +59,9 @@ gpu::GpuTriangle worldTriangle(const gpu::BvhArrays& arrays, uint32_t hitId);
 // Throws std::invalid_argument for an instance of a missing or empty mesh or a singular or
 // non-finite transform, std::length_error beyond kMaxInstances or 2^32 - 1 hit ids.
 SceneBvh buildSceneBvh(const Scene& scene);
+// The floor of the shaders' ray offsets (GpuInstanceHeader::rayOffsetScale, scene_access.glsl
+// rayEpsilon): the largest |coordinate| of the bounds; 1 for an empty or degenerate box.
+float rayOffsetScale(const Bounds& bounds);
 
 enum class TopLevelUpdate {
     Rebuild,  // binned SAH over the new instance bounds (the tree a fresh build makes)

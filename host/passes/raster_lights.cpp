@@ -46,7 +46,8 @@ std::vector<gpu::GpuLight> buildRasterLights(const SceneArrays& a, uint32_t area
             // Lifted off the emitter by the shaders' ray epsilon (scene_access.glsl rayEpsilon), as
             // a traced shadow ray to this point would stop short of it: the emitter and the surface
             // it sits in must not shadow their own sample.
-            const float eps = 1.0e-4f * std::max(1.0f, std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
+            const float eps = 1.0e-4f * std::max(a.topLevel.header.rayOffsetScale,
+                                                 std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}));
             s.position = p + n * eps;
             s.direction = n;
             // Radiance times the area each sample stands for: intensity in W/sr along the normal.

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 #include <stb/stb_image.h>
+#include <webp/decode.h>
 
 namespace vkp {
 
@@ -181,15 +182,17 @@ std::string jpegProblem(const unsigned char* bytes, size_t size) {
 }  // namespace
 
 // Decodes a PNG or JPEG into tinygltf::Image with its own channel count (1-4) and bit depth
-// (8 or 16); the texture code converts to RGBA8. The header is checked against the limits
-// before anything is allocated. Returns what is wrong, or "".
+// (8 or 16), a WebP (EXT_texture_webp) as 8-bit RGBA; the texture code converts to RGBA8. The
+// header is checked against the limits before anything is allocated. Returns what is wrong, or "".
 std::string GltfFileAccess::decodeImage(tinygltf::Image& image, const unsigned char* bytes, int size) {
     static constexpr unsigned char kPngMagic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     static constexpr unsigned char kJpegMagic[3] = {0xff, 0xd8, 0xff};
     if (bytes == nullptr || size <= 0) return "no image data";
     const bool png = size >= 8 && std::memcmp(bytes, kPngMagic, 8) == 0;
     const bool jpeg = size >= 3 && std::memcmp(bytes, kJpegMagic, 3) == 0;
-    if (!png && !jpeg) return "not a PNG or JPEG image (the only formats glTF 2.0 allows)";
+    const bool webp = size >= 12 && std::memcmp(bytes, "RIFF", 4) == 0 && std::memcmp(bytes + 8, "WEBP", 4) == 0;
+    if (webp) return decodeWebp(image, bytes, size);
+    if (!png && !jpeg) return "not a PNG or JPEG image (nor a WebP, which EXT_texture_webp allows)";
     const char* format = png ? "PNG" : "JPEG";
     // A JPEG's size comes from stb, which needs the structure; a PNG's from its IHDR, so that
     // an oversized PNG is refused for its size even when only its header is there.
@@ -228,6 +231,31 @@ std::string GltfFileAccess::decodeImage(tinygltf::Image& image, const unsigned c
     image.pixel_type = sixteenBit ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
     image.image.assign(static_cast<const unsigned char*>(pixels), static_cast<const unsigned char*>(pixels) + byteCount);
     stbi_image_free(pixels);
+    return {};
+}
+
+// EXT_texture_webp: libwebp reads the size from the header (checked against the limits first)
+// and decodes lossy and lossless WebP, with or without alpha, to RGBA8.
+std::string GltfFileAccess::decodeWebp(tinygltf::Image& image, const unsigned char* bytes, int size) {
+    int width = 0, height = 0;
+    if (!WebPGetInfo(bytes, size_t(size), &width, &height)) return "unreadable WebP header";
+    if (width <= 0 || height <= 0 || static_cast<uint32_t>(width) > m_limits.maxImageDimension ||
+        static_cast<uint32_t>(height) > m_limits.maxImageDimension ||
+        uint64_t(width) * uint64_t(height) > m_limits.maxImagePixels)
+        return fmt::format("{}x{} pixels exceeds the image size limit ({} per side, {} pixels in all)", width, height,
+                           m_limits.maxImageDimension, m_limits.maxImagePixels);
+    m_decodedPixels += uint64_t(width) * uint64_t(height);
+    if (m_decodedPixels > m_limits.maxTotalImagePixels)
+        return fmt::format("the file's images add up to more than the limit of {} pixels", m_limits.maxTotalImagePixels);
+    uint8_t* pixels = WebPDecodeRGBA(bytes, size_t(size), &width, &height);
+    if (pixels == nullptr) return "cannot decode the WebP";
+    image.width = width;
+    image.height = height;
+    image.component = 4;
+    image.bits = 8;
+    image.pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image.image.assign(pixels, pixels + size_t(width) * size_t(height) * 4);
+    WebPFree(pixels);
     return {};
 }
 

@@ -50,6 +50,7 @@ private:
     static bool loadImage(tinygltf::Image* image, int index, std::string* err, std::string* warn, int reqWidth,
                           int reqHeight, const unsigned char* bytes, int size, void* self);
     std::string decodeImage(tinygltf::Image& image, const unsigned char* bytes, int size);
+    std::string decodeWebp(tinygltf::Image& image, const unsigned char* bytes, int size);
 
     std::filesystem::path m_folder;
     GltfLimits m_limits;

@@ -8,6 +8,7 @@
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_morph.h"
 #include "scene/gltf_primitive_modes.h"
+#include "scene/gltf_variants.h"
 #include "util/errors.h"
 
 namespace vkp {
@@ -160,10 +161,15 @@ std::vector<bool> planInstancedMeshes(const tinygltf::Model& model, const std::v
                                  : position != primitive.attributes.end() ? position->second : -1;
             if (accessor >= 0 && static_cast<size_t>(accessor) < model.accessors.size())
                 triangles += triangleCountOfMode(primitive.mode, model.accessors[accessor].count);
-            if (primitive.material >= 0 && static_cast<size_t>(primitive.material) < materials.size()) {
-                const glm::vec3 e = materials[primitive.material].emissive;
-                emissive = emissive || e.x > 0.0f || e.y > 0.0f || e.z > 0.0f;
-            }
+            // Its own material and every KHR_materials_variants material: any emissive one keeps
+            // the mesh flattened, whichever variant is rendered.
+            std::vector<int> candidates = variantMaterials(primitive);
+            candidates.push_back(primitive.material);
+            for (const int material : candidates)
+                if (material >= 0 && static_cast<size_t>(material) < materials.size()) {
+                    const glm::vec3 e = materials[material].emissive;
+                    emissive = emissive || e.x > 0.0f || e.y > 0.0f || e.z > 0.0f;
+                }
         }
         instanced[m] = !emissive && !perNode[m] && triangles > 0 &&
                        ((draws[m] >= 2 && triangles >= minTriangles) || ((animated[m] || everyMesh) && draws[m] >= 1));

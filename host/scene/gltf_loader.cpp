@@ -31,6 +31,7 @@
 #include "scene/gltf_morph.h"
 #include "scene/gltf_skin.h"
 #include "scene/gltf_tangents.h"
+#include "scene/gltf_variants.h"
 #include "util/errors.h"
 #include "util/printable.h"
 
@@ -215,16 +216,18 @@ private:
                                            m_limits.maxMemoryBytes / double(1ull << 30)));
     }
 
-    // What single-precision rendering can handle (docs/scene-format.md, "Scale"): a scene too small
-    // for the ray offsets, too far from the origin for its size, or lights too strong for floats.
+    // What single-precision rendering can handle (docs/scene-format.md, "Scale"): a scene so small
+    // that floats underflow, too far from the origin for its size, or lights too strong for floats.
     void checkScale(const std::string& sceneName) const {
         const glm::dvec3 lo(m_scene.bounds.min), hi(m_scene.bounds.max);
         const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
         const double reach = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
                                        std::abs(hi.z)});
+        // Down to kMinSceneExtent any size renders alike: the ray offsets scale with the scene
+        // (scene_access.glsl rayEpsilon). Below it, products of distances underflow floats.
         if (!(extent >= kMinSceneExtent))
-            fail(sceneName, fmt::format("the geometry spans only {:.3g} units; vkphoton needs at least {:g} (its ray offsets "
-                                        "are 1e-4 units at least): scale the scene up with a node scale",
+            fail(sceneName, fmt::format("the geometry spans only {:.3g} units; below {:g} single precision underflows "
+                                        "(products of distances): scale the scene up with a node scale",
                                         extent, kMinSceneExtent));
         if (reach > kMaxOffsetPerExtent * extent)
             fail(sceneName, fmt::format("the geometry spans {:.3g} units but lies {:.3g} units from the origin: more than "
@@ -286,6 +289,8 @@ private:
         info.skins = m_model.skins.size();
         for (const tinygltf::Animation& a : m_model.animations)
             info.animations.push_back({a.name, a.channels.size(), a.samplers.size()});
+        info.materialVariants = materialVariantNames(m_model);
+        m_variant = materialVariantIndex(info.materialVariants, m_limits.materialVariant);
         for (size_t i = 0; i < m_model.materials.size(); ++i) {
             const tinygltf::Material& source = m_model.materials[i];
             const auto& pbr = source.pbrMetallicRoughness;
@@ -475,10 +480,12 @@ private:
     }
 
     uint32_t primitiveMaterial(const tinygltf::Primitive& primitive, const std::string& element) {
-        if (primitive.material < 0) return m_materials->defaultMaterial();
-        if (static_cast<size_t>(primitive.material) >= m_model.materials.size())
-            fail(element, fmt::format("materials[{}] does not exist", primitive.material));
-        return static_cast<uint32_t>(primitive.material);
+        // KHR_materials_variants: the chosen variant's material where the primitive maps one.
+        const int material = variantMaterial(primitive, m_variant, m_scene.file.materialVariants.size(), element);
+        if (material < 0) return m_materials->defaultMaterial();
+        if (static_cast<size_t>(material) >= m_model.materials.size())
+            fail(element, fmt::format("materials[{}] does not exist", material));
+        return static_cast<uint32_t>(material);
     }
 
     // The three positions, in a rotation-independent order (a triangle listed again from another
@@ -806,6 +813,7 @@ private:
     std::vector<std::optional<glm::dmat4>> m_nodeWorld;     // nodeWorld()'s memo, per flatten
     std::set<std::string> m_warned;                         // warnOnce()
     int m_sceneIndex = 0;
+    int m_variant = -1;  // KHR_materials_variants: the chosen variant (GltfLimits::materialVariant), -1: none
     const std::vector<std::optional<glm::dmat4>>* m_overrides = nullptr;  // flatten()'s animated local transforms
     const std::vector<glm::dvec3>* m_worldOffsets = nullptr;              // flatten()'s node translations (view)
 };

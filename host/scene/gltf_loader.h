@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "scene/animation.h"
 #include "scene/scene.h"
@@ -25,6 +26,9 @@ struct GltfLimits {
     uint64_t maxMemoryBytes = UINT64_MAX;      // --max-memory, else the memory available
     // Not a limit: which glTF scene to load (--scene); -1: the file's `scene`, else scene 0.
     int sceneIndex = -1;
+    // Not a limit: the KHR_materials_variants variant to render (--variant), by name; "": every
+    // primitive's own material. A name the file does not list is an InputError naming the ones it does.
+    std::string materialVariant;
     // Not a limit: a glTF mesh drawn at least twice (nodes, EXT_mesh_gpu_instancing) with at least
     // this many triangles is kept once as an instanced mesh (docs/bvh.md) instead of copied per
     // drawing; 0: every repeated mesh, UINT64_MAX: none (animated nodes' meshes always are).
@@ -41,10 +45,11 @@ constexpr uint64_t kHostBytesPerTriangle = 600;
 
 // The range of world-space coordinates the renderer's single-precision arithmetic handles
 // (docs/scene-format.md, "Scale"): every vertex, light and camera within +-kMaxCoordinate, a
-// scene at least kMinSceneExtent across and no farther from the origin than
-// kMaxOffsetPerExtent times its extent; radiometric intensities up to kMaxRadiometric.
+// scene at least kMinSceneExtent across (the ray offsets scale with it; below, products of
+// distances underflow floats) and no farther from the origin than kMaxOffsetPerExtent times its
+// extent; radiometric intensities up to kMaxRadiometric.
 constexpr double kMaxCoordinate = 1.0e8;
-constexpr double kMinSceneExtent = 1.0e-2;
+constexpr double kMinSceneExtent = 1.0e-5;
 constexpr double kMaxOffsetPerExtent = 1.0e2;
 constexpr double kMaxRadiometric = 1.0e20;
 constexpr double kMaxTotalPower = 1.0e30;

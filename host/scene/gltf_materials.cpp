@@ -334,9 +334,16 @@ int GltfMaterials::texture(int gltfTexture, int texCoord, const tinygltf::Extens
     if (gltfTexture < 0) return -1;
     if (static_cast<size_t>(gltfTexture) >= m_model.textures.size())
         fail(element, fmt::format("textures[{}] does not exist", gltfTexture));
-    const int source = m_model.textures[gltfTexture].source;
+    // EXT_texture_webp: the WebP image is preferred; `source` is the fallback for viewers without it.
+    int source = m_model.textures[gltfTexture].source;
+    if (const auto* webp = extension(m_model.textures[gltfTexture].extensions, "EXT_texture_webp")) {
+        if (!webp->IsObject() || !webp->Has("source") || !webp->Get("source").IsNumber())
+            fail(fmt::format("textures[{}].extensions.EXT_texture_webp", gltfTexture), "needs a source image index");
+        const double index = webp->Get("source").GetNumberAsDouble();
+        source = index >= 0.0 && index <= 1.0e9 && index == std::floor(index) ? int(index) : -1;
+    }
     if (source < 0 || static_cast<size_t>(source) >= m_model.images.size())
-        fail(fmt::format("textures[{}]", gltfTexture), "has no PNG or JPEG source image");
+        fail(fmt::format("textures[{}]", gltfTexture), "has no source image");
     TextureView view;
     view.texCoord = texCoord;
     if (const auto* e = extension(extensions, "KHR_texture_transform"))

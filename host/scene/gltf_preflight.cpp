@@ -342,7 +342,9 @@ private:
                 externalFile(text, element);
             } else if (const auto payload = dataPayload(text, {"image/png", "image/jpeg", "application/octet-stream"});
                        !payload) {
-                fail(member(element, "uri"), "a data: URI must be base64 image/png or image/jpeg");
+                // tinygltf decodes no other data: URIs; a WebP (EXT_texture_webp) comes as a file or bufferView.
+                fail(member(element, "uri"),
+                     "a data: URI must be base64 image/png or image/jpeg (a WebP must be a file or a bufferView)");
             } else if (base64Length(text, *payload) == 0) {
                 fail(member(element, "uri"), "the data: URI holds no data");
             }

@@ -141,6 +141,7 @@ struct SceneFileInfo {
     size_t nodes = 0;                             // in the whole file, not only the scene's tree
     size_t skins = 0;
     std::vector<AnimationInfo> animations;        // not played: the scene is its rest pose
+    std::vector<std::string> materialVariants;    // KHR_materials_variants' names, in the file's order
 };
 
 // A mesh placed by instances (docs/bvh.md): its triangles in object space (Triangle's fields

@@ -278,10 +278,12 @@ bool alphaPasses(uint tri, float b1, float b2, vec3 org, vec3 dir) {
 #define ENV_FLOAT(i) environmentFloats[(i)]
 #include "shared/environment.glsl"
 
-// Distance by which rays leave a surface at p, scaled by p's magnitude (float spacing grows
-// with it).
+// Distance by which rays leave a surface at p: 1e-4 of p's magnitude (float spacing grows with
+// it), and at least 1e-4 of the scene's reach (instanceHeader.rayOffsetScale: a hit near the
+// origin on a triangle whose vertices lie far out carries their rounding). Both scale with the
+// scene, so a model in millimetres renders as in metres (docs/scene-format.md "Scale").
 float rayEpsilon(vec3 p) {
-    return 1.0e-4f * max(1.0f, max(abs(p.x), max(abs(p.y), abs(p.z))));
+    return 1.0e-4f * max(instanceHeader.rayOffsetScale, max(abs(p.x), max(abs(p.y), abs(p.z))));
 }
 
 // Offsets shadow and continuation rays off the surface along the normal, on dir's side.

@@ -77,7 +77,9 @@ struct GpuInstanceHeader {
     uint instanceCount;
     uint tlasRoot;          // node index of the top-level root (when instanceCount > 0)
     uint staticTriangles;
-    uint pad0;
+    // The scene's reach (largest |coordinate| of its bounds): the floor of the ray offsets
+    // (scene_access.glsl rayEpsilon), so they scale with the scene.
+    float rayOffsetScale;
 };
 STATIC_ASSERT_SIZE(GpuInstanceHeader, 16)
 

@@ -439,8 +439,8 @@ def bad_cases():
         changed(lambda d: d["nodes"][0].update(matrix=[1e20, 0, 0, 0, 0, 1e20, 0, 0, 0, 0, 1e20, 0, 0, 0, 0, 1])),
         "beyond the +-1e+08 units vkphoton handles")
     add("triangle_tiny.gltf", positions(0, 0, 0, 1e-30, 0, 0, 0, 1e-30, 0), "scenes[0]: the geometry spans only 1e-30 units")
-    add("scene_tiny.gltf", changed(lambda d: d["nodes"][0].update(scale=[1e-4, 1e-4, 1e-4])),
-        "scenes[0]: the geometry spans only 0.0001 units")
+    add("scene_tiny.gltf", changed(lambda d: d["nodes"][0].update(scale=[1e-6, 1e-6, 1e-6])),
+        "scenes[0]: the geometry spans only 1e-06 units")
     add("scene_far_from_origin.gltf", changed(lambda d: d["nodes"][0].update(translation=[1e6, 0, 0])),
         "scenes[0]: the geometry spans 1 units but lies 1e+06 units from the origin")
     add("emission_too_strong.gltf",
