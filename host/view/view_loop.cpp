@@ -408,7 +408,7 @@ int runView(const ViewCommandOptions& options,
                                         session.integratorName(), session.samples(), session.settings().frame.samplesPerPixel,
                                         seconds > 0.0 ? session.samples() / seconds : 0.0, session.lastPhotonPaths(),
                                         stats.changes().empty() ? " (first build)" : " (last change)",
-                                        session.refreshDue() ? fmt::format(", refreshing: {} rounds left", session.refreshRoundsLeft())
+                                        session.refreshDue() ? fmt::format(", refreshing: {} stale photon groups", session.staleGroups())
                                                              : std::string()));
         } else if (next >= events.size() || events[next].command != ScriptCommand::Seconds) {
             std::this_thread::sleep_for(std::chrono::duration<double>(kIdleSeconds));  // idle: nothing to render
