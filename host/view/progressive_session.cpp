@@ -107,12 +107,13 @@ void ProgressiveSession::prepareIntegrator(PhotonRefresh refresh) {
     if (counts.fullPhotonPaths > 0) {  // maps built through the seam (the photon integrator)
         m_lastPhotonPaths = counts.photonPathsTraced;
         m_lastFullPhotonPaths = counts.fullPhotonPaths;
-    } else if (refresh == PhotonRefresh::Reuse) {
-        m_lastPhotonPaths = 0;  // maps kept as they were (--deposit all), or none: the last full count stands
-    } else {  // maps outside the seam (progressive photon mapping: per sample) or none
+    } else {
         Stats stats;
         m_integrator->report(stats);
-        m_lastPhotonPaths = m_lastFullPhotonPaths = stats.getOr<uint64_t>("photons.pathsTraced", 0);
+        if (stats.getOr<bool>("photons.mapsKept", false))
+            m_lastPhotonPaths = 0;  // maps kept as they were (--deposit all): the last full count stands
+        else  // maps outside the seam (the guide's, progressive photon mapping's per sample) or none
+            m_lastPhotonPaths = m_lastFullPhotonPaths = stats.getOr<uint64_t>("photons.pathsTraced", 0);
     }
     // After a move the first round retraced the changed groups within the budget; the rounds
     // that follow refresh the rest (round-robin) until no group of any map was last traced before
