@@ -33,6 +33,20 @@ SelectiveFrameUpdate::SelectiveFrameUpdate(vk::Context& context, const Selective
 
 SelectiveFrameUpdate::~SelectiveFrameUpdate() = default;
 
+void SelectiveFrameUpdate::sceneMoved() {
+    for (const auto& [key, update] : m_maps) m_movedAt[key] = update->frame() + 1;
+}
+
+uint64_t SelectiveFrameUpdate::staleGroups() const {
+    uint64_t stale = 0;
+    for (const auto& [key, movedAt] : m_movedAt) {
+        const SelectivePhotonUpdate& update = *m_maps.at(key);
+        for (uint32_t g = 0; g < update.settings().groups; ++g)
+            if (update.lastTraced(g) < movedAt) ++stale;
+    }
+    return stale;
+}
+
 PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t firstPath, const FrameUpdateInfo& info) {
     const PhotonMapSettings& ms = map.settings();
     const auto key = std::make_tuple(firstPath, ms.paths, ms.maxDeposits, ms.seed, ms.requiredFlags);

@@ -28,12 +28,19 @@ public:
     SelectiveFrameUpdate(vk::Context& context, const SelectiveUpdateOptions& options);
     ~SelectiveFrameUpdate() override;
     PhotonMapStats buildPhotonMap(PhotonMap& map, uint32_t firstPath, const FrameUpdateInfo& info) override;
+    // `vkphoton view`: the scene has moved since the maps' last update. staleGroups() then counts
+    // the groups, over every map, not retraced since (0: the maps hold what a full retrace of the
+    // scene as it is now traces).
+    void sceneMoved();
+    uint64_t staleGroups() const;
 
 private:
     vk::Context& m_context;
     SelectiveUpdateOptions m_options;
     // (firstPath, paths, maxDeposits, seed) -> that map's persistent paths
     std::map<std::tuple<uint32_t, uint32_t, uint32_t, uint32_t, uint32_t>, std::unique_ptr<SelectivePhotonUpdate>> m_maps;
+    // per map: its first update after the last sceneMoved()
+    std::map<std::tuple<uint32_t, uint32_t, uint32_t, uint32_t, uint32_t>, uint64_t> m_movedAt;
 };
 
 }  // namespace vkp

@@ -164,6 +164,7 @@ void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
         m_stats = Stats();
         buildMaps(frame);
     }
+    m_stats.set("photons.mapsKept", keepMaps);  // "photons.pathsTraced" then counts the earlier build
     const float globalRadius = kGlobalRadiusFactor * m_globalCellSize;
     const PhotonGrid& gatherGrid = m_radiancePhotons ? m_radiancePhotons->grid() : m_globalMap->grid();
 

@@ -64,6 +64,10 @@ void ProgressiveSession::restart(PhotonRefresh refresh, bool allowPreview) {
                                                    renderer.lightReach() ? &*renderer.lightReach() : nullptr);
     m_frame.rasterDirect = &m_raster->direct();
     m_frame.rasterFlags = m_raster->pathFlags();
+    if (refresh == PhotonRefresh::Selective && !m_refreshing) {  // a move: its groups are stale from now on
+        m_update->sceneMoved();
+        m_refreshRounds = 0;
+    }
     m_needFull = false;
     m_samples = 0;
     m_batch = 1;
@@ -90,6 +94,7 @@ void ProgressiveSession::restart(PhotonRefresh refresh, bool allowPreview) {
         m_pendingRefresh = refresh;
     } else {
         prepareIntegrator(refresh);
+        m_refreshing = false;
     }
     m_lastPrepareSeconds = secondsSince(start);
 }
@@ -102,33 +107,35 @@ void ProgressiveSession::prepareIntegrator(PhotonRefresh refresh) {
     if (counts.fullPhotonPaths > 0) {  // maps built through the seam (the photon integrator)
         m_lastPhotonPaths = counts.photonPathsTraced;
         m_lastFullPhotonPaths = counts.fullPhotonPaths;
-    } else if (refresh == PhotonRefresh::Reuse) {
-        m_lastPhotonPaths = 0;  // maps kept as they were (--deposit all), or none: the last full count stands
-    } else {  // maps outside the seam (progressive photon mapping: per sample) or none
+    } else {
         Stats stats;
         m_integrator->report(stats);
-        m_lastPhotonPaths = m_lastFullPhotonPaths = stats.getOr<uint64_t>("photons.pathsTraced", 0);
+        if (stats.getOr<bool>("photons.mapsKept", false))
+            m_lastPhotonPaths = 0;  // maps kept as they were (--deposit all): the last full count stands
+        else  // maps outside the seam (the guide's, progressive photon mapping's per sample) or none
+            m_lastPhotonPaths = m_lastFullPhotonPaths = stats.getOr<uint64_t>("photons.pathsTraced", 0);
     }
     // After a move the first round retraced the changed groups within the budget; the rounds
-    // that follow refresh the rest round-robin, and after paths / (paths per round) of them every
-    // group has been traced in the moved scene. A camera change leaves the count as it was, and
-    // a refresh round counts itself down (refreshRound).
-    if (m_refreshing) return;
+    // that follow refresh the rest (round-robin) until no group of any map was last traced before
+    // the move: then the maps are what a full retrace of the moved scene traces. A round cap
+    // (twice the rounds the budget needs to cover every path, and 4 more) ends it should a budget
+    // too small for a group keep some group from ever being retraced.
+    const bool selective = refresh == PhotonRefresh::Selective || (refresh == PhotonRefresh::Reuse && m_staleGroups > 0);
     if (refresh == PhotonRefresh::Full) {
-        m_refreshRoundsLeft = 0;
-    } else if (refresh == PhotonRefresh::Selective) {
-        if (counts.photonPathsTraced > 0 && counts.photonPathsTraced < counts.fullPhotonPaths)
-            m_refreshRoundsLeft = uint32_t(std::ceil(double(counts.fullPhotonPaths) / double(counts.photonPathsTraced))) + 1;
-        else
-            m_refreshRoundsLeft = 0;
+        m_staleGroups = 0;
+    } else if (selective) {
+        m_staleGroups = m_update->staleGroups();
+        if (!m_refreshing && counts.photonPathsTraced > 0)
+            m_refreshRoundCap =
+                2 * uint32_t(std::ceil(double(counts.fullPhotonPaths) / double(counts.photonPathsTraced))) + 4;
+        if (m_refreshRounds >= m_refreshRoundCap) m_staleGroups = 0;
     }
 }
 
 void ProgressiveSession::refreshRound() {
-    const uint32_t left = m_refreshRoundsLeft > 0 ? m_refreshRoundsLeft - 1 : 0;
-    restart(PhotonRefresh::Selective, false);  // the image is already the moved scene's
     m_refreshing = true;
-    m_refreshRoundsLeft = left;
+    ++m_refreshRounds;
+    restart(PhotonRefresh::Selective, false);  // the image is already the moved scene's
 }
 
 void ProgressiveSession::cancel() {

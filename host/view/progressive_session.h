@@ -81,9 +81,10 @@ public:
     // Whether the film holds a preview not yet followed by its preparation (show it first).
     bool hasPreviewImage() const { return m_previewImage; }
     // After a selective restart: whether a further round is due to refresh stale photon groups.
-    bool refreshDue() const { return m_refreshRoundsLeft > 0; }
-    uint32_t refreshRoundsLeft() const { return m_refreshRoundsLeft; }
-    // One such round: a selective restart that counts down the rounds left.
+    bool refreshDue() const { return m_staleGroups > 0 && !preparing() && !m_pendingRefresh; }
+    // Photon groups (over every map) not retraced since the last move.
+    uint64_t staleGroups() const { return m_staleGroups; }
+    // One such round: a selective restart that does not count as a move.
     void refreshRound();
 
     // The image of the samples so far (a read-back), with what the integrator adds at the end.
@@ -118,7 +119,7 @@ private:
     bool m_lastWasRefresh = false;
     bool m_preparedNow = false;
     bool m_previewImage = false;
-    std::unique_ptr<FrameUpdate> m_update;
+    std::unique_ptr<SelectiveFrameUpdate> m_update;
     std::unique_ptr<Film> m_film;
     std::unique_ptr<RasterDirectLight> m_raster;
     Frame m_frame;
@@ -126,7 +127,9 @@ private:
     uint32_t m_round = 0;
     uint32_t m_samples = 0;
     uint32_t m_batch = 1;
-    uint32_t m_refreshRoundsLeft = 0;
+    uint64_t m_staleGroups = 0;
+    uint32_t m_refreshRounds = 0;      // refresh rounds since the last move
+    uint32_t m_refreshRoundCap = 0;
     void prepareIntegrator(PhotonRefresh refresh);
     uint64_t m_lastPhotonPaths = 0;
     uint64_t m_lastFullPhotonPaths = 0;

@@ -14,6 +14,7 @@
 #include "view/event_script.h"
 #include "view/node_picking.h"
 #include "view/progressive_session.h"
+#include "view/script_player.h"
 #include "view/swapchain_presenter.h"
 #include "view/view_command.h"
 #include "view/view_stats.h"
@@ -169,8 +170,7 @@ int runView(const ViewCommandOptions& options,
     double animationTime = 0.0;
     bool animated = false;  // the scene shows the animation at animationTime (else the still pose)
     auto lastTick = Clock::now();
-    size_t next = 0;                           // the script's next command
-    std::optional<Clock::time_point> waitFrom; // `seconds`: when the wait began
+    ScriptPlayer script(events);
     uint32_t shownSamples = UINT32_MAX;        // samples of the image on screen (UINT32_MAX: none yet)
     bool redraw = true;
     ImageRgb image;
@@ -239,64 +239,22 @@ int runView(const ViewCommandOptions& options,
             else if (stats.changes().empty()) startupPrepared();
             else stats.prepared(session.lastPhotonPaths(), session.lastFullPhotonPaths(), session.lastPrepareSeconds());
         }
-        // The script: commands run in order, each after the previous one finished (a change has
-        // been shown, a wait is over).
-        // (Not in the iteration that finds a preparation done: its first image is shown first.)
-        while (!justPrepared && next < events.size() && stats.lastChangeShown() && actions.empty()) {
-            const ScriptEvent& e = events[next];
-            bool done = true;
-            switch (e.command) {
-            case ScriptCommand::Samples:
-                done = shownSamples != UINT32_MAX && shownSamples >= std::min(e.samples, session.settings().frame.samplesPerPixel) &&
-                       !session.refreshDue();
-                break;
-            case ScriptCommand::Seconds:
-                if (!waitFrom) waitFrom = Clock::now();
-                done = secondsSince(*waitFrom) >= e.seconds;
-                if (done) waitFrom.reset();
-                break;
-            case ScriptCommand::Screenshot:
-                done = shownSamples != UINT32_MAX;
-                if (done) writeScreenshot(e.path, image, options, session);
-                if (done && !render.quiet)
+        // The script (view/script_player.h), while no window input waits: its next commands, up
+        // to the first change or wait. (Not in the iteration that finds a preparation done: its
+        // first image is shown first.)
+        if (!justPrepared && actions.empty()) {
+            ScriptState state;
+            state.changeShown = stats.lastChangeShown();
+            if (shownSamples != UINT32_MAX) state.shownSamples = shownSamples;
+            state.targetSamples = session.settings().frame.samplesPerPixel;
+            state.refreshDue = session.refreshDue();
+            actions = script.advance(state, [&](const ScriptEvent& e) {
+                writeScreenshot(e.path, image, options, session);
+                if (!render.quiet)
                     fmt::print(stderr, "{}: wrote {} ({})\n", e.where, printable(e.path.string()),
                                session.inPreview() ? std::string("the preview: one path-traced sample")
                                                    : fmt::format("{} spp", shownSamples));
-                break;
-            case ScriptCommand::Move: {
-                ViewAction a;
-                a.kind = ViewAction::Kind::MoveNode;
-                a.node = e.node;
-                a.delta = e.delta;
-                actions.push_back(a);
-                break;
-            }
-            case ScriptCommand::Orbit: {
-                ViewAction a;
-                a.kind = ViewAction::Kind::Orbit;
-                a.a = e.from;
-                actions.push_back(a);
-                break;
-            }
-            case ScriptCommand::Click: {
-                ViewAction a;
-                a.kind = ViewAction::Kind::Select;
-                a.a = e.from;
-                actions.push_back(a);
-                break;
-            }
-            case ScriptCommand::Drag: actions.push_back(dragAction(e.button, e.from, e.to)); break;
-            case ScriptCommand::Key: {
-                ViewAction a;
-                a.kind = ViewAction::Kind::Key;
-                a.key = e.key;
-                actions.push_back(a);
-                break;
-            }
-            case ScriptCommand::Quit: quit = true; break;
-            }
-            if (!done) break;
-            ++next;
+            }, quit);
         }
 
         // Input: camera and scene changes are gathered, then applied once (one restart).
@@ -408,9 +366,9 @@ int runView(const ViewCommandOptions& options,
                                         session.integratorName(), session.samples(), session.settings().frame.samplesPerPixel,
                                         seconds > 0.0 ? session.samples() / seconds : 0.0, session.lastPhotonPaths(),
                                         stats.changes().empty() ? " (first build)" : " (last change)",
-                                        session.refreshDue() ? fmt::format(", refreshing: {} rounds left", session.refreshRoundsLeft())
+                                        session.refreshDue() ? fmt::format(", refreshing: {} stale photon groups", session.staleGroups())
                                                              : std::string()));
-        } else if (next >= events.size() || events[next].command != ScriptCommand::Seconds) {
+        } else if (!script.waitingForTime()) {
             std::this_thread::sleep_for(std::chrono::duration<double>(kIdleSeconds));  // idle: nothing to render
         }
     }

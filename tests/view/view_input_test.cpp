@@ -8,6 +8,7 @@
 #include "util/errors.h"
 #include "view/camera_controller.h"
 #include "view/event_script.h"
+#include "view/script_player.h"
 #include "view/view_input.h"
 
 namespace vkp {
@@ -170,6 +171,59 @@ TEST(ViewCamera, ImagePlaneDeltaFollowsTheCursor) {
     const glm::vec2 to = project(cam, centre + delta, glm::radians(40.0f), 256);
     EXPECT_NEAR(to.x - from.x, 25.0f, 1e-3f);
     EXPECT_NEAR(to.y - from.y, -40.0f, 1e-3f);
+}
+
+// The script's waits, without a window: the player is driven with made-up view states.
+TEST(ViewScriptPlayer, CommandsWaitForWhatTheyNeed) {
+    ScriptPlayer player(parseEventScript("screenshot a.png\nsamples 4\nmove ball 1 0 0\norbit 5 0\nseconds 2\n"
+                                         "samples 64\nscreenshot b.exr\nquit\nkey h\n",
+                                         "s.txt"));
+    std::vector<std::string> shots;
+    const auto shoot = [&](const ScriptEvent& e) { shots.push_back(e.path.string()); };
+    bool quit = false;
+    ScriptState state;
+    state.targetSamples = 16;
+    // Nothing on screen yet: the screenshot waits.
+    EXPECT_TRUE(player.advance(state, shoot, quit).empty());
+    EXPECT_TRUE(shots.empty());
+    // An image of 2 spp: the screenshot is taken, `samples 4` waits.
+    state.shownSamples = 2;
+    EXPECT_TRUE(player.advance(state, shoot, quit).empty());
+    EXPECT_EQ(shots, std::vector<std::string>{"a.png"});
+    // 4 spp but a refresh round is due: still waiting; then the move comes back alone.
+    state.shownSamples = 4;
+    state.refreshDue = true;
+    EXPECT_TRUE(player.advance(state, shoot, quit).empty());
+    state.refreshDue = false;
+    std::vector<ViewAction> actions = player.advance(state, shoot, quit);
+    ASSERT_EQ(actions.size(), 1u);
+    EXPECT_EQ(actions[0].kind, ViewAction::Kind::MoveNode);
+    EXPECT_EQ(actions[0].node, "ball");
+    // The orbit waits until the move has been shown.
+    state.changeShown = false;
+    EXPECT_TRUE(player.advance(state, shoot, quit).empty());
+    state.changeShown = true;
+    actions = player.advance(state, shoot, quit);
+    ASSERT_EQ(actions.size(), 1u);
+    EXPECT_EQ(actions[0].kind, ViewAction::Kind::Orbit);
+    // `seconds 2` counts from when it is reached.
+    const auto t0 = Clock::now();
+    state.now = t0;
+    EXPECT_TRUE(player.advance(state, shoot, quit).empty());
+    EXPECT_TRUE(player.waitingForTime());
+    state.now = t0 + std::chrono::milliseconds(1900);
+    EXPECT_TRUE(player.advance(state, shoot, quit).empty());
+    // Past it, `samples 64` is capped at --spp 16: 16 shown is enough; the screenshot and quit
+    // follow, and nothing after quit runs.
+    state.now = t0 + std::chrono::milliseconds(2100);
+    state.shownSamples = 15;
+    EXPECT_TRUE(player.advance(state, shoot, quit).empty());
+    EXPECT_FALSE(quit);
+    state.shownSamples = 16;
+    EXPECT_TRUE(player.advance(state, shoot, quit).empty());
+    EXPECT_TRUE(quit);
+    EXPECT_EQ(shots, (std::vector<std::string>{"a.png", "b.exr"}));
+    EXPECT_FALSE(player.finished());  // `key h` after quit never ran
 }
 
 }  // namespace
