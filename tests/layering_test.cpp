@@ -21,7 +21,8 @@ const fs::path kHost = fs::path(VKPHOTON_SOURCE_DIR) / "host";
 
 // Layers from the bottom. A file's layer is its folder's, unless a file prefix says otherwise:
 // the light BVH and the light-sampling settings sit below the scene's GPU arrays that hold them,
-// and the driver (Renderer, its raster direct light) above the light cells it prepares.
+// and the driver (Renderer, its raster direct light) above the light cells it prepares. The view
+// command (host/view) is a command like render: it shares app's layer and its render options.
 int layerOf(const std::string& file) {
     static const std::vector<std::pair<std::string, int>> kFiles = {
         {"lights/light_tree.", 35}, {"lights/light_sampling.", 35},
@@ -29,7 +30,7 @@ int layerOf(const std::string& file) {
     static const std::map<std::string, int> kFolders = {
         {"util", 0}, {"vk", 10}, {"image", 10}, {"scene", 20}, {"bvh", 30}, {"gpu_scene", 40},
         {"passes", 50}, {"render", 60}, {"photon", 70}, {"lights", 80}, {"guiding", 90},
-        {"animation", 100}, {"view", 110}, {"app", 120}};
+        {"animation", 100}, {"view", 120}, {"app", 120}};
     for (const auto& [prefix, layer] : kFiles)
         if (file.rfind(prefix, 0) == 0) return layer;
     const std::string folder = file.substr(0, file.find('/'));

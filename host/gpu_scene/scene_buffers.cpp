@@ -9,7 +9,7 @@
 
 #include "bvh/bvh.h"
 #include "scene/environment_distribution.h"
-#include "gpu_scene/textured_emission.h"
+#include "scene/textured_emission.h"
 #include "shared/bsdf_tables.glsl"
 #include "shared/constants.glsl"
 #include "shared/light_selection.glsl"

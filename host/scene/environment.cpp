@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 #include <stb/stb_image.h>
 
-#include "gpu_scene/textured_emission.h"
+#include "scene/textured_emission.h"
 #include "image/exr.h"
 #include "scene/environment_distribution.h"
 #include "shared/constants.glsl"

@@ -28,7 +28,7 @@
 #include "scene/gltf_tangents.h"
 #include "gpu_scene/scene_buffers.h"
 #include "gpu_scene/texture_atlas.h"
-#include "gpu_scene/textured_emission.h"
+#include "scene/textured_emission.h"
 #include "support/test_scenes.h"
 #include "support/small_frame.h"
 

@@ -1,4 +1,4 @@
-#include "gpu_scene/textured_emission.h"
+#include "scene/textured_emission.h"
 
 #include <algorithm>
 #include <array>
