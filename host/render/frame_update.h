@@ -44,6 +44,7 @@ struct FramePhotonCounts {
     uint64_t groupsPending = 0;      // selective: marked groups left for later frames (budget)
     uint64_t stalePathsFound = 0;    // selective: paths whose tracks met a change this frame
     uint64_t stalePathsLeft = 0;     // selective: stale paths left for later frames (budget)
+    double detectSeconds = 0.0;      // selective: finding the changed paths (tracks, marking pass)
     std::vector<MapVerification> verification;  // --verify-update: per map, after the update
 };
 

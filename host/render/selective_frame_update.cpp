@@ -76,6 +76,7 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
     m_counts.groupsPending += frame.groupsPending;
     m_counts.stalePathsFound += frame.stalePathsFound;
     m_counts.stalePathsLeft += frame.stalePathsLeft;
+    m_counts.detectSeconds += frame.detectSeconds;
     return stats;
 }
 
