@@ -34,6 +34,7 @@ struct FramePhotonCounts {
     uint64_t stalePathsLeft = 0;     // selective: stale paths left for later frames (budget)
     std::vector<MapVerification> verification;  // --verify-update: per map, after the update
     uint64_t fullPhotonPaths = 0;    // the paths of the maps built: what a full retrace traces
+    double detectSeconds = 0.0;      // selective: finding the changed paths (tracks, marking pass)
 };
 
 class FrameUpdate : public PhotonMapUpdate {

@@ -98,6 +98,7 @@ PhotonMapStats SelectiveFrameUpdate::buildPhotonMap(PhotonMap& map, uint32_t fir
     m_counts.stalePathsFound += frame.stalePathsFound;
     m_counts.stalePathsLeft += frame.stalePathsLeft;
     m_counts.fullPhotonPaths += ms.paths;
+    m_counts.detectSeconds += frame.detectSeconds;
     return stats;
 }
 

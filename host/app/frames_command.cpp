@@ -183,6 +183,7 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
                           {"groupsPending", counts.groupsPending},
                           {"stalePathsFound", counts.stalePathsFound},
                           {"stalePathsLeft", counts.stalePathsLeft},
+                          {"detectSeconds", counts.detectSeconds},
                           {"seconds", seconds},
                           {"sceneUpdateSeconds", sceneUpdateSeconds},
                           {"flattenSeconds", flattenSeconds},

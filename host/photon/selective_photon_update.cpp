@@ -9,6 +9,7 @@
 #include "photon/selective_mark_pass.h"
 #include "photon/scene_changes.h"
 #include "util/errors.h"
+#include "util/stopwatch.h"
 #include "vk/compute_kernel.h"
 #include "vk/context.h"
 #include "vk/image.h"
@@ -236,6 +237,7 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
         m_tracer->reserve(std::min(m_settings.paths, m_chunkPaths), m_settings.maxDeposits, m_settings.trackPaths);
     }
     // What moved since the last update (exact detection needs the tracks of every path).
+    const auto detectStart = Clock::now();
     auto snapshot = std::make_unique<SceneSnapshot>(
         snapshotScene(scene, arrays, sceneGeneration, sameScene ? m_snapshot.get() : nullptr));
     SceneChanges changes;
@@ -286,6 +288,7 @@ SelectiveFrameStats SelectivePhotonUpdate::update(const Scene& scene, const Scen
         if (anyStale || changes.any()) weight = markStalePaths(changes, camera, stats);
         stats.stalePathsFound += foundOnHost;
     }
+    stats.detectSeconds = secondsSince(detectStart);
 
     // Pilots: paths 0 .. m_pilotPaths - 1 (pilot m of group g is path g + m * groups), traced and
     // copied into their slots in one submission (per chunk of m_chunkPaths).

@@ -61,6 +61,7 @@ struct SelectiveFrameStats {
     uint64_t stalePathsFound = 0;    // tracked paths found stale this frame (their tracks met a change)
     uint64_t stalePathsLeft = 0;     // stale paths the budget left for later frames
     uint64_t changedRegions = 0;     // regions tested (old and new bounds of the moved instances)
+    double detectSeconds = 0.0;      // the scene comparison, selective_mark.comp and its read-backs
     bool full = false;               // the whole map was traced (first frame or --photon-update full)
 };
 
