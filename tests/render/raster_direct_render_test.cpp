@@ -93,7 +93,7 @@ TEST_F(RasterDirect, AreaLightSamplesConvergeToTraced) {
     EXPECT_LT(previous, 0.02);
 }
 
-// The "same picture": cornell-box, all bounces (the indirect light's noise dominates
+// The "same picture" check: cornell-box, all bounces (the indirect light's noise dominates
 // both), --direct raster against --direct traced. Without bias, E[relMSE(raster, traced)] is the
 // sum of the two images' noise, each estimated as half the relMSE between two renders with other
 // seeds; the measured distance may exceed it by 30 %, no more: the estimates' own scatter (~10 %
