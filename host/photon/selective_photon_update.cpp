@@ -18,6 +18,7 @@ namespace vkp {
 namespace {
 
 constexpr uint32_t kFullChunkPaths = 1u << 16;  // paths per trace at most (fewer when a path has many slots)
+constexpr size_t kCopyRegions = 256;             // copy regions per vkCmdCopyBuffer (recordCopy)
 
 }  // namespace
 
@@ -86,7 +87,15 @@ void SelectivePhotonUpdate::recordCopy(VkCommandBuffer cmd, const PhotonTracer& 
     }
     vk::memoryBarrier2(cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT);
-    m_slots.recordCopyFrom(cmd, tracer.photons(), copies);
+    // Scattered paths (stale ones) make a region per path: recorded in commands of kCopyRegions
+    // regions, since a command's regions are checked against each other (the validation layer's
+    // overlap test is quadratic in them: 10,000 regions took seconds).
+    auto record = [&](const vk::SegmentedBuffer& to, const vk::Buffer& from,
+                      std::span<const vk::SegmentedBuffer::ElementCopy> all) {
+        for (size_t first = 0; first < all.size(); first += kCopyRegions)
+            to.recordCopyFrom(cmd, from, all.subspan(first, std::min(kCopyRegions, all.size() - first)));
+    };
+    record(m_slots, tracer.photons(), copies);
     if (m_settings.trackPaths) {  // track j to path paths[j]'s track, runs as above
         std::vector<vk::SegmentedBuffer::ElementCopy> trackCopies;
         for (uint32_t j = 0; j < paths.size(); ++j) {
@@ -98,7 +107,7 @@ void SelectivePhotonUpdate::recordCopy(VkCommandBuffer cmd, const PhotonTracer& 
             }
             trackCopies.push_back({traced, paths[j], 1});
         }
-        m_tracks.recordCopyFrom(cmd, tracer.tracks(), trackCopies);
+        record(m_tracks, tracer.tracks(), trackCopies);
     }
     vk::memoryBarrier2(cmd, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                        VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
@@ -134,7 +143,10 @@ void SelectivePhotonUpdate::traceGroups(const std::vector<uint32_t>& groups, con
     std::vector<uint32_t> paths;
     if (m_settings.batched) {  // every group in one dispatch and one submission (per chunk)
         for (uint32_t g : groups) appendGroupPaths(g, paths);
+        const size_t grouped = paths.size();
         paths.insert(paths.end(), stalePaths.begin(), stalePaths.end());
+        // In path order (chosen by weight): neighbours copy into their slots as one region.
+        std::sort(paths.begin() + static_cast<std::ptrdiff_t>(grouped), paths.end());
         if (!paths.empty()) traceIntoSlots(paths);
     } else {  // one strided dispatch and submission per group (per chunk): the reference for the batched trace
         for (uint32_t g : groups) {

@@ -152,6 +152,37 @@ TEST_F(SelectiveCaustic, StalePathsStayMarkedUntilRetraced) {
     EXPECT_EQ(u.verify().stalePhotons, 0u);
 }
 
+// A moved punctual light: exactly its paths are stale (the tracks keep each path's light), the
+// other light's paths are kept, and after the update both maps equal a full retrace.
+TEST_F(SelectiveCaustic, MovedLightMarksItsPathsOnly) {
+    auto twoLights = [](float x) {
+        Scene scene = test::glassSphereOverFloor(at(-0.5f));
+        test::addPointLight(scene, {x, 1.5f, 0.5f}, glm::vec3(20.0f));
+        return scene;
+    };
+    GpuSceneData a(twoLights(0.8f));
+    GpuSceneData b(twoLights(0.9f));
+    for (const bool caustic : {true, false}) {
+        SCOPED_TRACE(caustic ? "caustic map" : "global map");
+        SelectiveSettings s = mapSettings(caustic, true);
+        s.budget = s.paths;  // room for every stale path
+        SelectivePhotonUpdate u(test::gpu(), s);
+        u.update(a.scene, a.arrays, a.buffers, false);
+        const auto tracks = u.tracks().download<gpu::GpuPathTrack>(s.paths);
+        const uint32_t moved = 1;  // the second punctual light (no emissive triangles)
+        uint32_t fromMoved = 0;
+        for (const gpu::GpuPathTrack& t : tracks) fromMoved += gpu::pathTrackLight(t) == moved ? 1 : 0;
+        ASSERT_GT(fromMoved, s.paths / 4);
+        ASSERT_LT(fromMoved, 3 * s.paths / 4);
+        const SelectiveFrameStats st = u.update(b.scene, b.arrays, b.buffers, false);
+        EXPECT_EQ(st.changedRegions, 0u);
+        // The pilots among them were traced before the marks were read: found, not counted twice.
+        EXPECT_EQ(st.stalePathsFound, fromMoved);
+        EXPECT_EQ(st.stalePathsLeft, 0u);
+        EXPECT_EQ(u.verify().stalePhotons, 0u);
+    }
+}
+
 // Two glass spheres move, one in the camera's view and one behind it; the budget holds about the
 // paths the visible one changed. Ordered by the light their stale paths carry in view (Dmitriev et
 // al. §5.3), the visible sphere's paths are retraced first; without a camera (energy alone) the
