@@ -4,6 +4,9 @@
 // tested against the sphere's old and new bounds find every changed path.
 #include <cmath>
 #include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -266,11 +269,15 @@ TEST(SelectiveCausticCli, VerifyUpdateReportsStalePhotonsPerFrameAndMap) {
     }
     EXPECT_EQ(stale[0], 0u) << "the tracks find every changed path";
     EXPECT_GT(stale[1], 0u) << "pilots alone miss some";
-    for (const std::string flags : {"--verify-update", "--frames 0:1 --photon-update full --verify-update",
-                                    "--photon-detect pilots"}) {
+    // The options of the selective update are refused without it, naming the option and what it needs.
+    const std::vector<std::pair<std::string, std::string>> refused = {
+        {"--verify-update", "--verify-update is read only with --frames"},
+        {"--frames 0:1 --photon-update full --verify-update", "--verify-update is read only with --photon-update selective"},
+        {"--photon-detect pilots", "--photon-detect is read only with --frames"}};
+    for (const auto& [flags, message] : refused) {
         const auto run = test::runVkphoton(fmt::format("render {} {} -o {}/bad-#.exr --quiet", scene, flags, dir.string()));
         EXPECT_EQ(run.exitCode, 2) << flags;
-        EXPECT_NE(run.output.find("need --frames"), std::string::npos) << run.output;
+        EXPECT_NE(run.output.find(message), std::string::npos) << run.output;
     }
 }
 
