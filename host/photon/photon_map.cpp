@@ -129,6 +129,22 @@ gpu::PhotonDepositParams PhotonMap::depositParams(uint32_t firstPath, uint32_t p
     return params;
 }
 
+PhotonMapStats PhotonMap::buildGrid(PhotonMapStats stats, bool deposit) {
+    const auto start = Clock::now();
+    const double cpuStart = processCpuSeconds();
+    if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
+    stats.cellSize = m_grid->settings().cellSize;
+    m_context.submitAndWait([&](VkCommandBuffer cmd) {
+        vk::computeBarrier(cmd);
+        m_grid->record(cmd);
+        vk::computeToHostBarrier(cmd);
+    });
+    stats.gridSeconds = secondsSince(start);
+    stats.gridCpuSeconds = processCpuSeconds() - cpuStart;
+    stats.bytes = bytes();
+    return stats;
+}
+
 PhotonMapStats PhotonMap::build(uint32_t firstPath) {
     PhotonMapStats stats;
     auto start = Clock::now();
@@ -215,20 +231,7 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
     stats.dropped = state[gpu::kPhotonMapStateDropped];
     m_lastStored = stats.stored;
     stats.traceSeconds = secondsSince(start);
-
-    start = Clock::now();
-    const double cpuStart = processCpuSeconds();
-    if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
-    stats.cellSize = m_grid->settings().cellSize;
-    m_context.submitAndWait([&](VkCommandBuffer cmd) {
-        vk::computeBarrier(cmd);
-        m_grid->record(cmd);
-        vk::computeToHostBarrier(cmd);
-    });
-    stats.gridSeconds = secondsSince(start);
-    stats.gridCpuSeconds = processCpuSeconds() - cpuStart;
-    stats.bytes = bytes();
-    return stats;
+    return buildGrid(stats, deposit);
 }
 
 PhotonMapStats PhotonMap::buildFromSlots(const vk::SegmentedBuffer& slots, uint32_t firstPath) {
@@ -295,19 +298,7 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::SegmentedBuffer& slots, uint3
     m_lastStored = stats.stored;
     stats.chunks = 1;
     stats.traceSeconds = secondsSince(start);
-    start = Clock::now();
-    const double cpuStart = processCpuSeconds();
-    if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
-    stats.cellSize = m_grid->settings().cellSize;
-    m_context.submitAndWait([&](VkCommandBuffer cmd) {
-        vk::computeBarrier(cmd);
-        m_grid->record(cmd);
-        vk::computeToHostBarrier(cmd);
-    });
-    stats.gridSeconds = secondsSince(start);
-    stats.gridCpuSeconds = processCpuSeconds() - cpuStart;
-    stats.bytes = bytes();
-    return stats;
+    return buildGrid(stats, deposit);
 }
 
 uint64_t PhotonMap::bytes() const {

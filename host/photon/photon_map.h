@@ -131,6 +131,9 @@ private:
     uint64_t m_lastStored = 0;
     // Allocates the map's segments for `photons` and the grid's for all the map holds.
     void reserve(uint64_t photons);
+    // The hash grid over the photons stored (or, deciding deposits, the candidates), timed into
+    // `stats`, with the map's memory: the last step of build() and buildFromSlots().
+    PhotonMapStats buildGrid(PhotonMapStats stats, bool deposit);
 };
 
 }  // namespace vkp
