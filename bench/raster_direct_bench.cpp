@@ -76,8 +76,8 @@ int main(int argc, char** argv) {
         const float near = rasterNearPlane(scene.bounds);
         const uint64_t pixels = uint64_t(width) * height;
 
-        fmt::print("scene: {} ({} triangles), {}x{}, device: {}, depth clamp: {}, median of {}\n", scenePath,
-                   arrays.triangles.size(), width, height, context.deviceName(), context.depthClampEnabled(), repeat);
+        fmt::print("scene: {} ({} triangles), {}x{}, device: {}, median of {}\n", scenePath,
+                   arrays.triangles.size(), width, height, context.deviceName(), repeat);
         fmt::print("| point lights | raster, compute volumes ms/frame | raster, geometry shader ms/frame | traced ms/frame | traced / raster (compute) | max abs difference raster-traced (compute / GS) |\n");
         fmt::print("|---:|---:|---:|---:|---:|---:|\n");
         for (uint32_t count : lightCounts) {

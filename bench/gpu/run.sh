@@ -36,6 +36,12 @@ do_pack() {
     grep -vE '/(libc|libm|libpthread|libdl|librt|ld-linux-x86-64|libresolv)\.so' |
     while read -r lib; do cp -L "$lib" "$pack/lib/"; done
   cp -L /usr/lib/x86_64-linux-gnu/libvulkan.so.1 "$pack/lib/"
+  # The NVIDIA ICD (libGLX_nvidia.so.0) answers no vkCreateInstance without libglvnd's dispatch
+  # libraries, which the bare GPU machine lacks: their Debian packages travel too and are unpacked
+  # into / there (as root) before the first Vulkan call.
+  mkdir -p "$pack/debs"
+  (cd "$pack/debs" && apt-get download libglvnd0 libegl1 libgl1 libglx0 libopengl0 libgles2 >/dev/null 2>&1) ||
+    echo "run.sh pack: could not download the libglvnd packages; the NVIDIA ICD may find no instance" >&2
   strip "$layer" -o "$pack/layers/libVkLayer_khronos_validation.so"
   sed 's#"library_path": *"[^"]*"#"library_path": "./libVkLayer_khronos_validation.so"#' \
     /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json >"$pack/layers/VkLayer_khronos_validation.json"
@@ -43,7 +49,7 @@ do_pack() {
   echo "$root" >"$pack/source_dir"
   # The device tool carries 64 MiB with the working tree: the binaries, libraries and layer
   # travel as one xz archive (about a fifth of their size).
-  tar -C "$pack" -cJf "$root/.gpu-pack.tar.xz" bin lib layers source_dir
+  tar -C "$pack" -cJf "$root/.gpu-pack.tar.xz" bin lib layers debs source_dir
   rm -rf "$pack" && mkdir -p "$pack" && mv "$root/.gpu-pack.tar.xz" "$pack/pack.tar.xz"
   du -sh "$pack"
 }
@@ -58,6 +64,10 @@ do_run() {
     pack=$unpacked
   fi
   [ -x "$pack/bin/vkphoton" ] || { echo "run.sh: no $pack/bin/vkphoton: run 'bash bench/gpu/run.sh pack' first" >&2; exit 2; }
+  if [ "$(id -u)" = 0 ] && ! ldconfig -p | grep -q libGLdispatch.so.0 && compgen -G "$pack/debs/*.deb" >/dev/null; then
+    for f in "$pack"/debs/*.deb; do dpkg -x "$f" /; done
+    ldconfig
+  fi
   export LD_LIBRARY_PATH="$pack/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
   for d in /usr/local/nvidia/lib64 /usr/local/nvidia/lib; do [ -d "$d" ] && LD_LIBRARY_PATH+=":$d"; done
   export VK_LAYER_PATH="$pack/layers"
@@ -76,7 +86,13 @@ do_run() {
     echo
     echo "commit $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown); VK_DRIVER_FILES=${VK_DRIVER_FILES:-} VK_ICD_FILENAMES=${VK_ICD_FILENAMES:-}"
     nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader 2>/dev/null | sed 's/^/gpu: /'
-    echo; echo '## devices'; echo '```'; "$bin/vkphoton" devices 2>&1
+    echo; echo '## devices'; echo '```'
+    if ! "$bin/vkphoton" devices 2>&1; then
+      # What the loader saw, and what the ICD library lacks.
+      VK_LOADER_DEBUG=error,warn,driver "$bin/vkphoton" devices 2>&1 | head -40
+      ldconfig -p | grep -E 'GLX_nvidia|GLdispatch|nvidia-glcore' | head
+      ldd "$(ldconfig -p | awk '/libGLX_nvidia.so.0/ {print $NF; exit}')" 2>&1 | grep -i 'not found'
+    fi
     ls /usr/local/nvidia/share/vulkan/icd.d /usr/share/vulkan/icd.d /etc/vulkan/icd.d 2>&1 | head -8; echo '```'
   } >"$results"
   run_tests "$out" >>"$results" 2>>"$log"

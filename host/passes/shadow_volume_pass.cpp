@@ -152,7 +152,6 @@ ShadowVolumePass::ShadowVolumePass(vk::Context& context, const std::vector<gpu::
     m_build.bind(gpu::kShadowVolumeLightBinding, m_lights);
     m_build.bind(gpu::kShadowVolumeVertexBinding, m_volumes);
 
-    const bool clamp = context.depthClampEnabled();
     vk::GraphicsPipelineDesc base;
     base.vertexShader = "raster_position.vert";
     base.vertexStride = sizeof(glm::vec4);
@@ -174,10 +173,12 @@ ShadowVolumePass::ShadowVolumePass(vk::Context& context, const std::vector<gpu::
     // z-fail ("Carmack's reverse"): count the volume faces *behind* the visible surface, back
     // faces up, front faces down, both in one draw with two-sided stencil. The count is the number
     // of volumes containing the visible point whatever the camera position, because every volume
-    // is closed (both caps) and nothing is clipped at infinity (depth clamp / w = 0 vertices).
+    // is closed (both caps) and nothing is clipped at infinity: under the reversed infinite
+    // projection a w = 0 vertex has clip z = 0, inside 0 <= z <= w. No depth clamp: with it the
+    // near plane goes, and NVIDIA's driver (580) then rasterises volume faces behind the camera,
+    // counting every pixel as shadowed when the camera is inside a volume (lavapipe clips them).
     vk::GraphicsPipelineDesc volume = base;
     volume.depthTest = true;
-    volume.depthClamp = clamp;
     volume.stencilTest = true;
     volume.stencilFront = stencilOp(VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_DECREMENT_AND_WRAP, VK_COMPARE_OP_ALWAYS);
     volume.stencilBack = stencilOp(VK_STENCIL_OP_KEEP, VK_STENCIL_OP_KEEP, VK_STENCIL_OP_INCREMENT_AND_WRAP, VK_COMPARE_OP_ALWAYS);

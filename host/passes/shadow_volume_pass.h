@@ -1,6 +1,6 @@
 // Raster shadow pass (Dmitriev et al. 2002, section 6.1): a depth pre-pass of the scene from the
 // camera, then per light z-fail stencil shadow volumes (Carmack's reverse, two-sided stencil,
-// volumes extruded to infinity under a reversed infinite projection with depth clamp), and the
+// volumes extruded to infinity under a reversed infinite projection), and the
 // paper's RGBA shadow mask: the stencil result of up to four lights lands in the four channels of
 // one mask per pass, ceil(N/4) passes for N lights. Reads the scene triangles and the raster light
 // list; writes `masks()`: per pass and pixel one RGBA8 word (a channel is 255 where the light is

@@ -328,11 +328,6 @@ void Context::createDevice() {
     vkGetPhysicalDeviceFeatures(m_physicalDevice, &supported);
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = &features13;
-    // Shadow volumes extruded to infinity land exactly on the far plane; depth clamp keeps them
-    // from being clipped there (optional: the pass falls back to a slightly-less-than-infinite
-    // projection).
-    m_depthClamp = supported.depthClamp == VK_TRUE;
-    features.features.depthClamp = supported.depthClamp;
     // Optional: the geometry-shader variant of the shadow volumes (measured against the compute
     // variant in docs/benchmarks.md).
     m_geometryShader = supported.geometryShader == VK_TRUE;

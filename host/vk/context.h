@@ -73,7 +73,6 @@ public:
     bool validationEnabled() const { return m_validate; }
     // Whether VK_KHR_swapchain is enabled (ContextOptions::canPresent was set).
     bool presentationEnabled() const { return static_cast<bool>(m_canPresent); }
-    bool depthClampEnabled() const { return m_depthClamp; }
     bool geometryShaderEnabled() const { return m_geometryShader; }
     // Largest single buffer: maxMemoryAllocationSize and maxBufferSize, the smaller.
     VkDeviceSize maxAllocationSize() const { return m_maxAllocationSize; }
@@ -107,7 +106,6 @@ private:
 
     bool m_validate = false;
     std::function<bool(VkInstance, VkPhysicalDevice, uint32_t)> m_canPresent;
-    bool m_depthClamp = false;
     bool m_geometryShader = false;
     VkInstance m_instance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT m_messenger = VK_NULL_HANDLE;

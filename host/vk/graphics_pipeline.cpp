@@ -28,8 +28,6 @@ GraphicsPipeline::GraphicsPipeline(Context& context, const GraphicsPipelineDesc&
     : m_context(context), m_name(desc.vertexShader + "+" + desc.fragmentShader),
       m_pushBytes(desc.pushConstantBytes) {
     const VkDevice device = context.device();
-    if (desc.depthClamp && !context.depthClampEnabled())
-        throw RuntimeError(fmt::format("{}: depth clamp requested but the device lacks it", m_name));
     try {
         std::vector<VkPipelineShaderStageCreateInfo> stages;
         m_vertex = makeModule(device, desc.vertexShader);
@@ -76,7 +74,7 @@ GraphicsPipeline::GraphicsPipeline(Context& context, const GraphicsPipelineDesc&
         viewport.viewportCount = 1;
         viewport.scissorCount = 1;
         VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-        raster.depthClampEnable = desc.depthClamp ? VK_TRUE : VK_FALSE;
+        raster.depthClampEnable = VK_FALSE;
         raster.polygonMode = VK_POLYGON_MODE_FILL;
         raster.cullMode = desc.cullMode;
         raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;

@@ -23,7 +23,6 @@ struct GraphicsPipelineDesc {
     bool depthTest = false;
     bool depthWrite = false;
     VkCompareOp depthCompare = VK_COMPARE_OP_LESS;
-    bool depthClamp = false;                   // needs Context::depthClampEnabled()
     bool stencilTest = false;
     VkStencilOpState stencilFront{};           // counter-clockwise in framebuffer space
     VkStencilOpState stencilBack{};

@@ -63,10 +63,15 @@ TEST(Cli, BadCameraIndexExitsWithTwo) {
     EXPECT_NE(r.output.find("--camera 7"), std::string::npos) << r.output;
 }
 
+// Lavapipe where its driver is installed (as the suite's set-up does); a machine with only
+// another driver lists that one.
 TEST(Cli, DevicesListsLavapipe) {
     const RunResult r = runVkphoton("devices");
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("llvmpipe"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("0: "), std::string::npos) << r.output;
+    if (std::filesystem::exists("/usr/share/vulkan/icd.d/lvp_icd.x86_64.json")) {
+        EXPECT_NE(r.output.find("llvmpipe"), std::string::npos) << r.output;
+    }
 }
 
 TEST(Cli, UnknownDeviceExitsWithTwo) {

@@ -1,6 +1,7 @@
 // GPU BVH traversal (shaders/shared/bvh_traverse.glsl, run by tests/shaders/bvh_trace_test.comp)
 // against brute force over all triangles and against the same traversal on the host, on a shipped
 // scene, and shadow rays that must not be occluded by the surfaces they start and end on.
+#include <cmath>
 #include <cstring>
 #include <optional>
 #include <random>
@@ -23,6 +24,19 @@
 
 namespace vkp {
 namespace {
+
+// The device runs intersectTriangle as the host does, unfused (`precise`); its two divisions
+// (1 / dir and 1 / det) are correctly rounded on lavapipe, so hits agree bit for bit there. Other
+// drivers divide within Vulkan's 2.5 ulp (on an NVIDIA H100 a last digit differed on thousands of the
+// tests' 18000 rays):
+// a few ulps of distance, and of barycentric or 1e-6 near 0.
+bool sameDistance(float device, float host) {
+    return test::onLavapipe() ? device == host : test::ulpDistance(device, host) <= 8;
+}
+bool sameBarycentric(float device, float host) {
+    return test::onLavapipe() ? device == host
+                              : test::ulpDistance(device, host) <= 8 || std::abs(device - host) <= 1e-6f;
+}
 
 struct TestRay {
     glm::vec4 origin;     // w = tMax
@@ -137,17 +151,14 @@ TEST_F(BvhGpu, ClosestHitEqualsBruteForceOnCornellGlass) {
         ASSERT_EQ(found, expected.hit) << "ray " << i;
         EXPECT_EQ(hits[i].anyHit != 0, expected.hit) << "ray " << i;
         if (!found) continue;
-        EXPECT_EQ(hits[i].t, expected.t) << "ray " << i;
-        if (hits[i].triangle != expected.triangle) {
-            EXPECT_EQ(hits[i].t, expected.t) << "ray " << i;
-        }
+        EXPECT_TRUE(sameDistance(hits[i].t, expected.t)) << "ray " << i << ": " << hits[i].t << " vs " << expected.t;
         // The host runs the same traversal (closestHit is bvh_traverse.glsl compiled as C++):
         // the same triangle and barycentrics, not only the same distance.
         const RayHit host = closestHit(bvh, tris, glm::vec3(rays[i].origin), glm::vec3(rays[i].direction),
                                        rays[i].origin.w);
         EXPECT_EQ(hits[i].triangle, host.triangle) << "ray " << i;
-        EXPECT_EQ(hits[i].b1, host.b1) << "ray " << i;
-        EXPECT_EQ(hits[i].b2, host.b2) << "ray " << i;
+        EXPECT_TRUE(sameBarycentric(hits[i].b1, host.b1)) << "ray " << i << ": " << hits[i].b1 << " vs " << host.b1;
+        EXPECT_TRUE(sameBarycentric(hits[i].b2, host.b2)) << "ray " << i << ": " << hits[i].b2 << " vs " << host.b2;
     }
     EXPECT_GT(hitCount, rays.size() / 4);
     EXPECT_LT(hitCount, rays.size());
@@ -199,9 +210,9 @@ TEST_F(BvhGpu, TwoLevelHitsEqualTheHostTraversal) {
         if (!host.hit) continue;
         instanceHits += host.triangle >= bvh.top.header.staticTriangles;
         EXPECT_EQ(hits[i].triangle, host.triangle) << "ray " << i;
-        EXPECT_EQ(hits[i].t, host.t) << "ray " << i;
-        EXPECT_EQ(hits[i].b1, host.b1) << "ray " << i;
-        EXPECT_EQ(hits[i].b2, host.b2) << "ray " << i;
+        EXPECT_TRUE(sameDistance(hits[i].t, host.t)) << "ray " << i << ": " << hits[i].t << " vs " << host.t;
+        EXPECT_TRUE(sameBarycentric(hits[i].b1, host.b1)) << "ray " << i << ": " << hits[i].b1 << " vs " << host.b1;
+        EXPECT_TRUE(sameBarycentric(hits[i].b2, host.b2)) << "ray " << i << ": " << hits[i].b2 << " vs " << host.b2;
     }
     EXPECT_GT(instanceHits, 200u);
 }

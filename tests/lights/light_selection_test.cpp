@@ -464,9 +464,10 @@ TEST_F(LightSelectionGpu, SelectionAndTriangleSamplingMatchTheHostBuild) {
         }
         EXPECT_EQ(failures, 0);
         EXPECT_LE(differentChoices, static_cast<int>(inputs.size()) / 100) << "choices differing from the C++ build";
-        // Measured: 0.2-0.3 % (the warp's float cancellation for triangles of a few 1e-3 sr); with
-        // the former asin-based angles 30 %.
-        EXPECT_LE(triangleFailures, sampled / 100) << "spherical triangle samples differing, of " << sampled;
+        // Measured: 0.2-0.3 % on lavapipe (the warp's float cancellation for triangles of a few
+        // 1e-3 sr), 1.02 % on an NVIDIA H100 (driver 580: division and square root within
+        // Vulkan's 2.5-3 ulp, not correctly rounded); with the former asin-based angles 30 %.
+        EXPECT_LE(triangleFailures, sampled / 50) << "spherical triangle samples differing, of " << sampled;
         EXPECT_GT(sampled, static_cast<int>(inputs.size()) * 3 / 4);
     }
 }

@@ -149,7 +149,8 @@ TEST_F(PhotonMapSegmentsTest, MapPastFourMillionPhotonsKeepsThemAll) {
     PhotonMap map(test::gpu(), scene, arrays, buffers, settings);
     const PhotonMapStats stats = map.build(0);
     const uint64_t oneBuffer = test::gpu().properties().limits.maxStorageBufferRange / sizeof(gpu::GpuPhoton);
-    ASSERT_GT(stats.stored, oneBuffer);
+    if (stats.stored <= oneBuffer)  // e.g. NVIDIA: 4 GiB, 134 M photons in one buffer
+        GTEST_SKIP() << "this device stores " << oneBuffer << " photons in one buffer; the test's map has " << stats.stored;
     EXPECT_EQ(stats.dropped, 0u);
     EXPECT_EQ(stats.stored, stats.traced.storedCaustic + stats.traced.storedGlobal + stats.traced.storedPrimary);
     EXPECT_GE(stats.bytes, stats.stored * (2 * sizeof(gpu::GpuPhoton) + sizeof(uint32_t)));

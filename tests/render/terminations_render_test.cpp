@@ -176,13 +176,17 @@ bool warnsOfCuts(const Stats& stats) {
     return false;
 }
 
+// On lavapipe the sliver scene's rays run past the loop budget and are counted; a driver without
+// the budget (NVIDIA) runs them to the end, and then nothing may be counted or warned about.
 TEST_F(TerminationsGpu, RaysPastLavapipesLoopBudgetAreCountedAndWarnedAbout) {
     const Scene scene = sliverScene(100000);
     Renderer renderer(test::gpu(), scene);
+    const bool budget = test::onLavapipe();
     const RenderResult path = renderer.render<PathIntegrator>(tiny());
-    EXPECT_GT(path.stats.get<uint64_t>("terminations.loopLimit.samples"), 0u);
+    if (budget) EXPECT_GT(path.stats.get<uint64_t>("terminations.loopLimit.samples"), 0u);
+    else EXPECT_EQ(sumOf(path.stats, gpu::kTerminationLoopLimit), 0u);
     EXPECT_LE(path.stats.get<uint64_t>("terminations.loopLimit.samples"), 8u * 8u * 2u);
-    EXPECT_TRUE(warnsOfCuts(path.stats));
+    EXPECT_EQ(warnsOfCuts(path.stats), budget);
 
     PhotonIntegratorSettings p;
     p.globalPaths = 500;
@@ -192,9 +196,13 @@ TEST_F(TerminationsGpu, RaysPastLavapipesLoopBudgetAreCountedAndWarnedAbout) {
     FrameSettings s = tiny();
     s.samplesPerPixel = 1;
     const RenderResult photon = renderer.render<PhotonIntegrator>(s, p);
-    EXPECT_GT(photon.stats.get<uint64_t>("terminations.loopLimit.photonPaths"), 0u);
-    EXPECT_GT(photon.stats.get<uint64_t>("terminations.loopLimit.samples"), 0u);
-    EXPECT_TRUE(warnsOfCuts(photon.stats));
+    if (budget) {
+        EXPECT_GT(photon.stats.get<uint64_t>("terminations.loopLimit.photonPaths"), 0u);
+        EXPECT_GT(photon.stats.get<uint64_t>("terminations.loopLimit.samples"), 0u);
+    } else {
+        EXPECT_EQ(sumOf(photon.stats, gpu::kTerminationLoopLimit), 0u);
+    }
+    EXPECT_EQ(warnsOfCuts(photon.stats), budget);
 }
 
 TEST_F(TerminationsGpu, AnOrdinarySceneReportsNoneOfAnyKind) {

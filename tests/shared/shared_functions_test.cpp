@@ -111,10 +111,14 @@ TEST_F(SharedFunctions, GgxVisibleNormalMatches) {
 
 TEST_F(SharedFunctions, EvalBsdfMatches) { compare(gpu::kHarnessEvalBsdf, "evalBsdf", {false, 1e-5f, 1e-3f}); }
 
-TEST_F(SharedFunctions, PdfBsdfMatches) { compare(gpu::kHarnessPdfBsdf, "pdfBsdf", {false, 1e-5f, 1e-3f}); }
+// The tolerances hold for drivers whose division and square root are only as exact as Vulkan
+// requires (2.5 and 3 ulp): on an NVIDIA H100 (driver 580) one input in 4096 differed by 1.4e-3
+// relative in pdfBsdf (roughness 0.08: a narrow GGX lobe amplifies the half vector's error) and
+// by 2.6e-5 in fresnelDielectric; lavapipe, correctly rounded, stays within a tenth of that.
+TEST_F(SharedFunctions, PdfBsdfMatches) { compare(gpu::kHarnessPdfBsdf, "pdfBsdf", {false, 1e-5f, 3e-3f}); }
 
 TEST_F(SharedFunctions, FresnelMatches) {
-    compare(gpu::kHarnessFresnelDielectric, "fresnelDielectric", {false, 1e-6f, 1e-5f});
+    compare(gpu::kHarnessFresnelDielectric, "fresnelDielectric", {false, 1e-6f, 1e-4f});
 }
 
 TEST_F(SharedFunctions, OrthonormalBasisMatches) {

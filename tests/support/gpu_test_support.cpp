@@ -4,6 +4,9 @@
 #include "vk/shader_registry.h"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
 
 namespace vkp::embedded {
 extern const vk::ShaderEntry* const vkphoton_test_shaders_table[];
@@ -30,6 +33,19 @@ vk::Context& gpu() {
         return std::make_unique<vk::Context>(options);
     }();
     return *context;
+}
+
+bool onLavapipe() { return gpu().deviceName().find("llvmpipe") != std::string::npos; }
+
+uint32_t ulpDistance(float a, float b) {
+    if (std::isnan(a) || std::isnan(b)) return std::numeric_limits<uint32_t>::max();
+    // Floats of one sign are ordered like their bit patterns; map both signs onto one line.
+    const auto line = [](float f) {
+        const int64_t bits = std::bit_cast<int32_t>(f);
+        return bits < 0 ? -(bits & 0x7fffffff) : bits;
+    };
+    const int64_t d = line(a) - line(b);
+    return static_cast<uint32_t>(std::min<int64_t>(d < 0 ? -d : d, std::numeric_limits<uint32_t>::max()));
 }
 
 void poisonDeviceMemory(uint64_t bytes) {

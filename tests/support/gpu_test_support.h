@@ -2,6 +2,7 @@
 // test shaders registered, and a check that no validation message arrived during a test.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -22,6 +23,15 @@ void poisonDeviceMemory(uint64_t bytes);
 
 // Fails the current test if the validation layer reported anything since the last call.
 void expectNoValidationMessages();
+
+// Whether the shared context runs on Mesa's lavapipe (llvmpipe), where the suite normally runs.
+// Two of its properties some tests rely on and other drivers do not have: float division and
+// square root correctly rounded (the Vulkan spec allows 2.5 and 3 ulp), and the 65535-iteration
+// loop budget per shader invocation (docs/photon-mapping.md).
+bool onLavapipe();
+
+// How many representable floats lie between a and b (0 when equal; huge across signs or NaN).
+uint32_t ulpDistance(float a, float b);
 
 // Base fixture for tests that use the GPU: checks validation after each test.
 class GpuTest : public ::testing::Test {
