@@ -137,6 +137,10 @@ run_benches() {
   bench "path tracer throughput (cornell-glass)" "$bin/path_tracer_bench" $s/cornell-glass.gltf --width 256 --height 256 --spp 16 --repeat 3
   bench "photon tracing (cornell-glass)" "$bin/photon_bench" $s/cornell-glass.gltf --paths 1000000 --repeat 3
   bench "photon map: grid build and gathers" "$bin/photon_map_bench" $s/cornell-glass.gltf --skip-convergence --repeat 3
+  # Guided vs plain path tracing, error against the Cycles reference per sample count and second.
+  bench "guided path tracing (cornell-ceiling-lambert, 128x128, Cycles reference)" "$bin/guiding_bench" \
+    tests/data/cycles/cornell-ceiling-lambert.gltf --size 128 --reference tests/data/cycles/cornell-ceiling-lambert.exr \
+    --max-spp 4096 --max-seconds 8
   local o; o=$(mktemp -d)
   for integ in path photon sppm guided; do
     local extra=(--integrator "$integ")
