@@ -7,10 +7,11 @@
 #   bash bench/gpu/run.sh run [DIR]     # there (or here, on lavapipe): tests + benchmarks into
 #                                       # DIR/gpu-results.md (default: $OUT, else out/gpu)
 #
-# .gpu/ is ignored by git (bench/gpu/.gitignore); the device tool carries it (`carry: [".gpu"]`).
+# .gpu/ is ignored by git (.gitignore); the device tool carries it (`carry: [".gpu"]`).
 # The GPU machine has no Vulkan loader of its own and cannot reach the network, so the loader
 # (libvulkan.so.1) travels with the other libraries; the driver's ICD file is found where the
-# NVIDIA image keeps it. Set VKPHOTON_GPU_TESTS=0 to skip the tests, VKPHOTON_GPU_TEST_FILTER
+# NVIDIA image keeps it. Set VKPHOTON_GPU_TESTS=0 to skip the tests (VKPHOTON_GPU_BENCHES=0 the
+# benchmarks), VKPHOTON_GPU_TEST_FILTER
 # to run a gtest filter, VKPHOTON_GPU_SHARDS for parallel test processes (default 8).
 set -uo pipefail
 cd "$(dirname "$0")/../.."
@@ -132,6 +133,7 @@ bench() {  # bench TITLE CMD...: the command line and its output, timed
 }
 
 run_benches() {
+  [ "${VKPHOTON_GPU_BENCHES:-1}" = 1 ] || return 0
   local bin=$pack/bin s=scenes
   bench "path tracer throughput (cornell-box)" "$bin/path_tracer_bench" $s/cornell-box.gltf --width 256 --height 256 --spp 16 --repeat 3
   bench "path tracer throughput (cornell-glass)" "$bin/path_tracer_bench" $s/cornell-glass.gltf --width 256 --height 256 --spp 16 --repeat 3
