@@ -22,12 +22,12 @@ do_pack() {
   set -e
   bash scripts/setup.sh
   cmake --build build -j "${VKPHOTON_JOBS:-2}" --target vkphoton vkphoton_unit_tests vkphoton_render_tests \
-    vkphoton_slow_tests path_tracer_bench photon_bench photon_map_bench guiding_bench
+    vkphoton_slow_tests path_tracer_bench photon_bench photon_map_bench guiding_bench display_bench
   rm -rf "$pack"
   mkdir -p "$pack/bin" "$pack/lib" "$pack/layers"
   local bins=(build/vkphoton build/tests/vkphoton_unit_tests build/tests/vkphoton_render_tests
               build/tests/vkphoton_slow_tests build/bench/path_tracer_bench build/bench/photon_bench
-              build/bench/photon_map_bench build/bench/guiding_bench)
+              build/bench/photon_map_bench build/bench/guiding_bench build/bench/display_bench)
   for b in "${bins[@]}"; do strip -o "$pack/bin/$(basename "$b")" "$b"; done
   # Every shared library the binaries and the validation layer need, but the C runtime's own
   # (the GPU machine's glibc is newer, and mixing two loaders breaks both).
@@ -139,6 +139,7 @@ run_benches() {
   bench "path tracer throughput (cornell-glass)" "$bin/path_tracer_bench" $s/cornell-glass.gltf --width 256 --height 256 --spp 16 --repeat 3
   bench "photon tracing (cornell-glass)" "$bin/photon_bench" $s/cornell-glass.gltf --paths 1000000 --repeat 3
   bench "photon map: grid build and gathers" "$bin/photon_map_bench" $s/cornell-glass.gltf --skip-convergence --repeat 3
+  bench "viewer display pass, 1920x1080" "$bin/display_bench" --repeat 5
   # Guided vs plain path tracing, error against the Cycles reference per sample count and second.
   bench "guided path tracing (cornell-ceiling-lambert, 128x128, Cycles reference)" "$bin/guiding_bench" \
     tests/data/cycles/cornell-ceiling-lambert.gltf --size 128 --reference tests/data/cycles/cornell-ceiling-lambert.exr \

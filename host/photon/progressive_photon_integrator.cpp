@@ -80,9 +80,8 @@ void ProgressivePhotonIntegrator::finish(ImageRgb& image, uint32_t samplesDone) 
     const auto state = m_sppm->download<gpu::SppmPixel>();
     const float passes = static_cast<float>(std::max(1u, samplesDone));
     for (uint64_t i = 0; i < m_pixels; ++i) {
-        const gpu::SppmPixel& px = state[i];
-        const glm::vec3 l = px.flux / (passes * gpu::kPi * px.radius2);
-        for (int c = 0; c < 3; ++c) image.pixels[3 * i + c] += std::isfinite(l[c]) ? l[c] : 0.0f;
+        const glm::vec3 l = gpu::sppmRadiance(state[i], passes);
+        for (int c = 0; c < 3; ++c) image.pixels[3 * i + c] += l[c];
     }
     m_stats.set("photons.mapBytes", m_map->bytes());
 }

@@ -30,6 +30,7 @@ public:
     void beginSamples(uint32_t first, uint32_t count) override;
     void recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) override;
     void finish(ImageRgb& image, uint32_t samplesDone) override;
+    const vk::Buffer* progressiveEstimates() const override { return m_sppm.get(); }
     std::optional<std::string> stoppedEarly() const override {
         return m_stopReason.empty() ? std::nullopt : std::optional<std::string>(m_stopReason);
     }

@@ -5,7 +5,8 @@
 //   prepare(frame, film)          once per frame: photon maps, guides; binds the film
 //   beginSamples(first, count)    host work before a batch (SPPM: the pass's photon map)
 //   recordSamples(cmd, first, n)  records samples [first, first + n) into the film: no submit
-//   finish(image, samples)        adds what the film's sums do not hold (SPPM's photon estimate)
+//   finish(image, samples)        adds what the film's sums do not hold (SPPM's photon estimate;
+//                                 progressiveEstimates() is its buffer for device-side resolves)
 //   report(stats)                 named statistics, its resolved settings, warnings
 #pragma once
 
@@ -21,6 +22,7 @@
 #include "render/stats.h"
 
 namespace vkp {
+namespace vk { class Buffer; }
 
 class Integrator {
 public:
@@ -44,6 +46,10 @@ public:
         (void)image;
         (void)samplesDone;
     }
+    // The device buffer finish() reads what it adds from, for consumers that resolve the image
+    // on the device (the viewer's display pass): one gpu::SppmPixel per pixel, added as
+    // gpu::sppmRadiance(pixel, samplesDone); null when finish() adds nothing.
+    virtual const vk::Buffer* progressiveEstimates() const { return nullptr; }
     // Why prepare() (or a later photon pass) stopped before finishing ("interrupted", "time
     // limit"), when it did: the frame's control was set and the phase kept what it had.
     virtual std::optional<std::string> stoppedEarly() const { return std::nullopt; }

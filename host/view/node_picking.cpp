@@ -57,18 +57,4 @@ bool nodeCentre(const Scene& scene, int node, glm::vec3& centre) {
     return true;
 }
 
-void drawOutline(std::vector<uint8_t>& rgba, const std::vector<uint8_t>& mask, uint32_t width, uint32_t height) {
-    auto inside = [&](int x, int y) {
-        return x >= 0 && y >= 0 && x < int(width) && y < int(height) && mask[size_t(y) * width + x];
-    };
-    for (int y = 0; y < int(height); ++y)
-        for (int x = 0; x < int(width); ++x) {
-            if (!inside(x, y) || (inside(x - 1, y) && inside(x + 1, y) && inside(x, y - 1) && inside(x, y + 1))) continue;
-            uint8_t* p = &rgba[4 * (size_t(y) * width + x)];
-            p[0] = 255;  // orange
-            p[1] = 160;
-            p[2] = 0;
-        }
-}
-
 }  // namespace vkp

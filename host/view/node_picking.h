@@ -25,7 +25,4 @@ std::vector<uint8_t> nodeMask(const Scene& scene, const SceneArrays& arrays, con
 // The centre of node `node`'s instances' world bounds (false when it draws none).
 bool nodeCentre(const Scene& scene, int node, glm::vec3& centre);
 
-// Paints the outline of `mask` (mask pixels with a 4-neighbour outside it) into RGBA8 `pixels`.
-void drawOutline(std::vector<uint8_t>& rgba, const std::vector<uint8_t>& mask, uint32_t width, uint32_t height);
-
 }  // namespace vkp

@@ -186,10 +186,4 @@ uint32_t ProgressiveSession::step(double targetSeconds) {
     return count;
 }
 
-ImageRgb ProgressiveSession::image() {
-    ImageRgb image = m_film->resolve();
-    if (m_integrator && !inPreview()) m_integrator->finish(image, m_samples);
-    return image;
-}
-
 }  // namespace vkp

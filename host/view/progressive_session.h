@@ -87,8 +87,13 @@ public:
     // One such round: a selective restart that does not count as a move.
     void refreshRound();
 
-    // The image of the samples so far (a read-back), with what the integrator adds at the end.
-    ImageRgb image();
+    // What the image of the samples so far is made of, on the device (view/display_pass.h resolves
+    // it): the film, and the estimates the integrator adds at the end (SPPM's; null in the
+    // preview or for the others).
+    const Film& film() const { return *m_film; }
+    const vk::Buffer* progressiveEstimates() const {
+        return m_integrator && !inPreview() ? m_integrator->progressiveEstimates() : nullptr;
+    }
     uint32_t samples() const { return m_samples; }
     bool complete() const { return m_samples >= m_settings.frame.samplesPerPixel; }
     std::string integratorName() const { return m_integrator ? m_integrator->name() : std::string(); }

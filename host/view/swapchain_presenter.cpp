@@ -36,9 +36,6 @@ SwapchainPresenter::SwapchainPresenter(vk::Context& context, VkSurfaceKHR surfac
         vk::check(vkCreateFence(context.device(), &fenceInfo, nullptr, &m_fence), "creating the presenter's fence");
         VkSemaphoreCreateInfo semaphoreInfo{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
         vk::check(vkCreateSemaphore(context.device(), &semaphoreInfo, nullptr, &m_acquired), "creating a semaphore");
-        // Host-visible (MemoryUse::Readback maps it): written by the CPU, copied by the device.
-        m_staging = vk::Buffer(context, "window image", VkDeviceSize(width) * height * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                               vk::MemoryUse::Readback);
         createSwapchain();
     } catch (...) {
         release();
@@ -116,13 +113,10 @@ void SwapchainPresenter::destroySwapchain() {
     m_swapchain = VK_NULL_HANDLE;
 }
 
-void SwapchainPresenter::present(const std::vector<uint8_t>& rgba) {
+bool SwapchainPresenter::bgra() const { return isBgra(m_format); }
+
+void SwapchainPresenter::present(const vk::Buffer& pixels, const std::function<void(VkCommandBuffer)>& writePixels) {
     VkDevice device = m_context.device();
-    // The staging buffer in the surface's byte order.
-    std::vector<uint8_t> bytes(rgba);
-    if (isBgra(m_format))
-        for (size_t i = 0; i + 3 < bytes.size(); i += 4) std::swap(bytes[i], bytes[i + 2]);
-    m_staging.upload(bytes.data(), std::min<VkDeviceSize>(bytes.size(), m_staging.size()));
 
     uint32_t index = 0;
     VkResult acquired = vkAcquireNextImageKHR(device, m_swapchain, UINT64_MAX, m_acquired, VK_NULL_HANDLE, &index);
@@ -138,6 +132,7 @@ void SwapchainPresenter::present(const std::vector<uint8_t>& rgba) {
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     vk::check(vkBeginCommandBuffer(m_cmd, &begin), "beginning the presenter's commands");
+    writePixels(m_cmd);
     VkImageMemoryBarrier toCopy{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     toCopy.srcAccessMask = 0;
     toCopy.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -154,7 +149,7 @@ void SwapchainPresenter::present(const std::vector<uint8_t>& rgba) {
     region.bufferImageHeight = m_height;
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {std::min(m_width, m_extent.width), std::min(m_height, m_extent.height), 1};
-    vkCmdCopyBufferToImage(m_cmd, m_staging.handle(), m_images[index], VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    vkCmdCopyBufferToImage(m_cmd, pixels.handle(), m_images[index], VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
     VkImageMemoryBarrier toPresent = toCopy;
     toPresent.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toPresent.dstAccessMask = 0;
@@ -183,8 +178,8 @@ void SwapchainPresenter::present(const std::vector<uint8_t>& rgba) {
     presentInfo.pSwapchains = &m_swapchain;
     presentInfo.pImageIndices = &index;
     const VkResult presented = vkQueuePresentKHR(m_context.queue(), &presentInfo);
-    // The copy must be done before the staging buffer is written again (and before the next
-    // acquire reuses m_acquired).
+    // The copy must be done before the pixels are written again (and before the next acquire
+    // reuses m_acquired).
     vk::check(vkWaitForFences(device, 1, &m_fence, VK_TRUE, uint64_t(60e9)), "waiting for the window's copy");
     if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR) {
         vkDeviceWaitIdle(device);

@@ -1,10 +1,13 @@
-// Shows 8-bit sRGB images in the viewer's window through a Vulkan swapchain: each image is
-// written into a host-visible staging buffer and copied into the acquired swapchain image
-// (transfer only: no graphics pipeline), then presented (FIFO). The copy keeps the bytes, so the
-// sRGB encoding the PNG uses is what the screen gets, whether the surface format is UNORM or SRGB.
+// Shows 8-bit sRGB images in the viewer's window through a Vulkan swapchain: the caller records
+// the work that writes the image's bytes into a device buffer (view/display_pass.h), and the same
+// submission copies them into the acquired swapchain image (transfer only: no graphics pipeline)
+// before it is presented (FIFO). The copy keeps the bytes, so the sRGB encoding the PNG uses is
+// what the screen gets, whether the surface format is UNORM or SRGB; bgra() says which byte order
+// the surface wants.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -23,14 +26,17 @@ public:
     SwapchainPresenter(const SwapchainPresenter&) = delete;
     SwapchainPresenter& operator=(const SwapchainPresenter&) = delete;
 
-    // Presents `rgba` (width x height, R G B A bytes, top row first); waits until the copy is done.
-    void present(const std::vector<uint8_t>& rgba);
+    // Records `writePixels` (which leaves `pixels` visible to transfers: width x height words of
+    // R, G, B, A bytes, or B, G, R, A where bgra(), top row first), copies `pixels` into the
+    // acquired image and presents it; waits until the submission is done.
+    void present(const vk::Buffer& pixels, const std::function<void(VkCommandBuffer)>& writePixels);
+    bool bgra() const;
     uint64_t presented() const { return m_presented; }
 
 private:
     void createSwapchain();
     void destroySwapchain();
-    void release();  // everything but the staging buffer (which releases itself)
+    void release();
 
     vk::Context& m_context;
     VkSurfaceKHR m_surface;
@@ -44,7 +50,6 @@ private:
     VkCommandPool m_pool = VK_NULL_HANDLE;
     VkCommandBuffer m_cmd = VK_NULL_HANDLE;
     VkFence m_fence = VK_NULL_HANDLE;
-    vk::Buffer m_staging;
     uint64_t m_presented = 0;
 };
 

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <future>
 #include <thread>
 
 #include <fmt/format.h>
@@ -11,6 +12,7 @@
 #include "util/errors.h"
 #include "util/printable.h"
 #include "view/camera_controller.h"
+#include "view/display_pass.h"
 #include "view/event_script.h"
 #include "view/node_picking.h"
 #include "view/progressive_session.h"
@@ -28,19 +30,6 @@ namespace {
 constexpr double kFrameSeconds = 1.0 / 30.0;
 // With nothing left to render the loop waits this long for input.
 constexpr double kIdleSeconds = 0.05;
-
-// The RGBA bytes the window shows: the PNG's display transform, then the selection's outline.
-std::vector<uint8_t> displayBytes(const ImageRgb& image, const DisplaySettings& display) {
-    std::vector<uint8_t> rgba(size_t(image.width) * image.height * 4, 255);
-    for (size_t i = 0; i < size_t(image.width) * image.height; ++i) {
-        const auto rgb = toDisplayBytes(glm::vec3(image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]),
-                                        display);
-        rgba[4 * i] = rgb[0];
-        rgba[4 * i + 1] = rgb[1];
-        rgba[4 * i + 2] = rgb[2];
-    }
-    return rgba;
-}
 
 // EXR and PNG side by side, as `render` writes them (PATH may name either).
 void writeScreenshot(const std::filesystem::path& path, const ImageRgb& image, const ViewCommandOptions& options,
@@ -98,6 +87,8 @@ int runView(const ViewCommandOptions& options,
                                                                    : readEventScript(options.events);
     if (!render.statsJson.empty()) checkWritable(render.statsJson);
     requireDisplay();
+    // The display transform's lattice (a few hundred thousand evaluations) while the scene loads.
+    auto lattice = std::async(std::launch::async, displayLattice, render.display.view);
     const uint32_t width = render.frame.width, height = render.frame.height;
     const std::string sceneName = render.scene.filename().string();
     ViewWindow window(width, height, fmt::format("vkphoton view: {}", sceneName));
@@ -149,7 +140,8 @@ int runView(const ViewCommandOptions& options,
     session.setIntegrator(*integrators[integratorIndex].second);
     startup["integratorSeconds"] = secondsSince(start);  // its kernels (pipelines compiled on first use)
     SwapchainPresenter presenter(context, window.createSurface(context.instance()), width, height);
-    startup["presenterSeconds"] = secondsSince(start);  // the surface and swapchain
+    DisplayPass display(context, width, height, lattice.get());
+    startup["presenterSeconds"] = secondsSince(start);  // the surface, swapchain and display pass
     if (!render.quiet)
         fmt::print(stderr, "vkphoton view: {} on {}{}; press H for help\n", printable(render.scene.string()),
                    context.deviceName(), context.validationEnabled() ? " with validation" : "");
@@ -165,7 +157,6 @@ int runView(const ViewCommandOptions& options,
     ViewStats stats(start);
     GltfSceneSource::NodeOffsets offsets;
     int selected = -1;
-    std::vector<uint8_t> mask;
     bool playing = false;
     double animationTime = 0.0;
     bool animated = false;  // the scene shows the animation at animationTime (else the still pose)
@@ -173,7 +164,6 @@ int runView(const ViewCommandOptions& options,
     ScriptPlayer script(events);
     uint32_t shownSamples = UINT32_MAX;        // samples of the image on screen (UINT32_MAX: none yet)
     bool redraw = true;
-    ImageRgb image;
     uint32_t screenshots = 0;
     auto restartAt = Clock::now();  // when the current accumulation's samples began
     bool quit = false;
@@ -182,8 +172,9 @@ int runView(const ViewCommandOptions& options,
         return prepared(animated ? source.sceneAt(animationTime, &offsets) : source.stillScene(&offsets));
     };
     auto updateMask = [&]() {
-        mask = selected >= 0 ? nodeMask(session.scene(), session.arrays(), session.frame().gpuCamera, width, height, selected)
-                             : std::vector<uint8_t>();
+        display.setMask(selected >= 0 ? nodeMask(session.scene(), session.arrays(), session.frame().gpuCamera, width,
+                                                 height, selected)
+                                      : std::vector<uint8_t>());
         redraw = true;
     };
     // A change: restart the accumulation and record it.
@@ -249,7 +240,7 @@ int runView(const ViewCommandOptions& options,
             state.targetSamples = session.settings().frame.samplesPerPixel;
             state.refreshDue = session.refreshDue();
             actions = script.advance(state, [&](const ScriptEvent& e) {
-                writeScreenshot(e.path, image, options, session);
+                writeScreenshot(e.path, display.linearImage(), options, session);
                 if (!render.quiet)
                     fmt::print(stderr, "{}: wrote {} ({})\n", e.where, printable(e.path.string()),
                                session.inPreview() ? std::string("the preview: one path-traced sample")
@@ -302,7 +293,7 @@ int runView(const ViewCommandOptions& options,
                 case ViewKey::Screenshot: {
                     const std::filesystem::path path =
                         std::filesystem::path("out") / fmt::format("{}-view-{:04}.exr", render.scene.stem().string(), screenshots++);
-                    if (shownSamples != UINT32_MAX) writeScreenshot(path, image, options, session);
+                    if (shownSamples != UINT32_MAX) writeScreenshot(path, display.linearImage(), options, session);
                     if (!render.quiet) fmt::print(stderr, "wrote {}\n", printable(path.string()));
                     break;
                 }
@@ -353,10 +344,10 @@ int runView(const ViewCommandOptions& options,
         if (!(session.hasPreviewImage() && shownSamples == UINT32_MAX)) rendered = session.step(kFrameSeconds);
         if (session.preparing()) continue;  // the film is the preparation's until it is done
         if (rendered > 0 || shownSamples != session.samples() || redraw) {
-            image = session.image();
-            std::vector<uint8_t> rgba = displayBytes(image, render.display);
-            if (!mask.empty()) drawOutline(rgba, mask, width, height);
-            presenter.present(rgba);
+            presenter.present(display.pixels(), [&](VkCommandBuffer cmd) {
+                display.record(cmd, session.film().sums(), session.progressiveEstimates(), session.samples(),
+                               render.display.exposureScale(), presenter.bgra());
+            });
             shownSamples = session.samples();
             redraw = false;
             stats.presented(Clock::now(), session.inPreview());

@@ -87,5 +87,16 @@ struct SppmPixel {
 };
 STATIC_ASSERT_SIZE(SppmPixel, 32)
 
+// x where finite, else 0 (NaN fails the comparison).
+INLINE float finiteOrZero(float x) { return abs(x) <= 3.40282347e38f ? x : 0.0f; }
+
+// A pixel's progressive radiance estimate after `passes` photon passes (eq. 8 with N_e = passes
+// emitted batches): tau / (passes * pi * R^2); 0 where it is not finite (no radius yet). The
+// host's image (ProgressivePhotonIntegrator::finish) and the viewer's display kernel both use it.
+INLINE vec3 sppmRadiance(SppmPixel px, float passes) {
+    vec3 l = px.flux / (passes * kPi * px.radius2);
+    return vec3(finiteOrZero(l.x), finiteOrZero(l.y), finiteOrZero(l.z));
+}
+
 SHARED_END
 #endif
