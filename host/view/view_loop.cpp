@@ -26,8 +26,10 @@
 namespace vkp {
 namespace {
 
-// Each loop iteration renders about this long before it presents and polls the window again.
+// Each loop iteration aims to take this long: it renders for what is left of it after showing
+// the last image (at least kMinRenderSeconds), then presents and polls the window again.
 constexpr double kFrameSeconds = 1.0 / 30.0;
+constexpr double kMinRenderSeconds = 1.0 / 240.0;
 // With nothing left to render the loop waits this long for input.
 constexpr double kIdleSeconds = 0.05;
 
@@ -165,6 +167,7 @@ int runView(const ViewCommandOptions& options,
     uint32_t shownSamples = UINT32_MAX;        // samples of the image on screen (UINT32_MAX: none yet)
     bool redraw = true;
     uint32_t screenshots = 0;
+    double showSeconds = 0.0;  // what the last image took to show (display pass, copy, present)
     auto restartAt = Clock::now();  // when the current accumulation's samples began
     bool quit = false;
 
@@ -341,13 +344,15 @@ int runView(const ViewCommandOptions& options,
             restartAt = Clock::now();
         }
         // A preview is shown before the preparation that follows it starts.
-        if (!(session.hasPreviewImage() && shownSamples == UINT32_MAX)) rendered = session.step(kFrameSeconds);
+        if (!(session.hasPreviewImage() && shownSamples == UINT32_MAX)) rendered = session.step(std::max(kFrameSeconds - showSeconds, kMinRenderSeconds));
         if (session.preparing()) continue;  // the film is the preparation's until it is done
         if (rendered > 0 || shownSamples != session.samples() || redraw) {
+            const auto showStart = Clock::now();
             presenter.present(display.pixels(), [&](VkCommandBuffer cmd) {
                 display.record(cmd, session.film().sums(), session.progressiveEstimates(), session.samples(),
                                render.display.exposureScale(), presenter.bgra());
             });
+            showSeconds = secondsSince(showStart);
             shownSamples = session.samples();
             redraw = false;
             stats.presented(Clock::now(), session.inPreview());
