@@ -97,7 +97,7 @@ struct Material {
 struct Triangle {
     glm::vec3 p[3];                 // world-space positions
     glm::vec3 n[3];                 // world-space unit normals (computed when the mesh has none)
-    glm::vec2 uv[3];                // TEXCOORD_0, zero when absent
+    glm::vec2 uv[3]{};              // TEXCOORD_0, zero when absent
     uint32_t material = 0;          // index into Scene::materials
     glm::vec2 uv1[3]{};             // TEXCOORD_1, zero when absent
     glm::vec4 color[3]{glm::vec4(1.0f), glm::vec4(1.0f), glm::vec4(1.0f)};  // COLOR_0 (RGBA), 1 when absent
