@@ -94,6 +94,15 @@ void applyCoatNormal(inout BsdfParams p, SurfaceHit hit, vec3 t, vec3 b, vec3 n)
     p.flags |= kBsdfCoatNormal;
 }
 
+// KHR_materials_anisotropy's direction (SurfaceHit.anisotropyDirection) into the BSDF, in the
+// shading frame (t, b, n): the specular lobe is stretched along it.
+void applyAnisotropy(inout BsdfParams p, SurfaceHit hit, vec3 t, vec3 b) {
+    if (!(p.anisotropy > 0.0f)) return;
+    vec2 d = vec2(dot(hit.anisotropyDirection, t), dot(hit.anisotropyDirection, b));
+    float len = length(d);
+    p.anisotropyDirection = len > 1.0e-6f ? d / len : vec2(1.0f, 0.0f);
+}
+
 // Follows the ray to the closest surface and sets up the vertex there. Returns false when the
 // ray leaves the scene: v.distance is then kInfinity and the escape direction is ray.dir, where
 // light from an environment will be looked up.
@@ -120,6 +129,7 @@ bool traceVertex(Ray ray, out PathVertex v) {
     v.n = v.hit.frontFace ? v.hit.shadingNormal : -v.hit.shadingNormal;
     shadingFrame(v.n, -ray.dir, v.t, v.b, v.wo);
     applyCoatNormal(v.bsdf, v.hit, v.t, v.b, v.n);
+    applyAnisotropy(v.bsdf, v.hit, v.t, v.b);
     return true;
 }
 

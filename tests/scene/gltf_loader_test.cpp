@@ -151,7 +151,7 @@ TEST_F(GltfLoader, SpecularClearcoatSheenAndUnrenderedExtensions) {
                          {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.25}, {"specularColorFactor", {2, 1, 0.5}}}},
                                          {"KHR_materials_clearcoat", {{"clearcoatFactor", 0.75}, {"clearcoatRoughnessFactor", 0.3}}},
                                          {"KHR_materials_sheen", {{"sheenColorFactor", {0.5, 0.4, 0.3}}, {"sheenRoughnessFactor", 0.6}}},
-                                         {"KHR_materials_iridescence", {{"iridescenceFactor", 1}}}}}}};
+                                         {"KHR_materials_dispersion", {{"dispersion", 1}}}}}}};
     testing::internal::CaptureStderr();
     const Scene s = loadGltf(write(doc));
     std::istringstream stderrLines(testing::internal::GetCapturedStderr());
@@ -166,7 +166,7 @@ TEST_F(GltfLoader, SpecularClearcoatSheenAndUnrenderedExtensions) {
     EXPECT_FLOAT_EQ(m.sheenRoughness, 0.6f);
     int named = 0;
     for (const std::string& w : warnings)
-        if (w.find("fancy") != std::string::npos && w.find("KHR_materials_iridescence") != std::string::npos) ++named;
+        if (w.find("fancy") != std::string::npos && w.find("KHR_materials_dispersion") != std::string::npos) ++named;
     EXPECT_EQ(named, 1);
     // Without the extensions: the glTF defaults (full specular, no coat, no sheen).
     const Material d;
