@@ -67,6 +67,7 @@ gpu::GpuMaterial toGpu(const Material& m, bool emitterDoubleSided) {
     g.iridescenceThicknessMax = m.iridescenceThicknessMax;
     g.iridescenceTexture = m.iridescenceTexture;
     g.iridescenceThicknessTexture = m.iridescenceThicknessTexture;
+    g.dispersion = m.dispersion;
     return g;
 }
 

@@ -262,10 +262,8 @@ void GltfMaterials::readExtensions(const tinygltf::Material& source, const std::
         m.iridescenceThicknessTexture = extensionTexture(*e, "iridescenceThicknessTexture", false, iridescence);
         if (m.iridescenceIor < 1.0f) fail(iridescence + ".iridescenceIor", fmt::format("{} is below 1", m.iridescenceIor));
     }
-    // Not rendered: one line per material, naming it.
-    if (extension(source.extensions, "KHR_materials_dispersion"))
-        m_warn(fmt::format("{} ({}): KHR_materials_dispersion is not rendered (one index of refraction for all wavelengths)",
-                           element, m.name));
+    if (const auto* e = extension(source.extensions, "KHR_materials_dispersion"))
+        m.dispersion = static_cast<float>(numberOr(*e, "dispersion", 0.0, name("KHR_materials_dispersion")));
     if (const auto* e = extension(source.extensions, "KHR_materials_volume")) {
         const std::string volume = name("KHR_materials_volume");
         m.thickness = static_cast<float>(numberOr(*e, "thicknessFactor", 0.0, volume));
@@ -283,7 +281,7 @@ void GltfMaterials::validate(const std::string& element, Material& m) {
                             m.specular, m.specularColor.x, m.specularColor.y, m.specularColor.z,
                             m.sheenColor.x, m.sheenColor.y, m.sheenColor.z, m.sheenRoughness,
                             m.clearcoat, m.clearcoatRoughness, m.anisotropy, m.iridescence, m.iridescenceIor,
-                            m.iridescenceThicknessMin, m.iridescenceThicknessMax};
+                            m.iridescenceThicknessMin, m.iridescenceThicknessMax, m.dispersion};
     for (const float v : values)
         if (!std::isfinite(v) || v < 0.0f) fail(element, "material factors must be finite and non-negative");
     if (glm::any(glm::greaterThan(m.emissive, glm::vec3(float(kMaxRadiometric)))))

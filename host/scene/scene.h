@@ -100,6 +100,7 @@ struct Material {
     float iridescenceThicknessMax = 400.0f;
     int iridescenceTexture = -1;             // R channel multiplies the factor
     int iridescenceThicknessTexture = -1;    // G channel: from minimum (0) to maximum (1)
+    float dispersion = 0.0f;                 // KHR_materials_dispersion: 20 / Abbe number (0: none)
     std::vector<std::string> extensions;  // the glTF extensions the material and its textures name
 };
 

@@ -109,7 +109,7 @@ struct GpuMaterial {
     int normalTexture;      // tangent-space normal map, -1 when absent
     float normalScale;
     float alphaCutoff;
-    uint pad1;
+    float dispersion;       // KHR_materials_dispersion: 20 / Abbe number; zero: one index for all wavelengths
     // KHR_materials_specular / sheen / clearcoat (docs/materials.md); textures -1 when absent.
     vec3 specularColor;     // specularColorFactor (F0 colour of the dielectric)
     float specular;         // specularFactor (dielectric specular weight and F90)
