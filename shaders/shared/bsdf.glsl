@@ -406,6 +406,36 @@ INLINE float pdfBsdf(BsdfParams p, vec3 wo, vec3 wi) {
     return pdf * (1.0f - p.transmission);
 }
 
+// The smooth dielectric layer under KHR_materials_iridescence's film, seen from outside: the
+// film's Fresnel (mixed by its weight into the exact one) is a colour, so reflection is chosen with
+// the mean of its channels and each branch weighs F / P or (1 - F) / (1 - P) (the refracted branch
+// tinted and eta-scaled as sampleDielectric's).
+INLINE BsdfSample sampleDielectricFilm(BsdfParams p, vec3 wo, float eta, bool radiance, vec2 u) {
+    BsdfSample s;
+    s.pdf = 0.0f;
+    vec3 f = clamp(mix(vec3(fresnelDielectric(wo.z, eta)),
+                       thinFilmFresnel(1.0f, p.iridescenceIor, wo.z, p.iridescenceThickness, vec3(dielectricF0(p.ior))),
+                       iridescenceWeight(p)),
+                   vec3(0.0f), vec3(1.0f));
+    float pReflect = clamp((f.x + f.y + f.z) * (1.0f / 3.0f), 1.0e-4f, 1.0f - 1.0e-4f);
+    if (u.x < pReflect) {
+        s.wi = vec3(-wo.x, -wo.y, wo.z);
+        s.weight = f / pReflect;
+        s.lobe = kLobeDelta;
+        return s;
+    }
+    s.lobe = kLobeDelta | kLobeTransmission;
+    s.weight = p.baseColor * (vec3(1.0f) - f) / (1.0f - pReflect);
+    if (p.thinWalled != 0u) {
+        s.wi = -wo;
+        return s;
+    }
+    float cosT = sqrt(max(0.0f, 1.0f - eta * eta * (1.0f - wo.z * wo.z)));
+    s.wi = normalize(vec3(-eta * wo.x, -eta * wo.y, -cosT));
+    if (radiance) s.weight = s.weight * (eta * eta);
+    return s;
+}
+
 // Samples the smooth dielectric layer. `entering`: wo is on the outside of the surface.
 // `radiance`: scale refracted throughput by eta^2 (camera paths), not for photons (importance).
 INLINE BsdfSample sampleDielectric(BsdfParams p, vec3 wo, bool entering, bool radiance, vec2 u) {
@@ -414,6 +444,8 @@ INLINE BsdfSample sampleDielectric(BsdfParams p, vec3 wo, bool entering, bool ra
     float ior = max(p.ior, 1.0f);
     float eta = entering ? 1.0f / ior : ior;
     if (p.thinWalled != 0u) eta = 1.0f / ior;
+    if (entering && iridescenceWeight(p) > 0.0f && !iorIsInfinite(p) && ior > 1.0f)
+        return sampleDielectricFilm(p, wo, eta, radiance, u);
     float fr = iorIsInfinite(p) ? 1.0f : fresnelDielectric(wo.z, eta);  // ior 0: an infinite ior reflects all
     if (u.x < fr) {
         s.wi = vec3(-wo.x, -wo.y, wo.z);

@@ -65,6 +65,36 @@ TEST(BsdfIridescence, FilmReplacesTheSpecularFresnel) {
     EXPECT_GT(std::abs(film.x - film.z), 0.01f);  // coloured
 }
 
+// Smooth glass under a film, seen from outside: reflection carries the film's Fresnel and
+// refraction the rest, tinted (the means of the sample weights over both branches, 1 %); from
+// inside the film is not seen (the plain layer's bits).
+TEST(BsdfIridescence, SmoothGlassReflectsTheFilmsFresnel) {
+    BsdfParams glass = makeBsdfParams(glm::vec3(0.9f, 0.8f, 0.7f), 0.0f, 0.0f);
+    glass.transmission = 1.0f;
+    glass.iridescence = 1.0f;
+    glass.iridescenceIor = 1.3f;
+    glass.iridescenceThickness = 400.0f;
+    const glm::vec3 wo = direction(0.7f, 0.4f);
+    const glm::vec3 film = thinFilmFresnel(1.0f, 1.3f, 0.7f, 400.0f, glm::vec3(dielectricF0(1.5f)));
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<float> u(0.0f, kOneMinusEpsilon);
+    glm::dvec3 reflected(0.0), refracted(0.0);
+    constexpr int kSamples = 400000;
+    for (int i = 0; i < kSamples; ++i) {
+        const BsdfSample s = sampleBsdf(glass, wo, true, false, glm::vec3(u(rng), u(rng), u(rng)));
+        ((s.lobe & kLobeTransmission) != 0u ? refracted : reflected) += glm::dvec3(s.weight);
+    }
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(reflected[c] / kSamples, film[c], 0.01 * film[c]) << c;
+        EXPECT_NEAR(refracted[c] / kSamples, glass.baseColor[c] * (1.0f - film[c]), 0.01) << c;
+    }
+    BsdfParams plain = glass;
+    plain.iridescence = 0.0f;
+    const glm::vec3 r(0.3f, 0.6f, 0.2f);
+    const BsdfSample a = sampleBsdf(glass, wo, false, true, r), b = sampleBsdf(plain, wo, false, true, r);
+    EXPECT_TRUE(sameBits(a.wi, b.wi) && sameBits(a.weight, b.weight));
+}
+
 // CIE 1931 2-degree matching function y-bar, by the multi-lobe fit of Wyman, Sloan & Shirley 2013,
 // "Simple Analytic Approximations to the CIE XYZ Color Matching Functions" (JCGT 2(2)): another fit
 // than the one thinFilmSensitivity transforms.
