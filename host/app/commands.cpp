@@ -214,6 +214,9 @@ int runRender(const RenderCommandOptions& options, const IntegratorConfig& confi
     if (!options.statsJson.empty()) {
         nlohmann::json json = stats.toJson();
         json["meanRadiance"] = meanRadiance(result.image);
+        const DisplayStatistics shown = displayStatistics(result.image, display);
+        json["display"]["meanValue"] = shown.mean;            // the PNG's mean 8-bit value / 255
+        json["display"]["saturatedPixels"] = shown.saturated;  // share of its pixels with a channel at 255
         writeTextAtomically(options.statsJson, json.dump(2) + "\n");
     }
     for (const std::string& warning : stats.warnings()) fmt::print(stderr, "warning: {}\n", warning);

@@ -58,6 +58,16 @@ gpu::GpuMaterial toGpu(const Material& m, bool emitterDoubleSided) {
     g.clearcoatRoughnessTexture = m.clearcoatRoughnessTexture;
     g.clearcoatNormalTexture = m.clearcoatNormalTexture;
     g.clearcoatNormalScale = m.clearcoatNormalScale;
+    g.anisotropy = m.anisotropy;
+    g.anisotropyTexture = m.anisotropyTexture;
+    g.anisotropyRotation = glm::vec2(std::cos(m.anisotropyRotation), std::sin(m.anisotropyRotation));
+    g.iridescence = m.iridescence;
+    g.iridescenceIor = m.iridescenceIor;
+    g.iridescenceThicknessMin = m.iridescenceThicknessMin;
+    g.iridescenceThicknessMax = m.iridescenceThicknessMax;
+    g.iridescenceTexture = m.iridescenceTexture;
+    g.iridescenceThicknessTexture = m.iridescenceThicknessTexture;
+    g.dispersion = m.dispersion;
     return g;
 }
 

@@ -33,6 +33,22 @@ void writePng(const std::filesystem::path& path, const ImageRgb& image, const Di
     writeBytesAtomically(path, pngBytes(path, image, display));
 }
 
+DisplayStatistics displayStatistics(const ImageRgb& image, const DisplaySettings& display) {
+    DisplayStatistics s;
+    const size_t pixels = image.pixels.size() / 3;
+    if (pixels == 0) return s;
+    double sum = 0.0;
+    size_t saturated = 0;
+    for (size_t i = 0; i < 3 * pixels; i += 3) {
+        const auto rgb = toDisplayBytes(glm::vec3(image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]), display);
+        sum += double(rgb[0]) + rgb[1] + rgb[2];
+        saturated += rgb[0] == 255 || rgb[1] == 255 || rgb[2] == 255;
+    }
+    s.mean = sum / (3.0 * 255.0 * double(pixels));
+    s.saturated = double(saturated) / double(pixels);
+    return s;
+}
+
 std::string pngBytes(const std::filesystem::path& path, const ImageRgb& image, const DisplaySettings& display) {
     display.check();
     if (!isWellFormed(image))

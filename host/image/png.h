@@ -16,4 +16,12 @@ void writePng(const std::filesystem::path& path, const ImageRgb& image, const Di
 // The bytes writePng would write (`path` only names it in messages).
 std::string pngBytes(const std::filesystem::path& path, const ImageRgb& image, const DisplaySettings& display = {});
 
+// What the PNG shows, in numbers: the mean of its 8-bit values over 255 (0 black, 1 white), and
+// the share of pixels with a channel at 255 (blown out).
+struct DisplayStatistics {
+    double mean = 0.0;
+    double saturated = 0.0;
+};
+DisplayStatistics displayStatistics(const ImageRgb& image, const DisplaySettings& display = {});
+
 }  // namespace vkp

@@ -551,11 +551,14 @@ private:
         const Material& m = m_scene.materials[material];
         // Tangents for the normal maps: the base's and the coat's (KHR_materials_clearcoat), which
         // share the TANGENT attribute or the tangents generated from the base map's TEXCOORD set
-        // (else the coat map's).
+        // (else the coat map's); and for KHR_materials_anisotropy, whose direction is given in
+        // tangent space (generated from its texture's set, else TEXCOORD_0).
         const int tangentTexture = m.normalTexture >= 0 ? m.normalTexture
-                                   : m.clearcoat > 0.0f ? m.clearcoatNormalTexture
-                                                        : -1;
-        if (tangentTexture >= 0 && attribute("TANGENT") >= 0) {
+                                   : m.clearcoat > 0.0f && m.clearcoatNormalTexture >= 0 ? m.clearcoatNormalTexture
+                                                                                         : m.anisotropyTexture;
+        const bool wantsTangents = tangentTexture >= 0 || m.anisotropy > 0.0f;
+        const int tangentSet = tangentTexture >= 0 ? m_scene.textureViews[tangentTexture].texCoord : 0;
+        if (wantsTangents && attribute("TANGENT") >= 0) {
             v.tangents = readVec4Accessor(m_model, attribute("TANGENT"));
             if (v.tangents.size() != v.positions.size()) fail(element, "TANGENT and POSITION counts differ");
             for (size_t i = 0; i < v.tangents.size(); ++i)
@@ -563,9 +566,8 @@ private:
                     fail(element, fmt::format("TANGENT {} is NaN or infinite (accessors[{}])", i, attribute("TANGENT")));
         }
         morph(primitive, v, element);
-        if (tangentTexture >= 0 && attribute("TANGENT") < 0)  // from the morphed shape; the skin moves them
-            v.tangents = generateTangents(v.positions, v.normals, v.uvs[m_scene.textureViews[tangentTexture].texCoord],
-                                          indices);
+        if (wantsTangents && attribute("TANGENT") < 0)  // from the morphed shape; the skin moves them
+            v.tangents = generateTangents(v.positions, v.normals, v.uvs[tangentSet], indices);
         skin(primitive, v, element);
         if ((m_target ? m_target->triangles : m_scene.triangles).size() + indices.size() / 3 > m_limits.maxTriangles)
             fail(element, fmt::format("the scene exceeds the limit of {} triangles", m_limits.maxTriangles));
@@ -608,7 +610,8 @@ private:
         for (const int view : {m.baseColorTexture, m.metallicRoughnessTexture, m.emissiveTexture, m.normalTexture,
                                m.specularTexture, m.specularColorTexture, m.sheenColorTexture, m.sheenRoughnessTexture,
                                m.clearcoatTexture, m.clearcoatRoughnessTexture, m.transmissionTexture,
-                               m.clearcoatNormalTexture}) {
+                               m.clearcoatNormalTexture, m.anisotropyTexture, m.iridescenceTexture,
+                               m.iridescenceThicknessTexture}) {
             if (view < 0) continue;
             const int slot = m_scene.textureViews[view].texCoord, set = m_texCoordSetOfView[view];
             if (set > 0 && v.uvs[slot].empty())

@@ -244,13 +244,26 @@ void GltfMaterials::readExtensions(const tinygltf::Material& source, const std::
     }
     if (const auto* e = extension(source.extensions, "KHR_materials_pbrSpecularGlossiness"))
         readSpecularGlossiness(*e, name("KHR_materials_pbrSpecularGlossiness"), m);
-    // Not rendered: one line per material, naming it.
-    for (const char* ext : {"KHR_materials_anisotropy", "KHR_materials_iridescence", "KHR_materials_dispersion"})
-        if (extension(source.extensions, ext))
-            m_warn(fmt::format("{} ({}): {} is not rendered ({})", element, m.name, ext,
-                               std::string(ext).find("aniso") != std::string::npos ? "isotropic GGX instead"
-                               : std::string(ext).find("irid") != std::string::npos ? "no thin-film interference"
-                                                                                     : "one index of refraction for all wavelengths"));
+    if (const auto* e = extension(source.extensions, "KHR_materials_anisotropy")) {
+        const std::string anisotropy = name("KHR_materials_anisotropy");
+        m.anisotropy = static_cast<float>(numberOr(*e, "anisotropyStrength", 0.0, anisotropy));
+        m.anisotropyRotation = static_cast<float>(numberOr(*e, "anisotropyRotation", 0.0, anisotropy));
+        m.anisotropyTexture = extensionTexture(*e, "anisotropyTexture", false, anisotropy);
+        if (!std::isfinite(m.anisotropyRotation) || std::abs(m.anisotropyRotation) > 1.0e6f)
+            fail(anisotropy + ".anisotropyRotation", "must be a finite number");
+    }
+    if (const auto* e = extension(source.extensions, "KHR_materials_iridescence")) {
+        const std::string iridescence = name("KHR_materials_iridescence");
+        m.iridescence = static_cast<float>(numberOr(*e, "iridescenceFactor", 0.0, iridescence));
+        m.iridescenceIor = static_cast<float>(numberOr(*e, "iridescenceIor", 1.3, iridescence));
+        m.iridescenceThicknessMin = static_cast<float>(numberOr(*e, "iridescenceThicknessMinimum", 100.0, iridescence));
+        m.iridescenceThicknessMax = static_cast<float>(numberOr(*e, "iridescenceThicknessMaximum", 400.0, iridescence));
+        m.iridescenceTexture = extensionTexture(*e, "iridescenceTexture", false, iridescence);
+        m.iridescenceThicknessTexture = extensionTexture(*e, "iridescenceThicknessTexture", false, iridescence);
+        if (m.iridescenceIor < 1.0f) fail(iridescence + ".iridescenceIor", fmt::format("{} is below 1", m.iridescenceIor));
+    }
+    if (const auto* e = extension(source.extensions, "KHR_materials_dispersion"))
+        m.dispersion = static_cast<float>(numberOr(*e, "dispersion", 0.0, name("KHR_materials_dispersion")));
     if (const auto* e = extension(source.extensions, "KHR_materials_volume")) {
         const std::string volume = name("KHR_materials_volume");
         m.thickness = static_cast<float>(numberOr(*e, "thicknessFactor", 0.0, volume));
@@ -267,7 +280,8 @@ void GltfMaterials::validate(const std::string& element, Material& m) {
                             m.attenuationColor.x, m.attenuationColor.y, m.attenuationColor.z,
                             m.specular, m.specularColor.x, m.specularColor.y, m.specularColor.z,
                             m.sheenColor.x, m.sheenColor.y, m.sheenColor.z, m.sheenRoughness,
-                            m.clearcoat, m.clearcoatRoughness};
+                            m.clearcoat, m.clearcoatRoughness, m.anisotropy, m.iridescence, m.iridescenceIor,
+                            m.iridescenceThicknessMin, m.iridescenceThicknessMax, m.dispersion};
     for (const float v : values)
         if (!std::isfinite(v) || v < 0.0f) fail(element, "material factors must be finite and non-negative");
     if (glm::any(glm::greaterThan(m.emissive, glm::vec3(float(kMaxRadiometric)))))
@@ -292,9 +306,11 @@ void GltfMaterials::validate(const std::string& element, Material& m) {
     clampUnit(m.sheenRoughness);
     clampUnit(m.clearcoat);
     clampUnit(m.clearcoatRoughness);
+    clampUnit(m.anisotropy);
+    clampUnit(m.iridescence);
     if (clamped)
         m_warn(element + ": factors above 1 (base colour, metallic, roughness, transmission, attenuation colour, specular, "
-                         "sheen, clearcoat) clamped to 1");
+                         "sheen, clearcoat, anisotropy, iridescence) clamped to 1");
 }
 
 int GltfMaterials::extensionTexture(const tinygltf::Value& object, const char* key, bool srgb,

@@ -91,6 +91,16 @@ struct Material {
     int clearcoatRoughnessTexture = -1;  // G channel
     int clearcoatNormalTexture = -1;     // tangent-space normal of the coat (RGB), as normalTexture
     float clearcoatNormalScale = 1.0f;   // clearcoatNormalTexture.scale
+    float anisotropy = 0.0f;             // KHR_materials_anisotropy: anisotropyStrength (0: isotropic)
+    float anisotropyRotation = 0.0f;     // radians, counter-clockwise from the tangent
+    int anisotropyTexture = -1;          // RG: direction in tangent space, B: strength (linear)
+    float iridescence = 0.0f;            // KHR_materials_iridescence: iridescenceFactor (0: no film)
+    float iridescenceIor = 1.3f;
+    float iridescenceThicknessMin = 100.0f;  // nanometres
+    float iridescenceThicknessMax = 400.0f;
+    int iridescenceTexture = -1;             // R channel multiplies the factor
+    int iridescenceThicknessTexture = -1;    // G channel: from minimum (0) to maximum (1)
+    float dispersion = 0.0f;                 // KHR_materials_dispersion: 20 / Abbe number (0: none)
     std::vector<std::string> extensions;  // the glTF extensions the material and its textures name
 };
 

@@ -24,6 +24,7 @@ VisibleSurface visibleSurface(GpuVisiblePoint vp) {
     s.n = decodeOctahedral(vp.shadingNormal);
     shadingFrame(s.n, decodeOctahedral(vp.wo), s.t, s.b, s.wo);  // as traceVertex set it up
     applyCoatNormal(s.bsdf, hit, s.t, s.b, s.n);
+    applyAnisotropy(s.bsdf, hit, s.t, s.b);
     return s;
 }
 

@@ -104,7 +104,7 @@ void findVisiblePoint() {
         if (depth == params.maxSpecularDepth) break;
         // A polished metal or rough glass: direct light by next-event estimation (MIS), then on by
         // its lobe.
-        if (!specularIsDelta(v.bsdf))
+        if (!specularLobeIsDelta(v.bsdf))
             radiance += throughput * directLight(v, params.lightCount, true, skip, rng);
         vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
         BsdfSample bs = sampleVertexBsdf(v, true, u);

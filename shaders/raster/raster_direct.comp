@@ -53,7 +53,7 @@ void rasterDirectLight() {
         if ((through || params.alphaTested != 0u) && !lightVisible(v.hit.position, v.hit.geometricNormal, ls)) continue;
         sum += f * abs(wi.z) * ls.radiance;
     }
-    direct[pixel] += vec4(sum, 0.0f);
+    direct[pixel] += vec4(sum * v.transmittance, 0.0f);  // a dispersive surface's spectral weight (camera rays cross no medium)
 }
 
 void main() {

@@ -41,7 +41,7 @@ void main() {
                 break;
             }
             if (s == 0u && bounce == 0u) depth = dot(v.hit.position - params.camera.position, params.camera.forward);
-            bool onlyDelta = specularIsDelta(v.bsdf) && (v.bsdf.metallic >= 1.0f || v.bsdf.transmission >= 1.0f);
+            bool onlyDelta = (specularLobeIsDelta(v.bsdf) && v.bsdf.metallic >= 1.0f) || (specularIsDelta(v.bsdf) && v.bsdf.transmission >= 1.0f);
             if (!onlyDelta || bounce == params.maxSpecularDepth) {
                 albedoSum += v.bsdf.baseColor;
                 normalSum += v.n;

@@ -21,6 +21,16 @@ void materialExtensionsAt(GpuMaterial m, MaterialTexels texels, inout BsdfParams
     p.clearcoat = clamp(p.clearcoat, 0.0f, 1.0f);
     p.clearcoatRoughness = clamp(p.clearcoatRoughness, 0.0f, 1.0f);
     p.sheenRoughness = clamp(p.sheenRoughness, 0.0f, 1.0f);
+    // KHR_materials_anisotropy: the texture's B scales the strength (its RG direction is the
+    // surface's, SurfaceHit.anisotropyDirection, put into the frame by applyAnisotropy).
+    p.anisotropy = clamp(m.anisotropy * texels.anisotropy.b, 0.0f, 1.0f);
+    // KHR_materials_iridescence: the factor times R; the thickness from minimum to maximum by G,
+    // the maximum without a thickness texture.
+    p.iridescence = clamp(m.iridescence * texels.iridescence.r, 0.0f, 1.0f);
+    p.iridescenceIor = m.iridescenceIor;
+    p.iridescenceThickness = m.iridescenceThicknessTexture >= 0
+                                 ? mix(m.iridescenceThicknessMin, m.iridescenceThicknessMax, texels.iridescenceThickness.g)
+                                 : m.iridescenceThicknessMax;
     if ((m.flags & kMaterialNoEnergyCompensation) != 0u) p.flags |= kBsdfNoEnergyCompensation;
 }
 

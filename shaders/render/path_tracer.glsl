@@ -109,7 +109,7 @@ void prepareGuide(PathVertex v) {
     vertexGuide.guided = false;
     vertexGuide.mix = guide.mix;
     vertexGuide.irradiance = vec4(0.0f);
-    if (guide.mix <= 0.0f || specularIsDelta(v.bsdf) || v.bsdf.transmission > 0.0f || !storesPhotons(v.bsdf)) return;
+    if (guide.mix <= 0.0f || specularLobeIsDelta(v.bsdf) || v.bsdf.transmission > 0.0f || !storesPhotons(v.bsdf)) return;
     uint gm = guide.gridSize & 0xffu;
     uint gn = (guide.gridSize >> 8u) & 0xffu;
     vec3 gt = v.t;
@@ -188,7 +188,7 @@ BsdfSample sampleGuided(PathVertex v, vec3 u, float uSelect) {
 // Radiance the vertex reflects towards wo per unit of irradiance, for the roulette's estimate: the
 // diffuse part, and a non-delta specular lobe as if it spread its Fresnel reflectance evenly.
 vec3 rouletteReflectance(BsdfParams bsdf, vec3 wo) {
-    vec3 specular = specularIsDelta(bsdf) ? vec3(0.0f) : specularFresnel(bsdf, wo.z) * (kInvPi * (1.0f - bsdf.transmission));
+    vec3 specular = specularLobeIsDelta(bsdf) ? vec3(0.0f) : specularFresnel(bsdf, wo.z) * (kInvPi * (1.0f - bsdf.transmission));
     return diffuseReflectance(bsdf, wo) + specular;
 }
 #endif

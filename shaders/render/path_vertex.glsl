@@ -18,6 +18,7 @@
 #define VKP_PATH_VERTEX_GLSL
 
 #include "render/scene_access.glsl"
+#include "shared/dispersion.glsl"
 
 // A ray between two path vertices and the medium it travels through.
 struct Ray {
@@ -28,6 +29,7 @@ struct Ray {
     bool camera;        // a camera ray (primary visibility): skips culled back faces (traceClosest)
     float coneWidth;    // the ray cone (texture level of detail, sampleTexture): its width at the
     float coneSpread;   // origin and its growth per unit distance; both 0: textures at level 0
+    float wavelength;   // nm, once the path met a dispersive surface (shared/dispersion.glsl); 0: white
 };
 
 // A ray that starts outside every solid (lights, reflections off a visible point).
@@ -39,6 +41,7 @@ Ray rayFrom(vec3 origin, vec3 dir) {
     ray.camera = false;
     ray.coneWidth = 0.0f;
     ray.coneSpread = 0.0f;
+    ray.wavelength = 0.0f;
     return ray;
 }
 
@@ -74,6 +77,7 @@ struct PathVertex {
     uint triangle;        // the hit triangle (BVH order) and its barycentrics (b1, b2)
     vec2 barycentrics;
     float coneWidth;      // the ray cone's width at the hit (Ray.coneWidth)
+    float wavelength;     // the path's wavelength after this vertex (Ray.wavelength); 0: white
 };
 
 // The shading frame around n (world space) and the local outgoing direction woWorld in it. An
@@ -92,6 +96,33 @@ void applyCoatNormal(inout BsdfParams p, SurfaceHit hit, vec3 t, vec3 b, vec3 n)
     vec3 coat = dot(n, hit.shadingNormal) < 0.0f ? -hit.coatNormal : hit.coatNormal;
     p.clearcoatNormal = normalize(toLocal(coat, t, b, n));
     p.flags |= kBsdfCoatNormal;
+}
+
+// KHR_materials_anisotropy's direction (SurfaceHit.anisotropyDirection) into the BSDF, in the
+// shading frame (t, b, n): the specular lobe is stretched along it.
+void applyAnisotropy(inout BsdfParams p, SurfaceHit hit, vec3 t, vec3 b) {
+    if (!(p.anisotropy > 0.0f)) return;
+    vec2 d = vec2(dot(hit.anisotropyDirection, t), dot(hit.anisotropyDirection, b));
+    float len = length(d);
+    p.anisotropyDirection = len > 1.0e-6f ? d / len : vec2(1.0f, 0.0f);
+}
+
+// KHR_materials_dispersion at a transmissive solid (thin walls bend no light): a white path takes one wavelength here, drawn
+// uniformly from a hash of the ray (a new, deterministic random number), and its throughput the
+// weight c(lambda) / pdf(lambda) through v.transmittance, which every kernel multiplies in right
+// after traceVertex; a path that has a wavelength keeps it. The layer's index becomes the one at the
+// path's wavelength. Non-dispersive surfaces leave paths as they are.
+void applyDispersion(inout PathVertex v, Ray ray) {
+    v.wavelength = ray.wavelength;
+    if (!(v.material.dispersion > 0.0f) || !(v.bsdf.transmission > 0.0f) || v.bsdf.thinWalled != 0u) return;
+    if (v.wavelength == 0.0f) {
+        uint h = pcgHash(floatBitsToUint(ray.origin.x) ^ pcgHash(floatBitsToUint(ray.origin.y) ^
+                 pcgHash(floatBitsToUint(ray.origin.z) ^ pcgHash(floatBitsToUint(ray.dir.x) ^
+                 pcgHash(floatBitsToUint(ray.dir.y) ^ pcgHash(floatBitsToUint(ray.dir.z)))))));
+        v.wavelength = sampleWavelength(float(h >> 8u) * (1.0f / 16777216.0f));
+        v.transmittance *= spectralWeight(v.wavelength);
+    }
+    v.bsdf.ior = dispersiveIor(v.bsdf.ior, v.material.dispersion, v.wavelength);
 }
 
 // Follows the ray to the closest surface and sets up the vertex there. Returns false when the
@@ -120,6 +151,8 @@ bool traceVertex(Ray ray, out PathVertex v) {
     v.n = v.hit.frontFace ? v.hit.shadingNormal : -v.hit.shadingNormal;
     shadingFrame(v.n, -ray.dir, v.t, v.b, v.wo);
     applyCoatNormal(v.bsdf, v.hit, v.t, v.b, v.n);
+    applyAnisotropy(v.bsdf, v.hit, v.t, v.b);
+    applyDispersion(v, ray);
     return true;
 }
 
@@ -218,6 +251,7 @@ void spawnRay(PathVertex v, BsdfSample bs, inout Ray ray) {
     ray.origin = offsetRayOrigin(v.hit.position, v.hit.geometricNormal, ray.dir);
     if ((bs.lobe & kLobeTransmission) != 0u && (v.material.flags & kMaterialThinWalled) == 0u)
         ray.mediumSigma = v.hit.frontFace ? v.material.attenuationCoeff : vec3(0.0f);
+    ray.wavelength = v.wavelength;
 }
 
 #endif

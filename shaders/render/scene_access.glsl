@@ -150,6 +150,9 @@ struct MaterialTexels {
     vec4 clearcoatRoughness;
     vec4 transmission;
     vec4 clearcoatNormal;
+    vec4 anisotropy;
+    vec4 iridescence;
+    vec4 iridescenceThickness;
 };
 
 // Texture slots of a material (bits of sampleMaterialTextures' `slots`).
@@ -165,7 +168,10 @@ const uint kMaterialTextureClearcoat = 8u;
 const uint kMaterialTextureClearcoatRoughness = 9u;
 const uint kMaterialTextureTransmission = 10u;
 const uint kMaterialTextureClearcoatNormal = 11u;
-const uint kMaterialTextureSlots = 12u;
+const uint kMaterialTextureAnisotropy = 12u;
+const uint kMaterialTextureIridescence = 13u;
+const uint kMaterialTextureIridescenceThickness = 14u;
+const uint kMaterialTextureSlots = 15u;
 
 int materialTexture(GpuMaterial m, uint slot) {
     switch (slot) {
@@ -180,6 +186,9 @@ int materialTexture(GpuMaterial m, uint slot) {
     case kMaterialTextureClearcoat: return m.clearcoatTexture;
     case kMaterialTextureClearcoatRoughness: return m.clearcoatRoughnessTexture;
     case kMaterialTextureClearcoatNormal: return m.clearcoatNormalTexture;
+    case kMaterialTextureAnisotropy: return m.anisotropyTexture;
+    case kMaterialTextureIridescence: return m.iridescenceTexture;
+    case kMaterialTextureIridescenceThickness: return m.iridescenceThicknessTexture;
     default: return m.transmissionTexture;
     }
 }
@@ -193,6 +202,9 @@ uint materialTextureSlots(GpuMaterial m, uint wanted) {
     if (!(maxComponent(m.sheenColor) > 0.0f)) slots &= ~(1u << kMaterialTextureSheenColor);
     if (!(m.clearcoat > 0.0f)) slots &= ~((1u << kMaterialTextureClearcoat) | (1u << kMaterialTextureClearcoatNormal));
     if (!(m.transmission > 0.0f)) slots &= ~(1u << kMaterialTextureTransmission);
+    if (!(m.anisotropy > 0.0f)) slots &= ~(1u << kMaterialTextureAnisotropy);
+    if (!(m.iridescence > 0.0f))
+        slots &= ~((1u << kMaterialTextureIridescence) | (1u << kMaterialTextureIridescenceThickness));
     if (!(m.emissive.r > 0.0f || m.emissive.g > 0.0f || m.emissive.b > 0.0f)) slots &= ~(1u << kMaterialTextureEmissive);
     return slots & wanted;
 }
@@ -215,6 +227,9 @@ MaterialTexels sampleMaterialTextures(GpuMaterial m, vec4 uv, vec2 footprint, ui
     t.clearcoatRoughness = vec4(1.0f);
     t.transmission = vec4(1.0f);
     t.clearcoatNormal = vec4(1.0f);
+    t.anisotropy = vec4(1.0f);
+    t.iridescence = vec4(1.0f);
+    t.iridescenceThickness = vec4(1.0f);
     for (uint k = 0u; k < kMaterialTextureSlots && slots != 0u; ++k) {
         uint slot = uint(findLSB(slots));
         slots &= slots - 1u;
@@ -231,6 +246,9 @@ MaterialTexels sampleMaterialTextures(GpuMaterial m, vec4 uv, vec2 footprint, ui
         case kMaterialTextureClearcoat: t.clearcoat = v; break;
         case kMaterialTextureClearcoatRoughness: t.clearcoatRoughness = v; break;
         case kMaterialTextureClearcoatNormal: t.clearcoatNormal = v; break;
+        case kMaterialTextureAnisotropy: t.anisotropy = v; break;
+        case kMaterialTextureIridescence: t.iridescence = v; break;
+        case kMaterialTextureIridescenceThickness: t.iridescenceThickness = v; break;
         default: t.transmission = v; break;
         }
     }
@@ -313,6 +331,8 @@ struct SurfaceHit {
     bool hasCoatNormal;     // the coat's normal is not shadingNormal: it has a clearcoatNormalTexture,
                             // or the base has a normal map the coat does not follow (the extension:
                             // without clearcoatNormalTexture the coat is not normal-mapped)
+    vec3 anisotropyDirection;  // KHR_materials_anisotropy's direction (world, unit, across shadingNormal);
+                               // zero for isotropic materials
     vec4 uv;                // TEXCOORD_0 (xy) and TEXCOORD_1 (zw)
     vec2 textureFootprint;  // the ray cone's uv area per TEXCOORD set (sampleTexture); 0: level 0
     vec4 color;             // COLOR_0 (1 when the mesh has none)
@@ -340,6 +360,31 @@ vec3 normalMapped(float scale, vec3 t, bool negative, vec3 texel, vec3 n) {
 
 // The normal maps' texture slots: the base's and the coat's.
 const uint kNormalMapSlots = (1u << kMaterialTextureNormal) | (1u << kMaterialTextureClearcoatNormal);
+// What the surface's frame reads: the normal maps and the anisotropy direction.
+const uint kSurfaceFrameSlots = kNormalMapSlots | (1u << kMaterialTextureAnisotropy);
+
+// KHR_materials_anisotropy's direction, world space across unit normal n: the texture's RG mapped
+// to [-1, 1] (else tangent space's +X), rotated counter-clockwise by anisotropyRotation, then out of
+// tangent space (X along the vertex tangent t, Y along cross(n, t) times its handedness). Without
+// usable tangents (no TANGENT attribute and no TEXCOORD to generate them from) the frame of
+// orthonormalBasis(n) stands in.
+vec3 anisotropyDirectionAt(GpuMaterial m, MaterialTexels texels, bool hasTangent, vec3 tangent, bool negative, vec3 n) {
+    vec2 d = m.anisotropyTexture >= 0 ? texels.anisotropy.xy * 2.0f - 1.0f : vec2(1.0f, 0.0f);
+    vec2 r = m.anisotropyRotation;
+    d = vec2(r.x * d.x - r.y * d.y, r.y * d.x + r.x * d.y);
+    vec3 t = tangent - n * dot(n, tangent);
+    float len = length(t);
+    vec3 b;
+    if (hasTangent && len > 1.0e-6f) {
+        t /= len;
+        b = cross(n, t) * (negative ? -1.0f : 1.0f);
+    } else {
+        orthonormalBasis(n, t, b);
+    }
+    vec3 w = t * d.x + b * d.y;
+    float wLength = length(w);
+    return wLength > 1.0e-6f ? w / wLength : t;
+}
 
 // Hit ids (docs/bvh.md): below instanceHeader.staticTriangles the index of a static (world-space)
 // triangle in the triangle buffers; from there on an instance's firstId plus the triangle's index
@@ -407,12 +452,18 @@ SurfaceHit surfaceTexelsAt(uint id, float b1, float b2, vec3 rayDir, float coneW
     texels = sampleMaterialTextures(m, hit.uv, hit.textureFootprint, slots);
     vec3 coat = n;  // the coat's normal: not the base's normal map (KHR_materials_clearcoat)
     hit.hasCoatNormal = m.clearcoat > 0.0f && (slots & kNormalMapSlots) != 0u;
-    if ((slots & kNormalMapSlots) != 0u) {
-        vec3 tangent = b0 * decodeOctahedral(s.tangent0) + b1 * decodeOctahedral(s.tangent1) +
-                       b2 * decodeOctahedral(s.tangent2);
+    bool anisotropic = m.anisotropy > 0.0f;
+    bool hasTangent = s.tangentSign != kTangentNone && ((slots & kNormalMapSlots) != 0u || anisotropic);
+    vec3 tangent = vec3(0.0f);
+    bool negative = false;
+    if (hasTangent) {
+        tangent = b0 * decodeOctahedral(s.tangent0) + b1 * decodeOctahedral(s.tangent1) +
+                  b2 * decodeOctahedral(s.tangent2);
         if (instanced)
             tangent = transformVector3x4(inst.objectToWorld[0], inst.objectToWorld[1], inst.objectToWorld[2], tangent);
-        bool negative = (s.tangentSign == kTangentNegative) != mirrored;
+        negative = (s.tangentSign == kTangentNegative) != mirrored;
+    }
+    if ((slots & kNormalMapSlots) != 0u) {
         if ((slots & (1u << kMaterialTextureClearcoatNormal)) != 0u)
             coat = normalMapped(m.clearcoatNormalScale, tangent, negative, texels.clearcoatNormal.xyz, n);
         if ((slots & (1u << kMaterialTextureNormal)) != 0u)
@@ -422,6 +473,7 @@ SurfaceHit surfaceTexelsAt(uint id, float b1, float b2, vec3 rayDir, float coneW
     if (dot(coat, hit.geometricNormal) < 0.0f) coat = -coat;
     hit.shadingNormal = n;
     hit.coatNormal = hit.hasCoatNormal ? coat : n;
+    hit.anisotropyDirection = anisotropic ? anisotropyDirectionAt(m, texels, hasTangent, tangent, negative, n) : vec3(0.0f);
     hit.material = s.material;
     hit.emitterPdfArea = s.emitterPdfArea;
     hit.frontFace = dot(rayDir, hit.geometricNormal) < 0.0f;
@@ -429,10 +481,10 @@ SurfaceHit surfaceTexelsAt(uint id, float b1, float b2, vec3 rayDir, float coneW
     return hit;
 }
 
-// The surface with its normal maps applied (surfaceTexelsAt without other textures).
+// The surface with its normal maps and anisotropy direction (surfaceTexelsAt without other textures).
 SurfaceHit surfaceAt(uint id, float b1, float b2, vec3 rayDir, float coneWidth) {
     MaterialTexels texels;
-    return surfaceTexelsAt(id, b1, b2, rayDir, coneWidth, kNormalMapSlots, texels);
+    return surfaceTexelsAt(id, b1, b2, rayDir, coneWidth, kSurfaceFrameSlots, texels);
 }
 
 // The material texture slots the BSDF reads (all but emissive and the normal maps).

@@ -8,6 +8,8 @@
 //    Fm = baseColor + (1 - baseColor)(1 - VdotH)^5 (Schlick), and specular_brdf the GGX microfacet
 //    reflection D G2 / (4 |NdotL| |NdotV|) (shared/bsdf_microfacet.glsl). specular = 0 is exactly
 //    Lambert. Roughness below kDeltaRoughness makes the specular lobe a perfect mirror.
+//    KHR_materials_anisotropy stretches that lobe along anisotropyDirection (bsdf_anisotropic.glsl);
+//    KHR_materials_iridescence mixes a thin film's Fresnel into Fd and Fm (bsdf_iridescence.glsl).
 //  - with probability `transmission` (KHR_materials_transmission) the hit is instead a dielectric:
 //    smooth (roughness < kDeltaRoughness): exact Fresnel picks reflection or refraction (tinted by
 //    baseColor), thin-walled surfaces transmit straight through; rough: the GGX BSDF of Walter et al.
@@ -21,6 +23,8 @@
 #include "constants.glsl"
 #include "sampling.glsl"
 #include "bsdf_microfacet.glsl"
+#include "bsdf_anisotropic.glsl"
+#include "bsdf_iridescence.glsl"
 #include "bsdf_sheen.glsl"
 #include "bsdf_rough_dielectric.glsl"
 #include "bsdf_tables.glsl"  // GLSL: a storage buffer (VKP_BSDF_TABLES_BINDING)
@@ -60,11 +64,14 @@ struct BsdfParams {
     float clearcoat;      // KHR_materials_clearcoat (later; zero = no coat)
     float clearcoatRoughness;
     uint flags;           // kBsdf* bits
-    float pad0;
+    float anisotropy;     // KHR_materials_anisotropy strength (zero = isotropic)
     vec3 clearcoatNormal; // the coat's unit normal in the local frame; +z unless kBsdfCoatNormal
-    float pad1;
+    float iridescence;    // KHR_materials_iridescence factor (zero = no thin film)
+    vec2 anisotropyDirection;    // unit, in the local xy plane: where the lobe is stretched
+    float iridescenceIor;        // the film's index of refraction
+    float iridescenceThickness;  // the film's thickness in nanometres (zero = no film)
 };
-STATIC_ASSERT_SIZE(BsdfParams, 96)
+STATIC_ASSERT_SIZE(BsdfParams, 112)
 
 // The glTF defaults: a rough white dielectric of ior 1.5 with full specular, no extensions.
 INLINE BsdfParams makeBsdfParams(vec3 baseColor, float metallic, float roughness) {
@@ -82,9 +89,12 @@ INLINE BsdfParams makeBsdfParams(vec3 baseColor, float metallic, float roughness
     p.clearcoat = 0.0f;
     p.clearcoatRoughness = 0.0f;
     p.flags = 0u;
-    p.pad0 = 0.0f;
+    p.anisotropy = 0.0f;
     p.clearcoatNormal = vec3(0.0f, 0.0f, 1.0f);
-    p.pad1 = 0.0f;
+    p.iridescence = 0.0f;
+    p.anisotropyDirection = vec2(1.0f, 0.0f);
+    p.iridescenceIor = 1.3f;
+    p.iridescenceThickness = 0.0f;
     return p;
 }
 
@@ -105,6 +115,58 @@ INLINE float clearcoatAlpha(BsdfParams p) {
 
 INLINE bool specularIsDelta(BsdfParams p) {
     return p.roughness < kDeltaRoughness;
+}
+
+INLINE bool isAnisotropic(BsdfParams p) {
+    return p.anisotropy > 0.0f;
+}
+
+// The opaque layer's specular lobe is a mirror: smooth and isotropic (an anisotropic lobe is
+// stretched to alpha_t >= strength^2 along its direction, however smooth the material).
+INLINE bool specularLobeIsDelta(BsdfParams p) {
+    return specularIsDelta(p) && !isAnisotropic(p);
+}
+
+// KHR_materials_anisotropy's (alpha_t, alpha_b) of the specular lobe.
+INLINE vec2 specularAlphas(BsdfParams p) {
+    return anisotropicAlphas(p.roughness * p.roughness, p.anisotropy);
+}
+
+// A local direction in the anisotropy frame (+x along anisotropyDirection, +z the same), and back.
+INLINE vec3 toAnisotropyFrame(BsdfParams p, vec3 w) {
+    vec2 d = p.anisotropyDirection;
+    return vec3(d.x * w.x + d.y * w.y, d.x * w.y - d.y * w.x, w.z);
+}
+
+INLINE vec3 fromAnisotropyFrame(BsdfParams p, vec3 w) {
+    vec2 d = p.anisotropyDirection;
+    return vec3(d.x * w.x - d.y * w.y, d.y * w.x + d.x * w.y, w.z);
+}
+
+// The opaque layer's GGX lobe without Fresnel (Appendix B's specular_brdf), its sampling pdf and a
+// sampled visible normal: isotropic, or anisotropic in the anisotropy frame.
+INLINE float specularLobe(BsdfParams p, vec3 wo, vec3 wi) {
+    if (!isAnisotropic(p)) return ggxReflection(wo, wi, bsdfAlpha(p));
+    return ggxReflectionAnisotropic(toAnisotropyFrame(p, wo), toAnisotropyFrame(p, wi), specularAlphas(p));
+}
+
+INLINE float specularLobePdf(BsdfParams p, vec3 wo, vec3 wi) {
+    if (!isAnisotropic(p)) return ggxReflectionPdf(wo, wi, bsdfAlpha(p));
+    return ggxReflectionPdfAnisotropic(toAnisotropyFrame(p, wo), toAnisotropyFrame(p, wi), specularAlphas(p));
+}
+
+INLINE vec3 sampleSpecularNormal(BsdfParams p, vec3 wo, vec2 u) {
+    if (!isAnisotropic(p)) return sampleGgxVisibleNormal(wo, bsdfAlpha(p), u);
+    return fromAnisotropyFrame(p, sampleGgxVisibleNormalAnisotropic(toAnisotropyFrame(p, wo), specularAlphas(p), u));
+}
+
+// The roughness at which the isotropic albedo tables stand in for the specular lobe (energy
+// compensation, lobe selection): the roughness itself, or for an anisotropic lobe the one of
+// the geometric mean alpha sqrt(alpha_t alpha_b) (an approximation: the tables are isotropic).
+INLINE float specularTableRoughness(BsdfParams p) {
+    if (!isAnisotropic(p)) return p.roughness;
+    vec2 a = specularAlphas(p);
+    return sqrt(sqrt(a.x * a.y));
 }
 
 INLINE bool clearcoatIsDelta(BsdfParams p) {
@@ -159,16 +221,34 @@ INLINE bool iorIsInfinite(BsdfParams p) {
 
 // KHR_materials_specular's dielectric Fresnel at cos(V, H): specular * (f0 + (1 - f0)(1 - c)^5);
 // ior 0: specular * min(specularColor, 1), whatever the direction.
+// KHR_materials_iridescence: the film's weight (none without a film: a thickness of 0 turns the
+// film off, as the Khronos sample renderer does).
+INLINE float iridescenceWeight(BsdfParams p) {
+    return p.iridescenceThickness > 0.0f ? p.iridescence : 0.0f;
+}
+
+// A Fresnel term `plain` of normal-incidence reflectance f0 with the thin film mixed in by its
+// weight (the extension: mix(F, thin-film F, iridescence)), the film over the base seen from air.
+INLINE vec3 withThinFilm(BsdfParams p, vec3 plain, vec3 f0, float cosTheta) {
+    float k = iridescenceWeight(p);
+    if (k <= 0.0f) return plain;
+    return mix(plain, thinFilmFresnel(1.0f, p.iridescenceIor, cosTheta, p.iridescenceThickness, f0), k);
+}
+
 INLINE vec3 dielectricFresnel(BsdfParams p, float cosTheta) {
-    if (iorIsInfinite(p)) return p.specular * min(p.specularColor, vec3(1.0f));
+    if (iorIsInfinite(p)) {
+        vec3 f = min(p.specularColor, vec3(1.0f));
+        return p.specular * withThinFilm(p, f, f, cosTheta);
+    }
     vec3 f0 = min(vec3(dielectricF0(p.ior)) * p.specularColor, vec3(1.0f));
-    return p.specular * fresnelSchlick(f0, cosTheta);
+    return p.specular * withThinFilm(p, fresnelSchlick(f0, cosTheta), f0, cosTheta);
 }
 
 // Fresnel of the opaque layer's specular lobe at cos(V, H): the dielectric's and the metal's
-// (conductor_fresnel, f0 = baseColor) mixed by metallic.
+// (conductor_fresnel, f0 = baseColor) mixed by metallic; both under the thin film when iridescent.
 INLINE vec3 specularFresnel(BsdfParams p, float cosTheta) {
-    return mix(dielectricFresnel(p, cosTheta), fresnelSchlick(p.baseColor, cosTheta), p.metallic);
+    vec3 metal = withThinFilm(p, fresnelSchlick(p.baseColor, cosTheta), p.baseColor, cosTheta);
+    return mix(dielectricFresnel(p, cosTheta), metal, p.metallic);
 }
 
 // KHR_materials_clearcoat's Fresnel (ior 1.5: f0 = 0.04) times the coat's weight. vkphoton uses
@@ -204,8 +284,8 @@ INLINE float sheenScaling(BsdfParams p, float cosTheta) {
 // dielectrics). Returns Fms / (pi (1 - E_avg)); zero when compensation is off (material flag
 // kBsdfNoEnergyCompensation: render --no-energy-compensation), for mirrors, or when nothing is lost.
 INLINE vec3 multipleScatteringColour(BsdfParams p) {
-    if (!kBsdfTablesBound || !energyCompensationOn(p) || specularIsDelta(p)) return vec3(0.0f);
-    float eAvg = ggxAverageAlbedo(p.roughness);
+    if (!kBsdfTablesBound || !energyCompensationOn(p) || specularLobeIsDelta(p)) return vec3(0.0f);
+    float eAvg = ggxAverageAlbedo(specularTableRoughness(p));
     if (eAvg >= 0.9999f) return vec3(0.0f);
     vec3 f0 = min(vec3(dielectricF0(p.ior)) * p.specularColor, vec3(1.0f));
     vec3 fd = iorIsInfinite(p) ? p.specular * min(p.specularColor, vec3(1.0f))
@@ -219,7 +299,7 @@ INLINE vec3 multipleScatteringColour(BsdfParams p) {
 // 1 - E(cos theta, roughness): the share of the light single-scattering GGX loses in one direction.
 INLINE float ggxLoss(BsdfParams p, float cosTheta) {
     if (!kBsdfTablesBound) return 0.0f;
-    return max(0.0f, 1.0f - bsdfTableLookup(kTableGgxAlbedo, cosTheta, p.roughness));
+    return max(0.0f, 1.0f - bsdfTableLookup(kTableGgxAlbedo, cosTheta, specularTableRoughness(p)));
 }
 
 // Probabilities with which sampleBsdf's opaque layer picks its lobes, from the lobes' albedos
@@ -272,7 +352,7 @@ const float kPhotonGlossyRoughness = 0.2f;
 // becomes a visible point and ends a final gather ray. Otherwise (smooth glass, mirrors, polished
 // metal) paths go on through it and photons that left it are caustic photons.
 INLINE bool storesPhotons(BsdfParams p) {
-    bool mirrorLike = p.metallic >= 1.0f && (specularIsDelta(p) || p.roughness < kPhotonGlossyRoughness) &&
+    bool mirrorLike = p.metallic >= 1.0f && (specularLobeIsDelta(p) || specularTableRoughness(p) < kPhotonGlossyRoughness) &&
                       maxComponent(p.sheenColor) <= 0.0f;
     return p.transmission < 1.0f && !mirrorLike;
 }
@@ -284,8 +364,8 @@ INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
     float cosH = dot(wo, h);
     // glTF base: diffuse + GGX specular (+ multiple scattering).
     vec3 f = p.baseColor * (kInvPi * diffuseWeight(p, cosH));
-    if (!specularIsDelta(p)) {
-        f = f + specularFresnel(p, cosH) * ggxReflection(wo, wi, bsdfAlpha(p));
+    if (!specularLobeIsDelta(p)) {
+        f = f + specularFresnel(p, cosH) * specularLobe(p, wo, wi);
         vec3 ms = multipleScatteringColour(p);
         if (maxComponent(ms) > 0.0f) f = f + ms * (ggxLoss(p, wo.z) * ggxLoss(p, wi.z));
     }
@@ -312,7 +392,7 @@ INLINE vec3 diffuseReflectance(BsdfParams p, vec3 wo) {
     float cosH = dot(wo, h);
     float layers = (1.0f - clearcoatFresnel(p, cosH)) * min(sheenScaling(p, wo.z), sheenScaling(p, 1.0f));
     vec3 f = p.baseColor * (kInvPi * diffuseWeight(p, cosH));
-    if (!specularIsDelta(p)) f = f + multipleScatteringColour(p) * (ggxLoss(p, wo.z) * ggxLoss(p, 1.0f));
+    if (!specularLobeIsDelta(p)) f = f + multipleScatteringColour(p) * (ggxLoss(p, wo.z) * ggxLoss(p, 1.0f));
     return f * (layers * (1.0f - p.transmission));
 }
 
@@ -321,9 +401,39 @@ INLINE float pdfBsdf(BsdfParams p, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
     BsdfLobeProbabilities q = bsdfLobeProbabilities(p, wo.z);
     float pdf = q.diffuse * cosineHemispherePdf(wi.z) + q.sheen * (0.5f * kInvPi);
-    if (!specularIsDelta(p)) pdf = pdf + q.specular * ggxReflectionPdf(wo, wi, bsdfAlpha(p));
+    if (!specularLobeIsDelta(p)) pdf = pdf + q.specular * specularLobePdf(p, wo, wi);
     if (q.clearcoat > 0.0f && !clearcoatIsDelta(p)) pdf = pdf + q.clearcoat * clearcoatReflectionPdf(p, wo, wi);
     return pdf * (1.0f - p.transmission);
+}
+
+// The smooth dielectric layer under KHR_materials_iridescence's film, seen from outside: the
+// film's Fresnel (mixed by its weight into the exact one) is a colour, so reflection is chosen with
+// the mean of its channels and each branch weighs F / P or (1 - F) / (1 - P) (the refracted branch
+// tinted and eta-scaled as sampleDielectric's).
+INLINE BsdfSample sampleDielectricFilm(BsdfParams p, vec3 wo, float eta, bool radiance, vec2 u) {
+    BsdfSample s;
+    s.pdf = 0.0f;
+    vec3 f = clamp(mix(vec3(fresnelDielectric(wo.z, eta)),
+                       thinFilmFresnel(1.0f, p.iridescenceIor, wo.z, p.iridescenceThickness, vec3(dielectricF0(p.ior))),
+                       iridescenceWeight(p)),
+                   vec3(0.0f), vec3(1.0f));
+    float pReflect = clamp((f.x + f.y + f.z) * (1.0f / 3.0f), 1.0e-4f, 1.0f - 1.0e-4f);
+    if (u.x < pReflect) {
+        s.wi = vec3(-wo.x, -wo.y, wo.z);
+        s.weight = f / pReflect;
+        s.lobe = kLobeDelta;
+        return s;
+    }
+    s.lobe = kLobeDelta | kLobeTransmission;
+    s.weight = p.baseColor * (vec3(1.0f) - f) / (1.0f - pReflect);
+    if (p.thinWalled != 0u) {
+        s.wi = -wo;
+        return s;
+    }
+    float cosT = sqrt(max(0.0f, 1.0f - eta * eta * (1.0f - wo.z * wo.z)));
+    s.wi = normalize(vec3(-eta * wo.x, -eta * wo.y, -cosT));
+    if (radiance) s.weight = s.weight * (eta * eta);
+    return s;
 }
 
 // Samples the smooth dielectric layer. `entering`: wo is on the outside of the surface.
@@ -334,6 +444,8 @@ INLINE BsdfSample sampleDielectric(BsdfParams p, vec3 wo, bool entering, bool ra
     float ior = max(p.ior, 1.0f);
     float eta = entering ? 1.0f / ior : ior;
     if (p.thinWalled != 0u) eta = 1.0f / ior;
+    if (entering && iridescenceWeight(p) > 0.0f && !iorIsInfinite(p) && ior > 1.0f)
+        return sampleDielectricFilm(p, wo, eta, radiance, u);
     float fr = iorIsInfinite(p) ? 1.0f : fresnelDielectric(wo.z, eta);  // ior 0: an infinite ior reflects all
     if (u.x < fr) {
         s.wi = vec3(-wo.x, -wo.y, wo.z);
@@ -441,7 +553,7 @@ INLINE BsdfSample sampleBsdf(BsdfParams p, vec3 wo, bool entering, bool radiance
         s.wi = fromCoatFrame(p, coatWi);
         s.lobe = kLobeGlossy;
     } else if (uLobe < q.clearcoat + q.specular) {
-        if (specularIsDelta(p)) {
+        if (specularLobeIsDelta(p)) {
             // The mirror's light passes the coat and the sheen twice (along wo = wi's mirror).
             float layers = (1.0f - clearcoatFresnel(p, wo.z)) * sheenScaling(p, wo.z);
             s.wi = mirror;
@@ -449,7 +561,7 @@ INLINE BsdfSample sampleBsdf(BsdfParams p, vec3 wo, bool entering, bool radiance
             s.lobe = kLobeDelta;
             return s;
         }
-        s.wi = reflect(-wo, sampleGgxVisibleNormal(wo, bsdfAlpha(p), vec2(u.y, u.z)));
+        s.wi = reflect(-wo, sampleSpecularNormal(p, wo, vec2(u.y, u.z)));
         s.lobe = kLobeGlossy;
     } else if (uLobe < q.clearcoat + q.specular + q.sheen) {
         // Uniform hemisphere: the sheen lobe is broad and strongest towards grazing.

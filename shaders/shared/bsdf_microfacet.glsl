@@ -35,9 +35,11 @@ INLINE float ggxG2(vec3 wo, vec3 wi, float alpha) {
     return 1.0f / (1.0f + ggxLambda(wo, alpha) + ggxLambda(wi, alpha));
 }
 
-// Visible-normal sampling (Heitz, "Sampling the GGX Distribution of Visible Normals", JCGT 2018).
-INLINE vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u) {
-    vec3 vh = normalize(vec3(alpha * wo.x, alpha * wo.y, wo.z));
+// Visible-normal sampling (Heitz, "Sampling the GGX Distribution of Visible Normals", JCGT 2018,
+// listing 1) with roughness a.x along +x and a.y along +y (KHR_materials_anisotropy): stretch wo to
+// the hemisphere configuration, sample the projected disk, unstretch the normal.
+INLINE vec3 sampleGgxVisibleNormalAnisotropic(vec3 wo, vec2 a, vec2 u) {
+    vec3 vh = normalize(vec3(a.x * wo.x, a.y * wo.y, wo.z));
     float lenSq = vh.x * vh.x + vh.y * vh.y;
     vec3 t1 = lenSq > 0.0f ? vec3(-vh.y, vh.x, 0.0f) * inversesqrt(lenSq) : vec3(1.0f, 0.0f, 0.0f);
     vec3 t2 = cross(vh, t1);
@@ -48,7 +50,12 @@ INLINE vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u) {
     float s = 0.5f * (1.0f + vh.z);
     p2 = (1.0f - s) * sqrt(max(0.0f, 1.0f - p1 * p1)) + s * p2;
     vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0f, 1.0f - p1 * p1 - p2 * p2)) * vh;
-    return normalize(vec3(alpha * nh.x, alpha * nh.y, max(1.0e-6f, nh.z)));
+    return normalize(vec3(a.x * nh.x, a.y * nh.y, max(1.0e-6f, nh.z)));
+}
+
+// The isotropic case (the same arithmetic with a.x = a.y = alpha).
+INLINE vec3 sampleGgxVisibleNormal(vec3 wo, float alpha, vec2 u) {
+    return sampleGgxVisibleNormalAnisotropic(wo, vec2(alpha, alpha), u);
 }
 
 // Density of the visible normal h seen from wo: G1(wo) max(0, wo.h) D(h) / wo.z.

@@ -109,7 +109,7 @@ struct GpuMaterial {
     int normalTexture;      // tangent-space normal map, -1 when absent
     float normalScale;
     float alphaCutoff;
-    uint pad1;
+    float dispersion;       // KHR_materials_dispersion: 20 / Abbe number; zero: one index for all wavelengths
     // KHR_materials_specular / sheen / clearcoat (docs/materials.md); textures -1 when absent.
     vec3 specularColor;     // specularColorFactor (F0 colour of the dielectric)
     float specular;         // specularFactor (dielectric specular weight and F90)
@@ -125,10 +125,17 @@ struct GpuMaterial {
     int clearcoatRoughnessTexture;  // G channel
     int clearcoatNormalTexture;     // the coat's tangent-space normal map, -1 when absent
     float clearcoatNormalScale;     // its normalTextureInfo.scale
-    uint pad2;
-    uint pad3;
+    float anisotropy;               // KHR_materials_anisotropy: anisotropyStrength; zero: isotropic
+    int anisotropyTexture;          // RG direction in tangent space, B strength (linear)
+    vec2 anisotropyRotation;        // cos and sin of anisotropyRotation
+    float iridescence;              // KHR_materials_iridescence: iridescenceFactor; zero: no film
+    float iridescenceIor;
+    float iridescenceThicknessMin;  // nanometres
+    float iridescenceThicknessMax;
+    int iridescenceTexture;         // R channel
+    int iridescenceThicknessTexture;  // G channel
 };
-STATIC_ASSERT_SIZE(GpuMaterial, 176)
+STATIC_ASSERT_SIZE(GpuMaterial, 208)
 
 const uint kLightPoint = 0u;
 const uint kLightSpot = 1u;

@@ -29,7 +29,9 @@ const uint kHarnessFresnelDielectric = 7u;
 const uint kHarnessOrthonormalBasis = 8u;
 const uint kHarnessSampleBsdf = 9u;
 const uint kHarnessRoughDielectric = 10u;
-const uint kHarnessFunctionCount = 11u;
+const uint kHarnessAnisotropicBsdf = 11u;
+const uint kHarnessThinFilm = 12u;
+const uint kHarnessFunctionCount = 13u;
 
 INLINE uvec4 floatBits(vec4 v) {
     return uvec4(floatBitsToUint(v.x), floatBitsToUint(v.y), floatBitsToUint(v.z), floatBitsToUint(v.w));
@@ -120,6 +122,23 @@ INLINE uvec4 evaluateHarnessFunction(uint function, HarnessInput in_) {
         BsdfSample s = sampleBsdf(p, wo, entering, true, vec3(in_.b.w, in_.a.z, in_.b.x));
         return floatBits(vec4(s.wi.z, s.weight.x, evalDielectricLayer(p, wo, s.wi, entering, true).x,
                               pdfDielectricLayer(p, wo, s.wi, entering)));
+    }
+    if (function == kHarnessAnisotropicBsdf) {
+        // KHR_materials_anisotropy: strength 0.25 .. 1 along one of 16 directions; eval and pdf at
+        // a direction, and one sample of sampleBsdf.
+        BsdfParams p = harnessBsdfParams(in_);
+        p.anisotropy = float(((in_.u.y >> 24u) & 3u) + 1u) * 0.25f;
+        float angle = float((in_.u.y >> 26u) & 15u) * (kTwoPi / 16.0f);
+        p.anisotropyDirection = vec2(cos(angle), sin(angle));
+        vec3 wo = harnessDirection(vec2(in_.a.x, in_.a.y));
+        vec3 wi = harnessDirection(vec2(in_.a.z, float(in_.u.x & 0xffffu) / 65536.0f));
+        BsdfSample s = sampleBsdf(p, wo, true, true, vec3(in_.b.w, in_.a.z, in_.b.x));
+        return floatBits(vec4(evalBsdf(p, wo, wi).y, pdfBsdf(p, wo, wi), s.wi.x, s.pdf));
+    }
+    if (function == kHarnessThinFilm) {
+        // KHR_materials_iridescence's film: ior 1 .. 2.5, thickness 0 .. 1200 nm, any angle and base.
+        vec3 f = thinFilmFresnel(1.0f, 1.0f + 1.5f * in_.a.x, in_.a.y, 1200.0f * in_.a.z, vec3(in_.b.x, in_.b.y, in_.b.z));
+        return floatBits(vec4(f, 0.0f));
     }
     return uvec4(0u);
 }

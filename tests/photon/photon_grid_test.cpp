@@ -138,9 +138,11 @@ TEST_P(PhotonGridSegmentTest, GathersMatchBruteForce) {
 
     gpu::GatherTestParams push{};
     push.grid = grid.view(1.0f);
-    push.bsdf = gpu::makeBsdfParams(glm::vec3(0.8f, 0.6f, 0.4f), 0.0f, 0.5f);
+    gpu::BsdfParams bsdf = gpu::makeBsdfParams(glm::vec3(0.8f, 0.6f, 0.4f), 0.0f, 0.5f);
     // The test kernel binds no albedo tables (VKP_NO_BSDF_TABLES): compare the plain GGX both sides.
-    push.bsdf.flags |= gpu::kBsdfNoEnergyCompensation;
+    bsdf.flags |= gpu::kBsdfNoEnergyCompensation;
+    vk::Buffer bsdfBuffer = vk::makeStorageBuffer(context, "bsdf", std::vector<gpu::BsdfParams>{bsdf});
+    kernel.bind(gpu::kGatherTestBsdfBinding, bsdfBuffer);
     push.count = static_cast<uint32_t>(queries.size());
     push.coneK = 1.1f;
     push.rejectedFlags = gpu::kPhotonPrimary;
@@ -168,7 +170,7 @@ TEST_P(PhotonGridSegmentTest, GathersMatchBruteForce) {
             if (d2 < query.radius * query.radius) candidates.push_back({d2, p.lightIndex});
             if (d2 > query.radius * query.radius) continue;
             const glm::vec3 wi = gpu::toLocal(gpu::decodeOctahedral(p.direction), t, b, query.normal);
-            sum += gpu::evalBsdf(push.bsdf, kTestWo, wi) * gpu::photonRelativePower(p) *
+            sum += gpu::evalBsdf(bsdf, kTestWo, wi) * gpu::photonRelativePower(p) *
                    gpu::coneFilterWeight(std::sqrt(d2), query.radius, push.coneK);
             ++count;
         }

@@ -76,7 +76,8 @@ TEST(SceneReport, CountsAndExtensions) {
 TEST(GltfExtensions, OnlyReadExtensionsMayBeRequired) {
     EXPECT_TRUE(gltfExtensionIsRead("KHR_materials_volume"));
     EXPECT_TRUE(gltfExtensionIsRead("KHR_texture_transform"));
-    EXPECT_FALSE(gltfExtensionIsRead("KHR_materials_anisotropy"));
+    EXPECT_TRUE(gltfExtensionIsRead("KHR_materials_anisotropy"));
+    EXPECT_FALSE(gltfExtensionIsRead("KHR_materials_diffuse_transmission"));
     EXPECT_FALSE(gltfExtensionIsRead("EXT_never_heard_of_it"));
     EXPECT_EQ(findGltfExtension("EXT_never_heard_of_it"), nullptr);
 }

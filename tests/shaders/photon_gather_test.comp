@@ -23,6 +23,7 @@ layout(std430, set = 0, binding = kGatherTestQueryBinding) readonly buffer Queri
 layout(std430, set = 0, binding = kGatherTestFixedBinding) writeonly buffer FixedResults { vec4 fixedResults[]; };   // sum, count
 layout(std430, set = 0, binding = kGatherTestNearestBinding) writeonly buffer NearestResults { uint nearestResults[]; };  // see below
 
+layout(std430, set = 0, binding = kGatherTestBsdfBinding) readonly buffer Bsdf { BsdfParams bsdf; };
 layout(push_constant) uniform Push { GatherTestParams push; };
 
 void main() {
@@ -35,7 +36,7 @@ void main() {
     orthonormalBasis(n, t, b);
     vec3 wo = normalize(vec3(0.3f, -0.2f, 1.0f));
     FixedRadiusGather fixedGather = gatherFixedRadius(push.grid, query.position, query.radius, push.coneK,
-                                                      push.requiredFlags, push.rejectedFlags, push.bsdf, wo, t, b, n);
+                                                      push.requiredFlags, push.rejectedFlags, bsdf, wo, t, b, n);
     fixedResults[q] = vec4(fixedGather.weightedPower, float(fixedGather.count));
 
     // Per query: found, radius2 (float bits), then the photons' lightIndex fields (their ids).
