@@ -21,6 +21,11 @@ namespace {
 // photons at the map's mean density (cells are that radius wide: two rings of cells are visited).
 constexpr float kGlobalRadiusFactor = 2.0f;
 constexpr uint32_t kMaxSpecularDepth = 16;
+// The camera passes' stages, timed on the device (vk/stage_timer.h), and their stats keys.
+enum CameraStage : uint32_t { kStageVisiblePoints, kStageCaustics, kStageGathers, kStageCount };
+const char* const kCameraStageKeys[kStageCount] = {"timings.photon.visiblePointsSeconds",
+                                                   "timings.photon.causticLookupSeconds",
+                                                   "timings.photon.gatherSeconds"};
 
 }  // namespace
 
@@ -45,6 +50,8 @@ void reportMapBuild(Stats& stats, const PhotonMapStats& map) {
     stats.add("photons.pathsTraced", map.traced.emitted);
     stats.add("photons.dropped", map.dropped);
     stats.add("photons.seconds", map.traceSeconds + map.gridSeconds);
+    stats.add("timings.photon.traceSeconds", map.traceSeconds);
+    stats.add("timings.photon.gridSeconds", map.gridSeconds);
 }
 
 PhotonIntegrator::PhotonIntegrator(const GpuScene& scene, const PhotonIntegratorSettings& settings)
@@ -147,6 +154,7 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
             p.radiancePhotonStride, p.gatherK, globalRadius);
         context.submitAndWait([&](VkCommandBuffer cmd) { m_radiancePhotons->record(cmd); });
         m_stats.add("photons.seconds", secondsSince(start));
+        m_stats.add("timings.photon.radiancePhotonsSeconds", secondsSince(start));
         m_stats.add("photons.mapBytes", m_radiancePhotons->bytes());
     }
 }
@@ -179,6 +187,8 @@ void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
         m_causticPass = std::make_unique<CausticEstimatePass>(context, m_scene.buffers(), film.sums(), *m_points,
                                                               m_causticMap->grid());
 
+    m_timer = std::make_unique<vk::StageTimer>(context, std::vector<std::string>(kCameraStageKeys, kCameraStageKeys + kStageCount),
+                                               kStageCount * maxSamplesPerBatch());
     m_visibleParams = visiblePointParams(frame, m_scene.buffers().lightCount());
     m_causticParams = {};
     if (m_causticMap) m_causticParams.grid = m_causticMap->grid().view(m_causticMap->photonPower());
@@ -204,27 +214,38 @@ void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
 }
 
 void PhotonIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) {
+    m_timer->beginRecording(cmd);
     for (uint32_t sample = first; sample < first + count; ++sample) {
         m_visibleParams.sampleIndex = sample;
+        m_timer->begin(cmd, kStageVisiblePoints);
         m_visiblePass->record(cmd, m_visibleParams, m_window);
         vk::computeBarrier(cmd);
+        m_timer->end(cmd, kStageVisiblePoints);
         if (m_causticPass) {
+            m_timer->begin(cmd, kStageCaustics);
             m_causticPass->record(cmd, m_causticParams, m_window);
             vk::computeBarrier(cmd);
+            m_timer->end(cmd, kStageCaustics);
         }
         // One dispatch per gather ray keeps each invocation's loops within lavapipe's limit.
         m_gatherParams.sampleIndex = sample;
+        m_timer->begin(cmd, kStageGathers);
         for (uint32_t ray = 0; ray < std::max(1u, m_settings.gatherRays); ++ray) {
             m_gatherParams.rayIndex = ray;
             m_gatherPass->record(cmd, m_gatherParams, m_window);
             vk::computeBarrier(cmd);
         }
+        m_timer->end(cmd, kStageGathers);
     }
 }
 
 void PhotonIntegrator::report(Stats& stats) const {
     m_settings.report(stats);
     stats.merge(m_stats);
+    if (m_timer && m_timer->enabled()) {
+        const std::vector<double> seconds = m_timer->seconds();
+        for (uint32_t stage = 0; stage < kStageCount; ++stage) stats.set(kCameraStageKeys[stage], seconds[stage]);
+    }
     reportPhotonSummary(stats);
 }
 

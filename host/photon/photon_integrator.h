@@ -19,6 +19,7 @@
 #include "photon/photon_settings.h"
 #include "photon/photon_map.h"
 #include "shared/photon_render.glsl"
+#include "vk/stage_timer.h"
 
 namespace vkp {
 
@@ -51,6 +52,7 @@ private:
     std::unique_ptr<VisiblePointPass> m_visiblePass;
     std::unique_ptr<FinalGatherPass> m_gatherPass;
     std::unique_ptr<CausticEstimatePass> m_causticPass;
+    std::unique_ptr<vk::StageTimer> m_timer;  // GPU time of the camera passes (kStage*)
     gpu::VisiblePointParams m_visibleParams{};
     gpu::CausticEstimateParams m_causticParams{};
     gpu::FinalGatherParams m_gatherParams{};
@@ -63,7 +65,8 @@ private:
 gpu::VisiblePointParams visiblePointParams(const Frame& frame, uint32_t lightCount);
 // Throws InputError when the scene's lights emit no power (no photons to trace).
 void requireLightPower(const GpuScene& scene);
-// "photons.pathsTraced", "photons.dropped" and "photons.seconds" of one map build, added.
+// "photons.pathsTraced", "photons.dropped" and "photons.seconds" of one map build, added, and
+// the build's stages in "timings.photon.*".
 void reportMapBuild(Stats& stats, const PhotonMapStats& map);
 // The user's summary of the maps (notes) and a warning for dropped photons, from "photons.*".
 void reportPhotonSummary(Stats& stats);

@@ -129,6 +129,7 @@ private:
     std::unique_ptr<PhotonCompaction> m_compaction;  // bound to the tracer's slots (allocated by the first chunk)
     std::unique_ptr<PhotonDeposit> m_deposit;        // likewise; only with a deposit mode other than all
     uint64_t m_lastStored = 0;
+    bool m_gridBuilt = false;  // the grid's table is fitted to the first build's photons
     // Allocates the map's segments for `photons` and the grid's for all the map holds.
     void reserve(uint64_t photons);
     // The hash grid over the photons stored (or, deciding deposits, the candidates), timed into
