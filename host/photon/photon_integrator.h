@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "gpu_scene/gpu_scene.h"
+#include "guiding/guide_cache.h"
 #include "photon/radiance_photons.h"
 #include "photon/caustic_estimate_pass.h"
 #include "photon/final_gather_pass.h"
@@ -39,6 +40,7 @@ public:
 
 private:
     void buildMaps(const Frame& frame);
+    void buildGatherGuide(const PhotonMapStats& globalStats);
 
     const GpuScene& m_scene;
     PhotonIntegratorSettings m_settings;
@@ -48,6 +50,7 @@ private:
     std::unique_ptr<PhotonMap> m_globalMap;
     std::unique_ptr<PhotonMap> m_causticMap;
     std::unique_ptr<RadiancePhotons> m_radiancePhotons;
+    std::unique_ptr<GuideCache> m_gatherGuide;  // gather directions from the global map's indirect photons
     std::unique_ptr<vk::Buffer> m_points;
     std::unique_ptr<VisiblePointPass> m_visiblePass;
     std::unique_ptr<FinalGatherPass> m_gatherPass;
