@@ -94,7 +94,8 @@ PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays
     // The hash table follows the photons the first build stores (PhotonGrid::fitTable), not the
     // slots: until then it is the smallest. Density control reads the grid between its rounds,
     // so its table is sized for the slots from the start.
-    if (deposit.mode != gpu::kDepositDensity) grid.tableSize = 1;
+    const bool fitTable = settings.fitGridTable && deposit.mode != gpu::kDepositDensity;
+    if (fitTable) grid.tableSize = 1;
     m_grid = std::make_unique<PhotonGrid>(context, m_map, m_capacity, grid, settings.segmentShift);
     // A shorter (stopped) chunk must not reallocate the slots the passes below are bound to.
     m_tracer.reserve(m_chunkPaths, settings.maxDeposits);
@@ -138,7 +139,7 @@ PhotonMapStats PhotonMap::buildGrid(PhotonMapStats stats, bool deposit) {
     const double cpuStart = processCpuSeconds();
     if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
     stats.cellSize = m_grid->settings().cellSize;
-    if (!m_gridBuilt && m_settings.deposit.mode != gpu::kDepositDensity)
+    if (!m_gridBuilt && m_settings.fitGridTable && m_settings.deposit.mode != gpu::kDepositDensity)
         m_grid->fitTable(static_cast<uint32_t>(std::min<uint64_t>(stats.stored, UINT32_MAX)));
     m_gridBuilt = true;
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
