@@ -277,10 +277,10 @@ int runPhotons(const PhotonsCommandOptions& options) {
         fmt::print(stderr,
                    "traced {} photon paths in {:.2f} s on {}: stored {} caustic, {} global, {} primary; "
                    "absorbed {}, lost {}, truncated {}; {} paths sampled into their --max-deposits slots; map {} photons, "
-                   "{:.1f} MiB with its grid; wrote {}\n",
+                   "{:.1f} MiB with its grid; peak device memory {:.1f} MiB; wrote {}\n",
                    c.emitted, seconds, context.deviceName(), c.storedCaustic, c.storedGlobal, c.storedPrimary,
                    c.absorbed, c.lost, c.truncated, c.sampled, stats.stored, stats.bytes / 1048576.0,
-                   printable(output.string()));
+                   context.memory().peak() / 1048576.0, printable(output.string()));
     if (!options.quiet && importons)
         fmt::print(stderr, "deposit {}: kept {} of {} photons ({:.1f} %, {:.1f} MB); {} importons, f = {:.4g}\n",
                    depositModeName(options.deposit.mode), stats.stored, stats.candidates,

@@ -19,8 +19,9 @@ public:
     // A cache over the `slotCount` photon slots of `photons` (e.g. a map's grid photons) with
     // cells of `cellSize` and `tableSize` buckets; `params` gives the grid size (m, n) and, in
     // params.grid.photonPower, the watts of a photon of relative power 1.
+    // Photons with any of `rejectedFlags` are left out (a map of every kind: its direct photons).
     GuideCache(vk::Context& context, const vk::SegmentedBuffer& photons, uint32_t slotCount, float cellSize, uint32_t tableSize,
-               const gpu::GuideParams& params);
+               const gpu::GuideParams& params, uint32_t rejectedFlags = 0);
 
     // Records the coarse grid and the grids' construction; the caller places barriers around.
     void record(VkCommandBuffer cmd) const;
@@ -40,5 +41,15 @@ private:
     vk::Buffer m_irradiance;
     vk::Kernel<gpu::GuideCacheBuildKernel> m_build;
 };
+
+// A cache over the `stored` photons of a built map's grid (photon/photon_map.h) without
+// `rejectedFlags` photons, sized for `guidePhotons` of them spread over the scene's `area` with
+// `k` photons per grid (params.gridSize, params.grid.photonPower as for the constructor): cells
+// kCacheCellFactor times the radius of a disk that holds k of them at that density, about
+// 9k/pi photons on a flat cell. Grid noise, not spatial detail, limits the cache
+// (docs/benchmarks.md: factors 1 to 4 measured). Recorded by the caller.
+std::unique_ptr<GuideCache> makeGuideCache(vk::Context& context, const vk::SegmentedBuffer& gridPhotons, uint64_t stored,
+                                           uint64_t guidePhotons, uint32_t k, double area, const gpu::GuideParams& params,
+                                           uint32_t rejectedFlags);
 
 }  // namespace vkp

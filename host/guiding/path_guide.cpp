@@ -21,9 +21,6 @@ namespace {
 
 // Gathers search up to this many times the map's even-spread radius for k photons.
 constexpr float kGuideRadiusFactor = 2.0f;
-// Cache cells are three times the even-spread radius: about 9k/pi photons on a flat cell. Grid
-// noise, not spatial detail, limits the cache (docs/benchmarks.md: factors 1 to 4 measured).
-constexpr float kCacheCellFactor = 3.0f;
 
 }  // namespace
 
@@ -114,12 +111,8 @@ PathGuide::PathGuide(const GpuScene& scene, const GuideSettings& g, uint32_t see
     // No indirect photons (a scene lit only directly): nothing to guide by, sample the BSDF.
     if (m_mapStats.stored == 0) m_params.mix = 0.0f;
     if (g.cache && m_mapStats.stored > 0) {
-        const float cellSize = kCacheCellFactor * m_mapStats.cellSize;
-        const double cells = area / (double(cellSize) * cellSize);
-        const auto table = static_cast<uint32_t>(std::clamp(2.0 * cells, 1024.0, double(1u << 20)));
-        // Only the first `stored` entries of the grid's photon buffer are written.
-        const auto stored = static_cast<uint32_t>(std::max<uint64_t>(1, m_mapStats.stored));
-        m_cache = std::make_unique<GuideCache>(context, m_map->grid().photonArray(), stored, cellSize, table, m_params);
+        m_cache = makeGuideCache(context, m_map->grid().photonArray(), m_mapStats.stored, m_mapStats.stored, g.k, area,
+                                 m_params, 0);
         context.submitAndWait([&](VkCommandBuffer cmd) {
             vk::computeBarrier(cmd);
             m_cache->record(cmd);

@@ -31,6 +31,7 @@ void reportImportons(Stats& stats, const ImportonMap* importons) {
     stats.set("photons.importonsStored", importons->stats().stored);
     stats.set("photons.importanceScale", importons->stats().importanceScale);
     stats.add("photons.seconds", importons->stats().seconds);
+    stats.add("timings.photon.importonSeconds", importons->stats().seconds);
     stats.add("photons.importonBytes", importons->bytes());
 }
 

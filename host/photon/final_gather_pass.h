@@ -1,9 +1,12 @@
 // Final gather pass (shaders/photon/final_gather.comp): reads the scene, the visible points and a photon
 // grid (the global map's, or the radiance photons'), adds one gather ray's share of the indirect
-// light to each pixel's film entry (vec4: RGB sum, sample count).
+// light to each pixel's film entry (vec4: RGB sum, sample count). With a guiding cache
+// (guiding/guide_cache.h) over the global map's indirect photons, gather directions are
+// importance-sampled from it, mixed with the BSDF's.
 #pragma once
 
 #include "gpu_scene/scene_buffers.h"
+#include "guiding/guide_cache.h"
 #include "photon/photon_grid.h"
 #include "shared/kernels/photon_estimates.glsl"
 #include "shared/photon_render.glsl"
@@ -14,8 +17,10 @@ namespace vkp {
 
 class FinalGatherPass {
 public:
+    // `guide` (may be null): the guiding cache the gather directions are importance-sampled from
+    // (params.guide.mix > 0); without one, params.guide.mix must be 0.
     FinalGatherPass(vk::Context& context, const SceneBuffers& scene, const vk::Buffer& film,
-                    const vk::Buffer& visiblePoints, const PhotonGrid& grid);
+                    const vk::Buffer& visiblePoints, const PhotonGrid& grid, const GuideCache* guide = nullptr);
 
     // One dispatch over params.width * params.height pixels (one gather ray: params.rayIndex).
     // `pixels`: the window of pixels to compute (--tile, --crop), all by default.
@@ -23,6 +28,8 @@ public:
 
 private:
     vk::Kernel<gpu::FinalGatherKernel> m_kernel;
+    vk::Buffer m_noGuide;  // bound in the cache's place when there is none (never read)
+    bool m_guided;
 };
 
 }  // namespace vkp

@@ -20,14 +20,31 @@ PhotonCompaction::PhotonCompaction(vk::Context& context, const vk::Buffer& slots
 }
 
 void PhotonCompaction::record(VkCommandBuffer cmd, uint32_t slotCount, uint32_t capacity) const {
+    recordCount(cmd, slotCount);
+    recordAppend(cmd, slotCount, capacity);
+}
+
+void PhotonCompaction::recordCount(VkCommandBuffer cmd, uint32_t slotCount) const {
     gpu::PhotonCompactParams params = m_params;
     params.slotCount = slotCount;
-    params.capacity = capacity;
     params.scannedCount = m_maxSlots;
     // Marks cover every scanned entry (zeros past slotCount), so the scan's length is fixed.
     m_mark.record(cmd, uint64_t(m_maxSlots) + 1, params);
     vk::computeBarrier(cmd);
     m_scan.record(cmd);
+}
+
+uint32_t PhotonCompaction::keptCount() const {
+    uint32_t kept = 0;
+    m_ranks.download(&kept, sizeof(kept), VkDeviceSize(m_maxSlots) * sizeof(uint32_t));
+    return kept;
+}
+
+void PhotonCompaction::recordAppend(VkCommandBuffer cmd, uint32_t slotCount, uint32_t capacity) const {
+    gpu::PhotonCompactParams params = m_params;
+    params.slotCount = slotCount;
+    params.capacity = capacity;
+    params.scannedCount = m_maxSlots;
     m_scatter.record(cmd, slotCount, params);
     vk::computeBarrier(cmd);
     m_advance.record(cmd, 1, params);  // one invocation

@@ -26,6 +26,13 @@ public:
     // barrier before (after the slot writes) and after.
     void record(VkCommandBuffer cmd, uint32_t slotCount, uint32_t capacity) const;
 
+    // record() in two submissions, so the map's memory can follow what it keeps: recordCount
+    // ranks the kept slots (mark and scan; then keptCount() reads how many after the submission),
+    // recordAppend (in a later submission, after the map has room) appends them.
+    void recordCount(VkCommandBuffer cmd, uint32_t slotCount) const;
+    uint32_t keptCount() const;
+    void recordAppend(VkCommandBuffer cmd, uint32_t slotCount, uint32_t capacity) const;
+
 private:
     gpu::PhotonCompactParams m_params;
     uint32_t m_maxSlots;

@@ -56,6 +56,31 @@ PhotonGrid::PhotonGrid(vk::Context& context, const vk::SegmentedBuffer& photons,
     resize(static_cast<uint32_t>(std::min<uint64_t>(slotCount, photons.allocated())));
 }
 
+void PhotonGrid::bindTable() {
+    m_count.bind(gpu::kGridCellStartBinding, m_cellStart);
+    m_count.bind(gpu::kGridCursorBinding, m_cursor);
+    m_scatter.bind(gpu::kGridCellStartBinding, m_cellStart);
+    m_scatter.bind(gpu::kGridCursorBinding, m_cursor);
+    m_sortCells.bind(gpu::kGridCellStartBinding, m_cellStart);
+    m_sortCells.bind(gpu::kGridCursorBinding, m_cursor);
+    m_copy.bind(gpu::kGridCellStartBinding, m_cellStart);
+    m_copy.bind(gpu::kGridCursorBinding, m_cursor);
+}
+
+void PhotonGrid::fitTable(uint32_t photons) {
+    if (m_built) throw std::logic_error("PhotonGrid::fitTable after a build");
+    const uint32_t size = tableSizeFor(photons);
+    m_settings.tableSize = 0;  // grids made from these settings (radiance photons') size their own table
+    if (size == tableSize()) return;
+    m_retiredTables.push_back(std::move(m_cellStart));
+    m_retiredTables.push_back(std::move(m_cursor));
+    m_params.tableMask = size - 1;
+    m_cellStart = vk::Buffer(m_context, "photon grid cell starts", (VkDeviceSize(size) + 1) * sizeof(uint32_t), vk::kStorageUsage);
+    m_cursor = vk::Buffer(m_context, "photon grid cursors", VkDeviceSize(size) * sizeof(uint32_t), vk::kStorageUsage);
+    m_scan = PrefixScan(m_context, m_cellStart, size + 1);
+    bindTable();
+}
+
 void PhotonGrid::resize(uint32_t slots) {
     slots = static_cast<uint32_t>(std::min<uint64_t>({slots, m_capacity, m_input.allocated()}));
     m_sortedSlots.reserve(slots);
@@ -75,6 +100,7 @@ void PhotonGrid::setCellSize(float cellSize) {
 }
 
 void PhotonGrid::record(VkCommandBuffer cmd) const {
+    m_built = true;
     m_cellStart.fillZero(cmd);
     vk::transferToComputeBarrier(cmd);
     m_count.record(cmd, m_params.slotCount, m_params);

@@ -36,6 +36,12 @@ public:
     // grid's slotCount): allocates the grid's own arrays for them.
     void resize(uint32_t slots);
 
+    // Sizes the hash table for `photons` (tableSizeFor, whatever settings.tableSize said) before the grid's first build, so a map
+    // that keeps few of its slots' photons has a table of its photons' size, not its slots'.
+    // Kernels bound to the old table before (density control's) keep valid buffers; rebind them
+    // to read the new one. Throws std::logic_error after a build.
+    void fitTable(uint32_t photons);
+
     // Changes the cell size for the next build (the table and buffers stay).
     void setCellSize(float cellSize);
 
@@ -80,6 +86,9 @@ private:
     vk::Kernel<gpu::GridScatterKernel> m_scatter;
     vk::Kernel<gpu::GridSortCellsKernel> m_sortCells;
     vk::Kernel<gpu::GridCopyKernel> m_copy;
+    std::vector<vk::Buffer> m_retiredTables;  // replaced by fitTable: descriptor sets made before may name them
+    mutable bool m_built = false;
+    void bindTable();
 };
 
 }  // namespace vkp

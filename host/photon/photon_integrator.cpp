@@ -21,6 +21,16 @@ namespace {
 // photons at the map's mean density (cells are that radius wide: two rings of cells are visited).
 constexpr float kGlobalRadiusFactor = 2.0f;
 constexpr uint32_t kMaxSpecularDepth = 16;
+// The gather guide's grids: 4 x 16 cells (theta bands x phi sectors), sized for this many photons
+// per grid (the guided path tracer's defaults, docs/guided-path-tracing.md).
+constexpr uint32_t kGatherGuideGridU = 4;
+constexpr uint32_t kGatherGuideGridV = 16;
+constexpr uint32_t kGatherGuideK = 50;
+// The camera passes' stages, timed on the device (vk/stage_timer.h), and their stats keys.
+enum CameraStage : uint32_t { kStageVisiblePoints, kStageCaustics, kStageGathers, kStageCount };
+const char* const kCameraStageKeys[kStageCount] = {"timings.photon.visiblePointsSeconds",
+                                                   "timings.photon.causticLookupSeconds",
+                                                   "timings.photon.gatherSeconds"};
 
 }  // namespace
 
@@ -45,6 +55,8 @@ void reportMapBuild(Stats& stats, const PhotonMapStats& map) {
     stats.add("photons.pathsTraced", map.traced.emitted);
     stats.add("photons.dropped", map.dropped);
     stats.add("photons.seconds", map.traceSeconds + map.gridSeconds);
+    stats.add("timings.photon.traceSeconds", map.traceSeconds);
+    stats.add("timings.photon.gridSeconds", map.gridSeconds);
 }
 
 PhotonIntegrator::PhotonIntegrator(const GpuScene& scene, const PhotonIntegratorSettings& settings)
@@ -147,8 +159,39 @@ void PhotonIntegrator::buildMaps(const Frame& frame) {
             p.radiancePhotonStride, p.gatherK, globalRadius);
         context.submitAndWait([&](VkCommandBuffer cmd) { m_radiancePhotons->record(cmd); });
         m_stats.add("photons.seconds", secondsSince(start));
+        m_stats.add("timings.photon.radiancePhotonsSeconds", secondsSince(start));
         m_stats.add("photons.mapBytes", m_radiancePhotons->bytes());
     }
+    buildGatherGuide(globalStats);
+}
+
+// The guiding cache of the final gathers (docs/photon-mapping.md, "Final gathering"): one grid of
+// the global map's indirect photons' incoming flux per cache cell and normal bin. Direct photons
+// are left out: the gather reads light that arrives after at least one bounce.
+void PhotonIntegrator::buildGatherGuide(const PhotonMapStats& globalStats) {
+    m_gatherGuide.reset();
+    if (m_settings.gatherRays == 0 || m_settings.gatherGuide <= 0.0f || globalStats.stored == 0) return;
+    const auto start = Clock::now();
+    vk::Context& context = m_scene.context();
+    // The indirect share of the stored photons (the deposits' share: the decision keeps each kind alike).
+    const PhotonCounters& c = globalStats.traced;
+    const double deposits = double(c.storedGlobal + c.storedCaustic + c.storedPrimary);
+    const double indirect = deposits > 0.0 ? double(c.storedGlobal + c.storedCaustic) / deposits : 1.0;
+    const auto guidePhotons = static_cast<uint64_t>(std::max(1.0, indirect * double(globalStats.stored)));
+    gpu::GuideParams params{};
+    params.grid.photonPower = m_globalMap->photonPower();
+    params.mix = m_settings.gatherGuide;
+    params.k = kGatherGuideK;
+    params.gridSize = kGatherGuideGridU | (kGatherGuideGridV << 8);
+    m_gatherGuide = makeGuideCache(context, m_globalMap->grid().photonArray(), globalStats.stored, guidePhotons, kGatherGuideK,
+                                   sceneSurfaceArea(m_scene.arrays()), params, gpu::kPhotonPrimary);
+    context.submitAndWait([&](VkCommandBuffer cmd) {
+        vk::computeBarrier(cmd);
+        m_gatherGuide->record(cmd);
+    });
+    m_stats.add("photons.mapBytes", m_gatherGuide->bytes());
+    m_stats.add("photons.seconds", secondsSince(start));
+    m_stats.add("timings.photon.gatherGuideSeconds", secondsSince(start));
 }
 
 void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
@@ -173,12 +216,15 @@ void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
                                             vk::kStorageUsage);
     m_visiblePass = std::make_unique<VisiblePointPass>(context, m_scene.buffers(), film.sums(), *m_points,
                                                        *frame.rasterDirect);
-    m_gatherPass = std::make_unique<FinalGatherPass>(context, m_scene.buffers(), film.sums(), *m_points, gatherGrid);
+    m_gatherPass = std::make_unique<FinalGatherPass>(context, m_scene.buffers(), film.sums(), *m_points, gatherGrid,
+                                                     m_gatherGuide.get());
     m_causticPass.reset();
     if (m_causticMap)
         m_causticPass = std::make_unique<CausticEstimatePass>(context, m_scene.buffers(), film.sums(), *m_points,
                                                               m_causticMap->grid());
 
+    m_timer = std::make_unique<vk::StageTimer>(context, std::vector<std::string>(kCameraStageKeys, kCameraStageKeys + kStageCount),
+                                               kStageCount * maxSamplesPerBatch());
     m_visibleParams = visiblePointParams(frame, m_scene.buffers().lightCount());
     m_causticParams = {};
     if (m_causticMap) m_causticParams.grid = m_causticMap->grid().view(m_causticMap->photonPower());
@@ -198,33 +244,45 @@ void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
     m_gatherParams.k = p.gatherK;
     m_gatherParams.maxRadius = globalRadius;
     m_gatherParams.maxSpecularDepth = kMaxSpecularDepth;
+    if (m_gatherGuide) m_gatherParams.guide = m_gatherGuide->params();
 
     m_stats.set("settings.photon.radius", m_radius);
     m_stats.set("settings.photon.globalRadius", globalRadius);
 }
 
 void PhotonIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) {
+    m_timer->beginRecording(cmd);
     for (uint32_t sample = first; sample < first + count; ++sample) {
         m_visibleParams.sampleIndex = sample;
+        m_timer->begin(cmd, kStageVisiblePoints);
         m_visiblePass->record(cmd, m_visibleParams, m_window);
         vk::computeBarrier(cmd);
+        m_timer->end(cmd, kStageVisiblePoints);
         if (m_causticPass) {
+            m_timer->begin(cmd, kStageCaustics);
             m_causticPass->record(cmd, m_causticParams, m_window);
             vk::computeBarrier(cmd);
+            m_timer->end(cmd, kStageCaustics);
         }
         // One dispatch per gather ray keeps each invocation's loops within lavapipe's limit.
         m_gatherParams.sampleIndex = sample;
+        m_timer->begin(cmd, kStageGathers);
         for (uint32_t ray = 0; ray < std::max(1u, m_settings.gatherRays); ++ray) {
             m_gatherParams.rayIndex = ray;
             m_gatherPass->record(cmd, m_gatherParams, m_window);
             vk::computeBarrier(cmd);
         }
+        m_timer->end(cmd, kStageGathers);
     }
 }
 
 void PhotonIntegrator::report(Stats& stats) const {
     m_settings.report(stats);
     stats.merge(m_stats);
+    if (m_timer && m_timer->enabled()) {
+        const std::vector<double> seconds = m_timer->seconds();
+        for (uint32_t stage = 0; stage < kStageCount; ++stage) stats.set(kCameraStageKeys[stage], seconds[stage]);
+    }
     reportPhotonSummary(stats);
 }
 

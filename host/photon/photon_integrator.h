@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "gpu_scene/gpu_scene.h"
+#include "guiding/guide_cache.h"
 #include "photon/radiance_photons.h"
 #include "photon/caustic_estimate_pass.h"
 #include "photon/final_gather_pass.h"
@@ -19,6 +20,7 @@
 #include "photon/photon_settings.h"
 #include "photon/photon_map.h"
 #include "shared/photon_render.glsl"
+#include "vk/stage_timer.h"
 
 namespace vkp {
 
@@ -38,6 +40,7 @@ public:
 
 private:
     void buildMaps(const Frame& frame);
+    void buildGatherGuide(const PhotonMapStats& globalStats);
 
     const GpuScene& m_scene;
     PhotonIntegratorSettings m_settings;
@@ -47,10 +50,12 @@ private:
     std::unique_ptr<PhotonMap> m_globalMap;
     std::unique_ptr<PhotonMap> m_causticMap;
     std::unique_ptr<RadiancePhotons> m_radiancePhotons;
+    std::unique_ptr<GuideCache> m_gatherGuide;  // gather directions from the global map's indirect photons
     std::unique_ptr<vk::Buffer> m_points;
     std::unique_ptr<VisiblePointPass> m_visiblePass;
     std::unique_ptr<FinalGatherPass> m_gatherPass;
     std::unique_ptr<CausticEstimatePass> m_causticPass;
+    std::unique_ptr<vk::StageTimer> m_timer;  // GPU time of the camera passes (kStage*)
     gpu::VisiblePointParams m_visibleParams{};
     gpu::CausticEstimateParams m_causticParams{};
     gpu::FinalGatherParams m_gatherParams{};
@@ -63,7 +68,8 @@ private:
 gpu::VisiblePointParams visiblePointParams(const Frame& frame, uint32_t lightCount);
 // Throws InputError when the scene's lights emit no power (no photons to trace).
 void requireLightPower(const GpuScene& scene);
-// "photons.pathsTraced", "photons.dropped" and "photons.seconds" of one map build, added.
+// "photons.pathsTraced", "photons.dropped" and "photons.seconds" of one map build, added, and
+// the build's stages in "timings.photon.*".
 void reportMapBuild(Stats& stats, const PhotonMapStats& map);
 // The user's summary of the maps (notes) and a warning for dropped photons, from "photons.*".
 void reportPhotonSummary(Stats& stats);

@@ -91,6 +91,11 @@ PhotonMap::PhotonMap(vk::Context& context, const Scene& scene, const SceneArrays
     grid.cellSize = settings.cellSize;
     grid.requiredFlags = settings.requiredFlags;
     grid.rejectedFlags = settings.rejectedFlags;
+    // The hash table follows the photons the first build stores (PhotonGrid::fitTable), not the
+    // slots: until then it is the smallest. Density control reads the grid between its rounds,
+    // so its table is sized for the slots from the start.
+    const bool fitTable = settings.fitGridTable && deposit.mode != gpu::kDepositDensity;
+    if (fitTable) grid.tableSize = 1;
     m_grid = std::make_unique<PhotonGrid>(context, m_map, m_capacity, grid, settings.segmentShift);
     // A shorter (stopped) chunk must not reallocate the slots the passes below are bound to.
     m_tracer.reserve(m_chunkPaths, settings.maxDeposits);
@@ -134,6 +139,9 @@ PhotonMapStats PhotonMap::buildGrid(PhotonMapStats stats, bool deposit) {
     const double cpuStart = processCpuSeconds();
     if (m_settings.cellSizeFor) m_grid->setCellSize(m_settings.cellSizeFor(deposit ? stats.candidates : stats.stored));
     stats.cellSize = m_grid->settings().cellSize;
+    if (!m_gridBuilt && m_settings.fitGridTable && m_settings.deposit.mode != gpu::kDepositDensity)
+        m_grid->fitTable(static_cast<uint32_t>(std::min<uint64_t>(stats.stored, UINT32_MAX)));
+    m_gridBuilt = true;
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
         vk::computeBarrier(cmd);
         m_grid->record(cmd);
@@ -156,6 +164,7 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
     const bool densityControl = m_settings.deposit.mode == gpu::kDepositDensity;
     const bool redistribute = densityControl && m_settings.deposit.redistribute;
     uint32_t storedSoFar = 0;  // photons in the grid the next round reads
+    uint64_t kept = 0;         // photons the chunks so far keep
     uint32_t done = 0;
     for (; done < m_settings.paths; done += m_chunkPaths) {
         PhotonSettings chunk;
@@ -171,9 +180,6 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
         chunk.seed = m_settings.seed;
         chunk.requiredFlags = m_settings.requiredFlags;
         stats.traced += m_tracer.trace(chunk);
-        // Room for every photon of the map's kinds traced so far (the most the compaction keeps):
-        // the map's segments grow with the photons, not with paths x maxDeposits.
-        reserve(candidateCount(stats.traced, m_settings.requiredFlags, m_settings.rejectedFlags));
         bool freshDeposit = false;
         if (!m_compaction) {  // the first chunk is the largest: the tracer's slots never move after it
             gpu::PhotonCompactParams params{};
@@ -187,10 +193,13 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
                 m_deposit = std::make_unique<PhotonDeposit>(m_context, m_buffers, m_settings.deposit.importons->table(),
                                                             m_tracer.photons(), m_chunkPaths * m_settings.maxDeposits,
                                                             m_map, *m_grid, m_settings.segmentShift);
-                reserve(m_map.allocated());  // the deposit's share of what the map holds
                 freshDeposit = true;
             }
         }
+        // The deposit decision and the count of the photons the map keeps, then room for exactly
+        // those (the map's memory follows what it keeps, not what the paths deposited), then the
+        // append.
+        const uint32_t slotCount = chunk.paths * chunk.maxDeposits;
         m_context.submitAndWait([&](VkCommandBuffer cmd) {
             if (freshDeposit) m_deposit->recordClear(cmd);
             vk::transferToComputeBarrier(cmd);  // the map's clearing (and the deposit's)
@@ -204,12 +213,20 @@ PhotonMapStats PhotonMap::build(uint32_t firstPath) {
                     vk::computeBarrier(cmd);
                 }
             }
-            m_compaction->record(cmd, chunk.paths * chunk.maxDeposits, static_cast<uint32_t>(m_map.allocated()));
+            m_compaction->recordCount(cmd, slotCount);
+            vk::computeToHostBarrier(cmd);
+        });
+        // Read-back (docs/architecture.md): the chunk's kept photons, the map's growth.
+        kept += m_compaction->keptCount();
+        reserve(kept);
+        m_context.submitAndWait([&](VkCommandBuffer cmd) {
+            vk::transferToComputeBarrier(cmd);  // new room's zeroing
+            m_compaction->recordAppend(cmd, slotCount, static_cast<uint32_t>(m_map.allocated()));
             if (densityControl) {  // the next round's current density sees this round's photons
                 vk::computeBarrier(cmd);
                 m_grid->record(cmd);
-                vk::computeToHostBarrier(cmd);
             }
+            vk::computeToHostBarrier(cmd);
         });
         // Read-back (docs/architecture.md): the photons stored so far, the size of the next round's
         // redistribution dispatch.
@@ -250,7 +267,6 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::SegmentedBuffer& slots, uint3
     params.capacity = m_capacity;
     params.requiredFlags = m_settings.requiredFlags;
     params.rejectedFlags = m_settings.rejectedFlags;
-    reserve(slotCount);
     // The slots go through the compaction (and the deposit decision, which writes into them) in
     // chunks of m_chunkPaths paths, each copied into one scratch buffer: the persistent slots stay
     // undecided, and they may span more than one storage buffer's range.
@@ -259,13 +275,15 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::SegmentedBuffer& slots, uint3
                              vk::kStorageUsage);
     const PhotonCompaction compaction(m_context, scratch, chunkSlots, m_map, m_state, params);
     uint32_t state[gpu::kPhotonMapStateSize];
-    // One pass over the chunks into a fresh map: as they are, or as `decide` decides.
-    auto compact = [&](const PhotonDeposit* decide) {
+    // One pass over the chunks: each chunk's photons (as they are, or as `decide` decides)
+    // counted, then, when `append`, room for them in the map and their append. Returns the count.
+    auto compact = [&](const PhotonDeposit* decide, bool append) {
+        uint64_t kept = 0;
         for (uint32_t done = 0; done < m_settings.paths; done += m_chunkPaths) {
             const uint32_t paths = std::min(m_chunkPaths, m_settings.paths - done);
             const uint32_t count = paths * slotsPerPath;
             m_context.submitAndWait([&](VkCommandBuffer cmd) {
-                if (done == 0) {
+                if (done == 0 && append) {
                     m_map.fillZero(cmd);
                     m_state.fillZero(cmd);
                     if (decide) decide->recordClear(cmd);
@@ -278,19 +296,30 @@ PhotonMapStats PhotonMap::buildFromSlots(const vk::SegmentedBuffer& slots, uint3
                                    depositParams(firstPath + done, paths, 0));
                     vk::computeBarrier(cmd);
                 }
-                compaction.record(cmd, count, static_cast<uint32_t>(m_map.allocated()));
+                compaction.recordCount(cmd, count);
+                vk::computeToHostBarrier(cmd);
+            });
+            kept += compaction.keptCount();
+            if (!append) continue;
+            reserve(kept);
+            m_context.submitAndWait([&](VkCommandBuffer cmd) {
+                vk::transferToComputeBarrier(cmd);  // new room's zeroing
+                compaction.recordAppend(cmd, count, static_cast<uint32_t>(m_map.allocated()));
                 vk::computeToHostBarrier(cmd);
             });
         }
-        m_state.download(state, sizeof(state));
+        if (append) m_state.download(state, sizeof(state));
+        return kept;
     };
-    // With a deposit mode, the undecided pass counts the candidates (which set the cell size).
-    compact(nullptr);
-    stats.candidates = state[gpu::kPhotonMapStateCount] + state[gpu::kPhotonMapStateDropped];
     if (deposit) {
+        // The undecided photons are only counted (they set the cell size); the decided ones stored.
+        stats.candidates = compact(nullptr, false);
         const PhotonDeposit decide(m_context, m_buffers, m_settings.deposit.importons->table(), scratch, chunkSlots, m_map,
                                    *m_grid, m_settings.segmentShift);
-        compact(&decide);
+        compact(&decide, true);
+    } else {
+        compact(nullptr, true);
+        stats.candidates = state[gpu::kPhotonMapStateCount] + state[gpu::kPhotonMapStateDropped];
     }
     m_photonPower = static_cast<float>(m_totalPower / m_settings.paths);
     stats.stored = state[gpu::kPhotonMapStateCount];

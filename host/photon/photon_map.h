@@ -51,6 +51,10 @@ struct PhotonMapSettings {
     // Photons per segment of the map and its grid, log2 (0: 128 MiB segments, 4 M photons).
     // Lower values split small maps over many buffers: tests compare them with one buffer.
     uint32_t segmentShift = 0;
+    // Size the grid's hash table for the photons of the first build (PhotonGrid::fitTable) rather
+    // than for the slots. Off for a map whose grid a pass binds before the first build (the
+    // progressive integrator's): the table's buffer must not change under it.
+    bool fitGridTable = true;
     // Checked between chunks (may be null): a stopped build keeps the chunks traced so far, with
     // the photon power normalised by the paths actually traced (at least one small chunk).
     const RenderControl* control = nullptr;
@@ -129,6 +133,7 @@ private:
     std::unique_ptr<PhotonCompaction> m_compaction;  // bound to the tracer's slots (allocated by the first chunk)
     std::unique_ptr<PhotonDeposit> m_deposit;        // likewise; only with a deposit mode other than all
     uint64_t m_lastStored = 0;
+    bool m_gridBuilt = false;  // the grid's table is fitted to the first build's photons
     // Allocates the map's segments for `photons` and the grid's for all the map holds.
     void reserve(uint64_t photons);
     // The hash grid over the photons stored (or, deciding deposits, the candidates), timed into

@@ -20,6 +20,7 @@ void PhotonIntegratorSettings::check() const {
     checkRange("--gather-rays", gatherRays, 0u, 1024u);
     checkRange("--gather-k", gatherK, 1u, gpu::kMaxGatherK);
     checkRange("--radiance-photons", radiancePhotonStride, 0u, 1024u);
+    checkRange("--gather-guide", gatherGuide, 0.0f, 1.0f);
     if (radius != 0.0f) checkPositive("--radius", radius);
     if (!(coneK >= 1.0f)) throw InputError(fmt::format("cone filter k {}: must be at least 1", coneK));
     checkRange("--alpha", alpha, 0.01f, 0.99f);
@@ -40,6 +41,7 @@ void PhotonIntegratorSettings::report(Stats& stats) const {
     stats.set("settings.photon.causticPhotons", causticPaths);
     stats.set("settings.photon.gatherRays", gatherRays);
     stats.set("settings.photon.gatherK", gatherK);
+    stats.set("settings.photon.gatherGuide", gatherGuide);
     stats.set("settings.photon.radiancePhotons", radiancePhotonStride);
     stats.set("settings.photon.progressive", progressive);
     stats.set("settings.photon.alpha", alpha);
@@ -70,6 +72,11 @@ void PhotonIntegratorSettings::addOptions(IntegratorOptions& options) {
                      "Final gather rays per sample (0: read the global map at the visible point)")
         ->capture_default_str();
     group.add_option("--gather-k", gatherK, "Nearest photons per global-map estimate")->capture_default_str();
+    group.add_option("--gather-guide", gatherGuide,
+                     "Probability of a final-gather direction importance-sampled from the global map's indirect photons "
+                     "(a guiding grid per cell, Jensen 1995), else from the BSDF; weighted by the mixture density "
+                     "(0: the BSDF's alone)")
+        ->capture_default_str();
     group.add_option("--radiance-photons", radiancePhotonStride,
                      "About every n-th global photon carries a precomputed irradiance estimate that final gathers read "
                      "(0: a k-nearest estimate at every gather hit)")

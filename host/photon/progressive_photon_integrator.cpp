@@ -37,6 +37,7 @@ void ProgressivePhotonIntegrator::prepare(const Frame& frame, const Film& film) 
     m_importons = makeImportonMap(m_scene, frame, p.deposit);
     reportImportons(m_stats, m_importons.get());
     mapSettings.deposit = depositSettings(p.deposit, p.deposit.mode, m_importons.get());
+    mapSettings.fitGridTable = false;  // the update pass binds the grid before the first pass builds it
     m_map = std::make_unique<PhotonMap>(context, m_scene.scene(), m_scene.arrays(), m_scene.buffers(), mapSettings);
 
     m_points = std::make_unique<vk::Buffer>(context, "visible points", m_pixels * sizeof(gpu::GpuVisiblePoint),

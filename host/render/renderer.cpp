@@ -29,6 +29,7 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     settings.check();
     vk::Context& context = m_scene.context();
     const auto start = Clock::now();
+    context.memory().resetPeak();  // this render's peak: the scene and what the render allocates
 
     Frame frame = makeFrame(m_scene.scene(), settings);
     clearTerminations(context);
@@ -104,6 +105,7 @@ RenderResult Renderer::render(const FrameSettings& settings, Integrator& integra
     stats.set("timings.bvhSeconds", m_scene.arrays().bvhBuildSeconds);
     stats.set("timings.uploadSeconds", m_scene.uploadSeconds());
     stats.set("timings.renderSeconds", renderSeconds);
+    stats.set("memory.peakBytes", context.memory().peak());  // device memory held at once, at most
     const uint64_t cameraPaths = uint64_t(result.image.width) * result.image.height * loop.samplesDone;
     stats.set("counters.samplesPerPixel", loop.samplesDone);
     stats.set("counters.cameraPaths", cameraPaths);

@@ -43,6 +43,8 @@ Buffer::Buffer(Context& context, std::string name, VkDeviceSize size, VkBufferUs
     try {
         check(vkAllocateMemory(device, &alloc, nullptr, &m_memory),
               fmt::format("allocating {:.1f} MiB for the {} buffer", size / 1048576.0, m_name));
+        m_allocated = req.size;
+        context.memory().allocated(m_allocated);
         check(vkBindBufferMemory(device, m_buffer, m_memory, 0), "binding buffer memory");
         VkPhysicalDeviceMemoryProperties memProps{};
         vkGetPhysicalDeviceMemoryProperties(context.physicalDevice(), &memProps);
@@ -69,6 +71,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
         m_buffer = std::exchange(other.m_buffer, VK_NULL_HANDLE);
         m_memory = std::exchange(other.m_memory, VK_NULL_HANDLE);
         m_size = std::exchange(other.m_size, 0);
+        m_allocated = std::exchange(other.m_allocated, 0);
         m_mapped = std::exchange(other.m_mapped, nullptr);
     }
     return *this;
@@ -80,6 +83,7 @@ void Buffer::release() {
     if (m_mapped) vkUnmapMemory(device, m_memory);
     if (m_buffer) vkDestroyBuffer(device, m_buffer, nullptr);
     if (m_memory) vkFreeMemory(device, m_memory, nullptr);
+    m_context->memory().freed(std::exchange(m_allocated, 0));
     m_buffer = VK_NULL_HANDLE;
     m_memory = VK_NULL_HANDLE;
     m_mapped = nullptr;

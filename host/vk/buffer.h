@@ -60,6 +60,7 @@ private:
     VkBuffer m_buffer = VK_NULL_HANDLE;
     VkDeviceMemory m_memory = VK_NULL_HANDLE;
     VkDeviceSize m_size = 0;
+    VkDeviceSize m_allocated = 0;  // bytes of m_memory (counted by the context's MemoryTracker)
     void* m_mapped = nullptr;  // set when the memory is host-visible and coherent
 };
 

@@ -130,6 +130,8 @@ void computeBarrier(VkCommandBuffer cmd);
 void computeToHostBarrier(VkCommandBuffer cmd);
 // Makes transfer writes (fills, copies) visible to compute shaders.
 void transferToComputeBarrier(VkCommandBuffer cmd);
+// Makes compute and transfer writes visible to later transfers (a copy after a fill or a kernel).
+void transferBarrier(VkCommandBuffer cmd);
 
 inline uint32_t groupCount(uint64_t items, uint32_t groupSize) {
     return static_cast<uint32_t>((items + groupSize - 1) / groupSize);

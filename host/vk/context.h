@@ -13,6 +13,7 @@
 #include <vulkan/vulkan.h>
 
 #include "vk/compute_pipeline.h"
+#include "vk/memory_tracker.h"
 
 namespace vkp::vk {
 
@@ -76,6 +77,8 @@ public:
     bool geometryShaderEnabled() const { return m_geometryShader; }
     // Largest single buffer: maxMemoryAllocationSize and maxBufferSize, the smaller.
     VkDeviceSize maxAllocationSize() const { return m_maxAllocationSize; }
+    // Device memory held by this context's buffers and images, now and at most (vk/memory_tracker.h).
+    MemoryTracker& memory() const { return m_memory; }
     // Size of the largest device-local memory heap (what buffers of the device can hold at most).
     VkDeviceSize deviceLocalHeapSize() const;
 
@@ -113,6 +116,7 @@ private:
     VkPhysicalDeviceProperties m_properties{};
     VkPhysicalDeviceMemoryProperties m_memoryProperties{};
     VkDeviceSize m_maxAllocationSize = 0;
+    mutable MemoryTracker m_memory;
     std::string m_deviceName;
     uint32_t m_queueFamily = 0;
     VkDevice m_device = VK_NULL_HANDLE;

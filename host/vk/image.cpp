@@ -1,5 +1,7 @@
 #include "vk/image.h"
 
+#include <utility>
+
 #include <fmt/format.h>
 
 #include "util/errors.h"
@@ -34,6 +36,8 @@ Image::Image(Context& context, std::string name, uint32_t width, uint32_t height
             context.findMemoryType(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
         check(vkAllocateMemory(device, &alloc, nullptr, &m_memory),
               fmt::format("allocating memory for the {} image", m_name));
+        m_allocated = req.size;
+        context.memory().allocated(m_allocated);
         check(vkBindImageMemory(device, m_image, m_memory, 0), "binding image memory");
         VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         viewInfo.image = m_image;
@@ -55,6 +59,7 @@ void Image::release() {
     if (m_view) vkDestroyImageView(device, m_view, nullptr);
     if (m_image) vkDestroyImage(device, m_image, nullptr);
     if (m_memory) vkFreeMemory(device, m_memory, nullptr);
+    m_context.memory().freed(std::exchange(m_allocated, 0));
     m_view = VK_NULL_HANDLE;
     m_image = VK_NULL_HANDLE;
     m_memory = VK_NULL_HANDLE;

@@ -37,6 +37,7 @@ private:
     VkImageAspectFlags m_aspect;
     VkImage m_image = VK_NULL_HANDLE;
     VkDeviceMemory m_memory = VK_NULL_HANDLE;
+    VkDeviceSize m_allocated = 0;  // bytes of m_memory (counted by the context's MemoryTracker)
     VkImageView m_view = VK_NULL_HANDLE;
 };
 

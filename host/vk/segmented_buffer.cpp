@@ -12,6 +12,7 @@
 
 #include "util/errors.h"
 #include "util/host_memory.h"
+#include "vk/compute_kernel.h"
 #include "vk/context.h"
 
 namespace vkp::vk {
@@ -19,6 +20,7 @@ namespace {
 
 constexpr VkDeviceSize kSegmentBytes = VkDeviceSize(1) << 27;  // 128 MiB
 constexpr VkDeviceSize kTableHeaderBytes = 16;                 // shift, mask, segments, pad (segmented.glsl)
+constexpr uint64_t kMinGrowth = 4096;                          // elements a growing last segment adds at least
 
 // The live tables and how many segments each addresses (segmentsAddressedBy), by handle: kernels
 // bind a table as a plain storage buffer, so this is how a kernel learns what it bound.
@@ -53,6 +55,7 @@ SegmentedBuffer& SegmentedBuffer::operator=(SegmentedBuffer&& other) noexcept {
         m_allocated = std::exchange(other.m_allocated, 0);
         m_table = std::move(other.m_table);
         m_segments = std::move(other.m_segments);
+        m_segmentElements = std::move(other.m_segmentElements);
     }
     return *this;
 }
@@ -74,6 +77,7 @@ SegmentedBuffer::SegmentedBuffer(Context& context, std::string name, uint32_t el
 }
 
 uint64_t SegmentedBuffer::segmentElements(size_t segment) const {
+    if (segment < m_segmentElements.size()) return m_segmentElements[segment];
     const uint64_t first = uint64_t(segment) << m_shift;
     return std::min<uint64_t>(uint64_t(1) << m_shift, m_capacity - first);
 }
@@ -92,16 +96,39 @@ void SegmentedBuffer::reserve(uint64_t count) {
                                        "{}: reduce the photon count",
                                        m_name, needed / 1048576.0, count, m_context->deviceName(), limit / 1048576.0,
                                        cpu ? "of host memory available" : "of memory left in its heap"));
-    const size_t firstNew = m_segments.size();
-    while (m_allocated < count) {
-        const uint64_t elements = segmentElements(m_segments.size());
-        m_segments.emplace_back(*m_context, fmt::format("{} segment {}", m_name, m_segments.size()),
-                                std::max<VkDeviceSize>(16, elements * m_elementSize), kSegmentUsage);
-        m_allocated += elements;
-    }
+    // Every segment but the last holds 2^shift elements; the last one holds what was reserved,
+    // grown geometrically (x1.5, at least kMinGrowth elements) by a copy into a larger buffer:
+    // an array allocates about what it holds, not a whole segment, and stays one segment
+    // (the fast form of its kernels) until it passes 2^shift elements.
     m_context->submitAndWait([&](VkCommandBuffer cmd) {
-        for (size_t i = firstNew; i < m_segments.size(); ++i) m_segments[i].fillZero(cmd);
+        transferBarrier(cmd);  // earlier writes into the segment a copy reads
+        while (m_allocated < count) {
+            const size_t last = m_segments.size();
+            const bool growLast = last > 0 && m_segmentElements.back() < (uint64_t(1) << m_shift);
+            const size_t segment = growLast ? last - 1 : last;
+            const uint64_t full = std::min<uint64_t>(uint64_t(1) << m_shift, m_capacity - (uint64_t(segment) << m_shift));
+            const uint64_t held = growLast ? m_segmentElements.back() : 0;
+            const uint64_t want = count - (uint64_t(segment) << m_shift);
+            const uint64_t elements = std::min(full, std::max({want, held + held / 2, kMinGrowth}));
+            Buffer buffer(*m_context, fmt::format("{} segment {}", m_name, segment),
+                          std::max<VkDeviceSize>(16, elements * m_elementSize), kSegmentUsage);
+            buffer.fillZero(cmd);
+            if (growLast) {
+                transferBarrier(cmd);  // the zeroing before the copy over it
+                const VkBufferCopy region{0, 0, held * m_elementSize};
+                vkCmdCopyBuffer(cmd, m_segments.back().handle(), buffer.handle(), 1, &region);
+                m_retired.push_back(std::move(m_segments.back()));  // freed once the copy has run
+                m_segments.back() = std::move(buffer);
+                m_segmentElements.back() = elements;
+            } else {
+                m_segments.push_back(std::move(buffer));
+                m_segmentElements.push_back(elements);
+            }
+            m_allocated += elements - held;
+        }
+        transferToComputeBarrier(cmd);
     });
+    m_retired.clear();
     writeTable();
 }
 

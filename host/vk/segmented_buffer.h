@@ -30,7 +30,9 @@ public:
                     uint32_t segmentShift = 0);
 
     // Makes elements [0, count) addressable (count is clamped to the capacity): allocates the
-    // missing segments, zero-filled, and rewrites the table. Throws RuntimeError (exit 1) when the
+    // missing segments, zero-filled, and rewrites the table. The last segment holds about what
+    // was reserved (it grows by x1.5 steps, its elements copied), so memory follows the count;
+    // call it between submissions, never while a recorded dispatch that binds the array waits. Throws RuntimeError (exit 1) when the
     // device cannot hold them.
     void reserve(uint64_t count);
 
@@ -100,6 +102,8 @@ private:
     uint64_t m_allocated = 0;
     Buffer m_table;
     std::vector<Buffer> m_segments;
+    std::vector<uint64_t> m_segmentElements;  // elements each segment holds (2^shift but the last)
+    std::vector<Buffer> m_retired;            // replaced by a larger copy during reserve()
 };
 
 }  // namespace vkp::vk

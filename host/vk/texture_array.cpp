@@ -91,6 +91,7 @@ TextureArray::TextureArray(Context& context, std::string name, uint32_t width, u
         alloc.memoryTypeIndex = context.findMemoryType(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
         check(vkAllocateMemory(device, &alloc, nullptr, &m_memory),
               fmt::format("allocating {:.1f} MiB for the {} image", req.size / 1048576.0, m_name));
+        context.memory().allocated(m_bytes);
         check(vkBindImageMemory(device, m_image, m_memory, 0), "binding image memory");
         for (VkFormat format : {kUnorm, VK_FORMAT_R8G8B8A8_SRGB}) {
             VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
@@ -152,7 +153,10 @@ void TextureArray::release() {
     if (m_srgbView) vkDestroyImageView(device, m_srgbView, nullptr);
     if (m_unormView) vkDestroyImageView(device, m_unormView, nullptr);
     if (m_image) vkDestroyImage(device, m_image, nullptr);
-    if (m_memory) vkFreeMemory(device, m_memory, nullptr);
+    if (m_memory) {
+        vkFreeMemory(device, m_memory, nullptr);
+        m_context.memory().freed(m_bytes);
+    }
     m_sampler = VK_NULL_HANDLE;
     m_srgbView = m_unormView = VK_NULL_HANDLE;
     m_image = VK_NULL_HANDLE;

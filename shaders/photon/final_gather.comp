@@ -20,6 +20,9 @@
 #include "shared/photon_render.glsl"
 #define PHOTON_GRID_BINDING kFinalGatherGridBinding
 #include "photon/photon_gather.glsl"
+#define GUIDE_CACHE_CELLS_BINDING kFinalGatherGuideCellsBinding
+#define GUIDE_CACHE_CDFS_BINDING kFinalGatherGuideCdfsBinding
+#include "guiding/guide_cache_access.glsl"
 
 layout(local_size_x = kPhotonEstimateGroupSize) in;
 
@@ -30,17 +33,61 @@ layout(push_constant) uniform Push { FinalGatherParams params; };
 
 const uint kFinalGatherStream = 0x46474154u;  // "FGAT"
 
-// Radiance arriving at the visible point along one BSDF-sampled direction, divided by its pdf
-// and multiplied by f cos (the sample's weight).
-vec3 gatherRay(GpuVisiblePoint vp, VisibleSurface s, inout Sampler rng) {
+float gatherCdf[kMaxGuideCells];  // the visible point's cached grid, as a CDF
+
+// A direction at the visible point and its weight f cos / pdf: with probability `mix` from the
+// guiding cache's grid (Jensen 1995: the photons' incoming flux; shared/papers/001), else from the
+// BSDF, weighted by the mixture density mix p_grid + (1 - mix) p_bsdf (one-sample MIS, the
+// balance heuristic), so the estimate stays that of BSDF sampling in expectation. Returns false
+// for no direction (the BSDF's delta lobes, which the visible point does not follow).
+bool sampleGatherDirection(VisibleSurface s, vec3 position, bool frontFace, inout Sampler rng, out vec3 dir, out vec3 weight) {
     vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
-    BsdfSample bs = sampleBsdf(s.bsdf, s.wo, (vp.flags & kVisiblePointFrontFace) != 0u, true, u);
-    // The visible point's delta lobes are not followed (as in visible_points.comp).
-    if (bs.lobe == kLobeNone || (bs.lobe & kLobeDelta) != 0u) return vec3(0.0f);
-    vec3 weight = bs.weight;
+    dir = vec3(0.0f);
+    weight = vec3(0.0f);
+    float mix = 0.0f;
+    CachedGuide cached;
+    uint gm = params.guide.gridSize & 0xffu;
+    uint gn = (params.guide.gridSize >> 8u) & 0xffu;
+    if (params.guide.mix > 0.0f && !specularIsDelta(s.bsdf) && s.bsdf.transmission == 0.0f) {
+        cached = findCachedGuide(params.guide.grid, position, s.n);
+        if (cached.found) {
+            mix = cachedGuideMix(cached, s.n, params.guide.mix);
+            loadCachedGuideCdf(cached, gatherCdf);
+        }
+    }
+    if (mix <= 0.0f) {
+        BsdfSample bs = sampleBsdf(s.bsdf, s.wo, frontFace, true, u);
+        if (bs.lobe == kLobeNone || (bs.lobe & kLobeDelta) != 0u) return false;
+        dir = normalize(toWorld(bs.wi, s.t, s.b, s.n));
+        weight = bs.weight;
+        return true;
+    }
+    vec3 wi;  // local to the shading frame
+    if (nextSample(rng) < mix) {
+        wi = toLocal(toWorld(guideSample(gatherCdf, gm, gn, u), cached.t, cached.b, cached.n), s.t, s.b, s.n);
+    } else {
+        BsdfSample bs = sampleBsdf(s.bsdf, s.wo, frontFace, true, u);
+        if (bs.lobe == kLobeNone || (bs.lobe & kLobeDelta) != 0u) return false;
+        wi = bs.wi;
+    }
+    if (wi.z <= 0.0f) return false;
+    vec3 wiGrid = toLocal(toWorld(wi, s.t, s.b, s.n), cached.t, cached.b, cached.n);
+    float pdf = mix * guidePdf(gatherCdf, gm, gn, wiGrid) + (1.0f - mix) * pdfBsdf(s.bsdf, s.wo, wi);
+    if (!(pdf > 0.0f)) return false;
+    dir = normalize(toWorld(wi, s.t, s.b, s.n));
+    weight = evalBsdf(s.bsdf, s.wo, wi) * (wi.z / pdf);
+    return true;
+}
+
+// Radiance arriving at the visible point along one gather direction, divided by its pdf and
+// multiplied by f cos (the sample's weight).
+vec3 gatherRay(GpuVisiblePoint vp, VisibleSurface s, inout Sampler rng) {
+    vec3 dir;
+    vec3 weight;
+    if (!sampleGatherDirection(s, vp.position, (vp.flags & kVisiblePointFrontFace) != 0u, rng, dir, weight)) return vec3(0.0f);
     // Non-delta lobes reflect: the ray starts outside any medium.
-    vec3 dir = normalize(toWorld(bs.wi, s.t, s.b, s.n));
-    Ray ray = rayFrom(offsetRayOrigin(vp.position, decodeOctahedral(vp.geometricNormal), dir), dir);
+    vec3 geometricNormal = decodeOctahedral(vp.geometricNormal);
+    Ray ray = rayFrom(offsetRayOrigin(vp.position, geometricNormal, dir), dir);
     for (uint depth = 0u; depth <= params.maxSpecularDepth; ++depth) {
         PathVertex v;
         // Escaped: environment light here is direct light (next-event estimation's at the visible

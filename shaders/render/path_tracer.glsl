@@ -33,8 +33,9 @@ layout(std430, set = 0, binding = kPathTraceRasterDirectBinding) readonly buffer
 #ifdef GUIDED
 #include "shared/guiding.glsl"
 #ifdef GUIDE_CACHE
-layout(std430, set = 0, binding = kPathTraceGuideCellsBinding) readonly buffer CacheCells { ivec4 cacheCells[]; };
-layout(std430, set = 0, binding = kPathTraceGuideCdfsBinding) readonly buffer CacheCdfs { float cacheCdfs[]; };
+#define GUIDE_CACHE_CELLS_BINDING kPathTraceGuideCellsBinding
+#define GUIDE_CACHE_CDFS_BINDING kPathTraceGuideCdfsBinding
+#include "guiding/guide_cache_access.glsl"
 layout(std430, set = 0, binding = kPathTraceGuideIrradianceBinding) readonly buffer CacheIrradiance { vec4 cacheIrradiance[]; };
 #else
 #define PHOTON_GRID_BINDING kPathTraceGuideBinding
@@ -98,11 +99,6 @@ struct VertexGuide {
     vec4 irradiance;  // the guiding photons' indirect irradiance (rgb; w 1 where there is an estimate)
 };
 VertexGuide vertexGuide;
-// A cached grid covers its normal bin axis's hemisphere; at a vertex whose shading normal is not
-// that axis, the directions of the surface's hemisphere outside it have no grid density, and only
-// the BSDF half of the mixture reaches them: at least this share stays the BSDF's there, so that
-// --guide-mix 1 (no BSDF half) does not lose their light (inside a curved furnace: about 3 % of it).
-const float kCachedGuideMaxMix = 0.9f;
 float guideCdf[kMaxGuideCells];  // the vertex's grid, as a CDF (guideFinalize)
 
 void prepareGuide(PathVertex v) {
@@ -116,17 +112,14 @@ void prepareGuide(PathVertex v) {
     vec3 gb = v.b;
     vec3 gnrm = v.n;
 #ifdef GUIDE_CACHE
-    ivec3 cell = gridCell(v.hit.position, guide.grid.invCellSize);
-    uint bucket = gridHash(cell, guide.grid.tableMask);
-    ivec4 cached = cacheCells[bucket];
-    if (cached.w == 0 || ivec3(cached.x, cached.y, cached.z) != cell) return;  // no grid here: the BSDF
-    uint bin = normalBin(v.n);
-    gnrm = normalBinAxis(bin);
-    orthonormalBasis(gnrm, gt, gb);
-    if (dot(gnrm, v.n) < 0.99999f) vertexGuide.mix = min(guide.mix, kCachedGuideMaxMix);
-    uint base = (bucket * kNormalBins + bin) * kMaxGuideCells;
-    for (uint i = 0u; i < kMaxGuideCells; ++i) guideCdf[i] = cacheCdfs[base + i];
-    vec4 cachedIrradiance = cacheIrradiance[bucket * kNormalBins + bin];
+    CachedGuide cached = findCachedGuide(guide.grid, v.hit.position, v.n);
+    if (!cached.found) return;  // no grid here: the BSDF
+    gnrm = cached.n;
+    gt = cached.t;
+    gb = cached.b;
+    vertexGuide.mix = cachedGuideMix(cached, v.n, guide.mix);
+    loadCachedGuideCdf(cached, guideCdf);
+    vec4 cachedIrradiance = cacheIrradiance[cached.bucket * kNormalBins + cached.bin];
     vertexGuide.irradiance = vec4(cachedIrradiance.rgb, 1.0f);
     uint photonsPerCell = guide.gridSize >> 16u;
     if (photonsPerCell > 0u) {

@@ -3,6 +3,7 @@
 #ifndef VKP_PHOTON_RENDER_GLSL
 #define VKP_PHOTON_RENDER_GLSL
 #include "compat.glsl"
+#include "guiding.glsl"
 #include "hash.glsl"
 #include "photon.glsl"
 #include "photon_grid.glsl"
@@ -61,8 +62,12 @@ struct FinalGatherParams {
     uint radianceLookup;  // 1: the grid holds radiance photons (read the nearest one), 0: photons
     float lookupRadius;   // radiance photons farther than this are not used
     uint pad0;
+    // Gather directions importance-sampled from the photons (the guiding cache's grids: their
+    // incoming flux) with probability guide.mix, else the BSDF's, weighted by the mixture density
+    // (one-sample MIS); guide.mix 0: the BSDF's alone.
+    GuideParams guide;
 };
-STATIC_ASSERT_SIZE(FinalGatherParams, 64)
+STATIC_ASSERT_SIZE(FinalGatherParams, 96)
 
 // sppm_update.comp: stochastic progressive photon mapping (Hachisuka & Jensen 2009), one update
 // of every pixel's statistics per photon pass.

@@ -202,6 +202,16 @@ TEST_F(PhotonIntegratorTest, GlassSphereCausticIsInTheImageAndRendersAreReproduc
                 focus.y, (unsigned long long)a.stats.get<uint64_t>("photons.causticStored"));
     EXPECT_GT(caustic, 3.0 * floor);
     EXPECT_GT(a.stats.get<uint64_t>("photons.causticStored"), 0u);
+    // The stats time every stage (photon passes by wall clock, camera passes by device
+    // timestamps) and hold the render's peak device memory, which the maps are part of.
+    for (const char* stage : {"traceSeconds", "gridSeconds", "radiancePhotonsSeconds", "visiblePointsSeconds",
+                              "causticLookupSeconds", "gatherSeconds"}) {
+        const double seconds = a.stats.get<double>(std::string("timings.photon.") + stage);
+        EXPECT_GT(seconds, 0.0) << stage;
+        EXPECT_LT(seconds, a.stats.get<double>("timings.renderSeconds")) << stage;
+    }
+    EXPECT_GT(a.stats.get<double>("photons.mapBytes"), 0.0);
+    EXPECT_GT(a.stats.get<double>("memory.peakBytes"), a.stats.get<double>("photons.mapBytes"));
 
     test::poisonDeviceMemory(256u << 20);  // memory a pass reads without writing would change the image
     const RenderResult b = renderer.render(frame, integrator);

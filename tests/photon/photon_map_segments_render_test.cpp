@@ -220,8 +220,9 @@ TEST_F(PhotonMapSegmentsTest, MoreThanTheDeviceHoldsIsARuntimeError) {
     vk::SegmentedBuffer huge(context, "test photon map", sizeof(gpu::GpuPhoton), elements);
     EXPECT_THROW(huge.reserve(elements), RuntimeError);
     EXPECT_EQ(huge.allocated(), 0u);
-    huge.reserve(1000);  // what fits still does
-    EXPECT_EQ(huge.allocated(), uint64_t(1) << huge.segmentShift());
+    huge.reserve(1000);  // what fits still does, about what was asked for
+    EXPECT_GE(huge.allocated(), 1000u);
+    EXPECT_LT(huge.allocated(), uint64_t(1) << huge.segmentShift());
 }
 
 }  // namespace

@@ -26,6 +26,8 @@ const uint kCausticEstimateGridBinding = kSceneBindingCount + 2u;       // the c
 const uint kFinalGatherFilmBinding = kSceneBindingCount + 0u;
 const uint kFinalGatherPointBinding = kSceneBindingCount + 1u;
 const uint kFinalGatherGridBinding = kSceneBindingCount + 2u;           // the global map's or the radiance photons' grid (two bindings)
+const uint kFinalGatherGuideCellsBinding = kSceneBindingCount + 4u;     // the guiding cache (guide_cache_access.glsl): cells
+const uint kFinalGatherGuideCdfsBinding = kSceneBindingCount + 5u;      // and grids
 
 // sppm_update.comp: the scene's (0 .. kSceneBindingCount - 1), then
 const uint kSppmUpdatePixelBinding = kSceneBindingCount + 0u;            // SppmPixel per pixel
@@ -57,7 +59,7 @@ struct CausticEstimateKernel {
 };
 struct FinalGatherKernel {
     static constexpr const char* kShader = "final_gather.comp";
-    static constexpr uint32_t kBindingCount = kFinalGatherGridBinding + 2u;
+    static constexpr uint32_t kBindingCount = kFinalGatherGuideCdfsBinding + 1u;
     static constexpr uint32_t kGroupSize = kPhotonEstimateGroupSize;
     using Push = FinalGatherParams;
 };
