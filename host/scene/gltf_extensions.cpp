@@ -29,7 +29,7 @@ constexpr std::array kExtensions{
     GltfExtension{"KHR_materials_anisotropy", Read,
                   "strength, rotation and texture: anisotropic GGX of the opaque layer's specular lobe"},
     GltfExtension{"KHR_materials_iridescence", Read,
-                  "thin-film Fresnel (factor, ior, thickness range, both textures) of the opaque layer and smooth glass"},
+                  "thin-film Fresnel (factor, ior, thickness range, both textures) of the opaque layer and of glass, smooth or rough"},
     GltfExtension{"KHR_materials_dispersion", Read,
                   "index by wavelength from the Abbe number: transmitting paths take one wavelength each"},
     GltfExtension{"EXT_texture_webp", Read, "WebP images (lossy or lossless, alpha too) decoded by libwebp, preferred to the fallback source"},

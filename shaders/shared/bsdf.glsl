@@ -13,7 +13,8 @@
 //  - with probability `transmission` (KHR_materials_transmission) the hit is instead a dielectric:
 //    smooth (roughness < kDeltaRoughness): exact Fresnel picks reflection or refraction (tinted by
 //    baseColor), thin-walled surfaces transmit straight through; rough: the GGX BSDF of Walter et al.
-//    2007 (shared/bsdf_rough_dielectric.glsl). The dielectric layer is sampled, not evaluated:
+//    2007 (shared/bsdf_rough_dielectric.glsl); both under KHR_materials_iridescence's film when seen
+//    from outside (a colour Fresnel). The dielectric layer is sampled, not evaluated:
 //    its samples carry kLobeDelta (no light sampling, no MIS), see sampleBsdf.
 // One code path for evaluation, sampling and pdf: sampling picks a lobe with a probability from
 // the lobes' estimated albedos at wo (bsdfLobeProbabilities), and returns the mixture pdf.
@@ -479,8 +480,23 @@ INLINE bool dielectricIsDelta(BsdfParams p) {
 
 // f of the rough dielectric layer (tinted, without the 'transmission' weight) for wo.z > 0 and wi on
 // either side; what sampleRoughDielectricLayer samples (tests check the two agree).
+// KHR_materials_iridescence's film on the dielectric layer, seen from outside (from inside, and for
+// an infinite ior, the plain Fresnel), and its parameters for the *RoughDielectricFilm functions.
+INLINE bool dielectricHasFilm(BsdfParams p, bool entering) {
+    return entering && iridescenceWeight(p) > 0.0f && !iorIsInfinite(p) && p.ior > 1.0f;
+}
+
+INLINE vec4 dielectricFilm(BsdfParams p) {
+    return vec4(iridescenceWeight(p), p.iridescenceIor, p.iridescenceThickness, dielectricF0(p.ior));
+}
+
 INLINE vec3 evalDielectricLayer(BsdfParams p, vec3 wo, vec3 wi, bool entering, bool radiance) {
     if (dielectricIsDelta(p)) return vec3(0.0f);
+    if (dielectricHasFilm(p, entering)) {
+        vec3 f = evalRoughDielectricFilm(wo, wi, bsdfAlpha(p), dielectricEta(p, entering), p.thinWalled != 0u,
+                                         radiance, dielectricFilm(p));
+        return wi.z < 0.0f ? p.baseColor * f : f;
+    }
     float f = evalRoughDielectric(wo, wi, bsdfAlpha(p), dielectricEta(p, entering), p.thinWalled != 0u,
                                   iorIsInfinite(p), radiance);
     return wi.z < 0.0f ? p.baseColor * f : vec3(f);
@@ -488,6 +504,9 @@ INLINE vec3 evalDielectricLayer(BsdfParams p, vec3 wo, vec3 wi, bool entering, b
 
 INLINE float pdfDielectricLayer(BsdfParams p, vec3 wo, vec3 wi, bool entering) {
     if (dielectricIsDelta(p)) return 0.0f;
+    if (dielectricHasFilm(p, entering))
+        return pdfRoughDielectricFilm(wo, wi, bsdfAlpha(p), dielectricEta(p, entering), p.thinWalled != 0u,
+                                      dielectricFilm(p));
     return pdfRoughDielectric(wo, wi, bsdfAlpha(p), dielectricEta(p, entering), p.thinWalled != 0u,
                               iorIsInfinite(p));
 }
@@ -504,18 +523,26 @@ INLINE BsdfSample sampleRoughDielectricLayer(BsdfParams p, vec3 wo, bool enterin
     s.pdf = 0.0f;
     s.weight = vec3(0.0f);
     float w;
-    s.wi = sampleRoughDielectric(wo, bsdfAlpha(p), dielectricEta(p, entering), p.thinWalled != 0u,
-                                 iorIsInfinite(p), radiance, u, w);
+    vec3 wFilm = vec3(0.0f);
+    if (dielectricHasFilm(p, entering)) {
+        s.wi = sampleRoughDielectricFilm(wo, bsdfAlpha(p), dielectricEta(p, entering), p.thinWalled != 0u, radiance,
+                                         dielectricFilm(p), u, wFilm);
+        w = max(wFilm.x, max(wFilm.y, wFilm.z));
+    } else {
+        s.wi = sampleRoughDielectric(wo, bsdfAlpha(p), dielectricEta(p, entering), p.thinWalled != 0u,
+                                     iorIsInfinite(p), radiance, u, w);
+        wFilm = vec3(w);
+    }
     if (s.wi.z == 0.0f || w <= 0.0f) {
         s.wi = vec3(0.0f, 0.0f, 1.0f);
         return s;
     }
     // pdf stays 0 as for every kLobeDelta sample (pdfDielectricLayer has the layer's density).
     if (s.wi.z > 0.0f) {
-        s.weight = vec3(w);
+        s.weight = wFilm;
         s.lobe = kLobeDelta | kLobeLayer;
     } else {
-        s.weight = p.baseColor * w;
+        s.weight = p.baseColor * wFilm;
         s.lobe = kLobeDelta | kLobeTransmission | kLobeLayer;
     }
     return s;

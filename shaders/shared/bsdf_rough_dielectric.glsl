@@ -16,11 +16,17 @@
 // s and the tint for transmission) and the pdf is F or 1 - F times the visible-normal density
 // times the half-vector Jacobian (1 / (4 |wo.m|) for reflection, |wi.m| / (wi.m + eta wo.m)^2
 // for refraction).
+// Under KHR_materials_iridescence's film (seen from outside) the microfacet Fresnel is a colour,
+// F = mix(F_plain, thin-film F, weight) per channel (the film and the base are non-absorbing, so
+// what it does not reflect it transmits): reflection is chosen with the mean P of F's channels, so
+// the pdf is P or 1 - P times the same densities, and the weights are G2 / G1(wo) times F / P or
+// (1 - F) / (1 - P) (the *Film functions below).
 #ifndef VKP_BSDF_ROUGH_DIELECTRIC_GLSL
 #define VKP_BSDF_ROUGH_DIELECTRIC_GLSL
 #include "compat.glsl"
 #include "constants.glsl"
 #include "bsdf_microfacet.glsl"
+#include "bsdf_iridescence.glsl"
 SHARED_BEGIN
 
 // The microfacet normal that takes wo to wi (either side); returns false when none does (wi on
@@ -104,6 +110,81 @@ INLINE vec3 sampleRoughDielectric(vec3 wo, float alpha, float eta, bool thin, bo
     }
     weight = ggxG2(wo, wi, alpha) / ggxG1(wo, alpha);
     if (radiance && !thin && wi.z < 0.0f) weight *= eta * eta;
+    return wi;
+}
+
+// The film over the rough dielectric: film = (weight, film ior, thickness in nm, the base's F0), seen
+// from outside (eta = 1 / ior < 1). The microfacet Fresnel per channel, in [0, 1].
+INLINE vec3 roughDielectricFilmFresnel(float cosOM, float eta, vec4 film) {
+    return clamp(mix(vec3(fresnelDielectric(cosOM, eta)), thinFilmFresnel(1.0f, film.y, cosOM, film.z, vec3(film.w)), film.x),
+                 vec3(0.0f), vec3(1.0f));
+}
+
+// The probability of sampling reflection for the colour Fresnel f: the mean of its channels, kept
+// off 0 and 1 so that neither branch is dropped where it carries light.
+INLINE float roughDielectricFilmReflectProbability(vec3 f) {
+    return clamp((f.x + f.y + f.z) * (1.0f / 3.0f), 1.0e-4f, 1.0f - 1.0e-4f);
+}
+
+// f (no cosine, no tint) per channel under the film, as evalRoughDielectric.
+INLINE vec3 evalRoughDielectricFilm(vec3 wo, vec3 wi, float alpha, float eta, bool thin, bool radiance, vec4 film) {
+    vec3 m;
+    if (!roughDielectricHalfVector(wo, wi, eta, thin, m)) return vec3(0.0f);
+    float cosOM = dot(wo, m);
+    if (cosOM <= 0.0f) return vec3(0.0f);
+    vec3 fr = roughDielectricFilmFresnel(cosOM, eta, film);
+    float dg = ggxD(m, alpha) * ggxG2(wo, wi, alpha);
+    if (wi.z > 0.0f) return fr * (dg / (4.0f * wo.z * wi.z));
+    if (thin) return (vec3(1.0f) - fr) * (dg / (4.0f * wo.z * -wi.z));
+    float cosIM = dot(wi, m);
+    float denom = cosIM + eta * cosOM;
+    vec3 f = (vec3(1.0f) - fr) * (dg * abs(cosIM) * cosOM / (wo.z * -wi.z * denom * denom));
+    return radiance ? f * (eta * eta) : f;
+}
+
+// Solid-angle density with which sampleRoughDielectricFilm produces wi.
+INLINE float pdfRoughDielectricFilm(vec3 wo, vec3 wi, float alpha, float eta, bool thin, vec4 film) {
+    vec3 m;
+    if (!roughDielectricHalfVector(wo, wi, eta, thin, m)) return 0.0f;
+    float cosOM = dot(wo, m);
+    if (cosOM <= 0.0f) return 0.0f;
+    float pr = roughDielectricFilmReflectProbability(roughDielectricFilmFresnel(cosOM, eta, film));
+    float pm = ggxVisibleNormalPdf(wo, m, alpha);
+    if (wi.z > 0.0f) return pr * pm / (4.0f * cosOM);
+    if (thin) return (1.0f - pr) * pm / (4.0f * cosOM);
+    float cosIM = dot(wi, m);
+    float denom = cosIM + eta * cosOM;
+    return (1.0f - pr) * pm * abs(cosIM) / (denom * denom);
+}
+
+// Samples the rough dielectric under the film: u.x picks reflection with probability P (the mean of
+// the colour Fresnel), u.yz the visible normal. weight = f |wi.z| / pdf per channel, without the tint.
+INLINE vec3 sampleRoughDielectricFilm(vec3 wo, float alpha, float eta, bool thin, bool radiance, vec4 film, vec3 u,
+                                      OUT(vec3) weight) {
+    weight = vec3(0.0f);
+    if (wo.z <= 0.0f) return vec3(0.0f);
+    vec3 m = sampleGgxVisibleNormal(wo, alpha, vec2(u.y, u.z));
+    float cosOM = dot(wo, m);
+    if (cosOM <= 0.0f) return vec3(0.0f);
+    vec3 fr = roughDielectricFilmFresnel(cosOM, eta, film);
+    float pr = roughDielectricFilmReflectProbability(fr);
+    bool reflected = u.x < pr;
+    vec3 wi;
+    if (reflected || thin) {
+        wi = 2.0f * cosOM * m - wo;
+        if (wi.z <= 0.0f) return vec3(0.0f);
+        if (!reflected) wi.z = -wi.z;  // thin wall: the mirrored reflection on the other side
+    } else {
+        float sin2T = eta * eta * (1.0f - cosOM * cosOM);
+        if (sin2T >= 1.0f) return vec3(0.0f);  // no total internal reflection seen from outside (eta < 1)
+        float cosT = sqrt(1.0f - sin2T);
+        wi = (eta * cosOM - cosT) * m - eta * wo;
+        if (wi.z >= 0.0f) return vec3(0.0f);
+        wi = normalize(wi);
+    }
+    float g = ggxG2(wo, wi, alpha) / ggxG1(wo, alpha);
+    weight = reflected ? fr * (g / pr) : (vec3(1.0f) - fr) * (g / (1.0f - pr));
+    if (radiance && !thin && !reflected) weight = weight * (eta * eta);
     return wi;
 }
 

@@ -31,7 +31,8 @@ const uint kHarnessSampleBsdf = 9u;
 const uint kHarnessRoughDielectric = 10u;
 const uint kHarnessAnisotropicBsdf = 11u;
 const uint kHarnessThinFilm = 12u;
-const uint kHarnessFunctionCount = 13u;
+const uint kHarnessRoughDielectricFilm = 13u;
+const uint kHarnessFunctionCount = 14u;
 
 INLINE uvec4 floatBits(vec4 v) {
     return uvec4(floatBitsToUint(v.x), floatBitsToUint(v.y), floatBitsToUint(v.z), floatBitsToUint(v.w));
@@ -139,6 +140,22 @@ INLINE uvec4 evaluateHarnessFunction(uint function, HarnessInput in_) {
         // KHR_materials_iridescence's film: ior 1 .. 2.5, thickness 0 .. 1200 nm, any angle and base.
         vec3 f = thinFilmFresnel(1.0f, 1.0f + 1.5f * in_.a.x, in_.a.y, 1200.0f * in_.a.z, vec3(in_.b.x, in_.b.y, in_.b.z));
         return floatBits(vec4(f, 0.0f));
+    }
+    if (function == kHarnessRoughDielectricFilm) {
+        // Rough glass (roughness 0.1 .. 1, solid or thin) under KHR_materials_iridescence's film (factor
+        // 0.25 .. 1, ior 1 .. 2.5, 100 .. 1100 nm), seen from outside: one sample of sampleBsdf (its
+        // direction and blue weight) and the layer's eval (green) and pdf at the sampled direction.
+        BsdfParams p = harnessBsdfParams(in_);
+        p.roughness = 0.1f + 0.9f * in_.a.w;
+        p.transmission = 1.0f;
+        p.thinWalled = in_.u.z & 1u;
+        p.iridescence = 0.25f + 0.75f * in_.b.z;
+        p.iridescenceIor = 1.0f + 1.5f * in_.a.z;
+        p.iridescenceThickness = 100.0f + 1000.0f * in_.b.y;
+        vec3 wo = harnessDirection(vec2(in_.a.x, in_.a.y));
+        BsdfSample s = sampleBsdf(p, wo, true, true, vec3(in_.b.w, in_.a.z, in_.b.x));
+        return floatBits(vec4(s.wi.z, s.weight.z, evalDielectricLayer(p, wo, s.wi, true, true).y,
+                              pdfDielectricLayer(p, wo, s.wi, true)));
     }
     return uvec4(0u);
 }

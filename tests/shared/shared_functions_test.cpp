@@ -141,6 +141,10 @@ TEST_F(SharedFunctions, ThinFilmFresnelMatches) {
     compare(gpu::kHarnessThinFilm, "thinFilmFresnel", {false, 1e-5f, 1e-3f});
 }
 
+TEST_F(SharedFunctions, RoughDielectricFilmMatches) {
+    compare(gpu::kHarnessRoughDielectricFilm, "rough dielectric under a film sample/eval/pdf", {false, 1e-4f, 2e-3f});
+}
+
 // The harness itself must be able to fail: a wrong function id gives different results.
 TEST_F(SharedFunctions, HarnessDetectsAMismatch) {
     const auto inputs = makeInputs(99);
