@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "gpu_scene/gpu_scene.h"
-#include "guiding/guide_cache.h"
+#include "photon/guide_cache.h"
 #include "photon/photon_map.h"
 #include "render/stats.h"
 

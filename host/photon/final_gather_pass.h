@@ -1,12 +1,12 @@
 // Final gather pass (shaders/photon/final_gather.comp): reads the scene, the visible points and a photon
 // grid (the global map's, or the radiance photons'), adds one gather ray's share of the indirect
 // light to each pixel's film entry (vec4: RGB sum, sample count). With a guiding cache
-// (guiding/guide_cache.h) over the global map's indirect photons, gather directions are
+// (photon/guide_cache.h) over the global map's indirect photons, gather directions are
 // importance-sampled from it, mixed with the BSDF's.
 #pragma once
 
 #include "gpu_scene/scene_buffers.h"
-#include "guiding/guide_cache.h"
+#include "photon/guide_cache.h"
 #include "photon/photon_grid.h"
 #include "shared/kernels/photon_estimates.glsl"
 #include "shared/photon_render.glsl"

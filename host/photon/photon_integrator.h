@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "gpu_scene/gpu_scene.h"
-#include "guiding/guide_cache.h"
+#include "photon/guide_cache.h"
 #include "photon/radiance_photons.h"
 #include "photon/caustic_estimate_pass.h"
 #include "photon/final_gather_pass.h"

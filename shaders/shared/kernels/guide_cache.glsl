@@ -1,4 +1,4 @@
-// Interface of guide_cache_build.comp (host/guiding/guide_cache.h). The guided path tracer reads
+// Interface of guide_cache_build.comp (host/photon/guide_cache.h). The guided path tracer reads
 // the cache it writes (shared/kernels/path_trace.glsl).
 #ifndef VKP_KERNELS_GUIDE_CACHE_GLSL
 #define VKP_KERNELS_GUIDE_CACHE_GLSL

@@ -1,4 +1,4 @@
-#include "guiding/guide_cache.h"
+#include "photon/guide_cache.h"
 
 #include <algorithm>
 

@@ -1,7 +1,8 @@
 // The guiding cache pass (shaders/guiding/guide_cache_build.comp): a coarse grid over the guiding
 // photons and, per bucket and normal bin, the CDF of the photon-flux grid of the bucket's cell, so
 // the guided path tracer looks a grid up instead of gathering k photons at every vertex, and the
-// grid's indirect irradiance (for guide-driven Russian roulette).
+// grid's indirect irradiance (for guide-driven Russian roulette). The photon integrator's final
+// gathers sample the same grids over the global map (photon/, below guiding/, so both reach it).
 #pragma once
 
 #include <memory>
