@@ -219,9 +219,15 @@ TEST_F(BvhGpu, TwoLevelHitsEqualTheHostTraversal) {
         if (!host.hit) continue;
         ++hitCount;
         instanceHits += host.triangle >= bvh.top.header.staticTriangles;
-        EXPECT_EQ(hits[i].triangle, host.triangle) << "ray " << i;
         EXPECT_TRUE(sameDistance(hits[i].t, host.t)) << "ray " << i << ": " << hits[i].t << " vs " << host.t;
-        if (!sameBarycentric(hits[i].b1, host.b1) || !sameBarycentric(hits[i].b2, host.b2)) {
+        // Off lavapipe a ray through an edge shared by two triangles at the same distance may
+        // take either (the H100 did on 3 of 8,000 rays, 2026-11-28): counted with the
+        // barycentric misses; lavapipe rounds as the host does and must pick the same one.
+        if (hits[i].triangle != host.triangle) {
+            EXPECT_FALSE(test::onLavapipe()) << "ray " << i << ": triangle " << hits[i].triangle << " vs " << host.triangle;
+            if (barycentricMisses++ < 5)
+                std::printf("ray %u: triangle %u vs host %u at the same distance\n", i, hits[i].triangle, host.triangle);
+        } else if (!sameBarycentric(hits[i].b1, host.b1) || !sameBarycentric(hits[i].b2, host.b2)) {
             if (barycentricMisses++ < 5)
                 std::printf("ray %u: barycentrics (%.9g, %.9g) vs host (%.9g, %.9g)\n", i, hits[i].b1, hits[i].b2,
                             host.b1, host.b2);

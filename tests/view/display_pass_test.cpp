@@ -113,7 +113,11 @@ TEST_F(DisplayPassTest, LinearImageIsTheHostResolvePlusProgressiveEstimates) {
         const glm::vec3 l = gpu::sppmRadiance(sppm[i], float(passes));
         for (int c = 0; c < 3; ++c) expected.pixels[3 * i + c] += l[c];
     }
-    EXPECT_EQ(withSppm.pixels, expected.pixels);
+    // lavapipe rounds as the host does; a GPU may contract the estimate's multiply-adds.
+    const uint32_t ulps = test::onLavapipe() ? 0 : 8;
+    for (size_t i = 0; i < expected.pixels.size(); ++i)
+        ASSERT_LE(test::ulpDistance(withSppm.pixels[i], expected.pixels[i]), ulps)
+            << "channel " << i << ": " << withSppm.pixels[i] << " vs " << expected.pixels[i];
     EXPECT_NE(withSppm.pixels, plain.pixels);
 }
 
