@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "image/metrics.h"
+#include "lights/default_lighting.h"
 #include "reference_image.h"
 #include "render/path_integrator.h"
 #include "render/renderer.h"

@@ -16,6 +16,7 @@
 #include "image/exr.h"
 #include "image/metrics.h"
 #include "image/png.h"
+#include "lights/default_lighting.h"
 #include "photon/deposition.h"
 #include "guiding/guide_debug.h"
 #include "photon/photon_settings.h"

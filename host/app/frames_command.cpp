@@ -11,6 +11,7 @@
 #include "image/exr.h"
 #include "image/metrics.h"
 #include "image/png.h"
+#include "lights/default_lighting.h"
 #include "render/aov.h"
 #include "animation/frame_scene.h"
 #include "animation/frame_update.h"
@@ -71,9 +72,16 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
     FrameSettings frameSettings = options.frame;
     LightSampling lightSampling = options.lightSampling;
     Bounds stillBounds;
+    // The environment too, chosen once for the still scene: the default sky never switches on or
+    // off between frames, and every range of a split sequence chooses the same.
+    Environment environment;
     {
-        const Scene still = source.stillScene();
+        Scene still = source.stillScene();
         stillBounds = still.bounds;
+        std::string note;
+        applyEnvironment(still, options.environment, note);
+        if (!note.empty() && !options.quiet) fmt::print(stderr, "{}\n", note);
+        environment = still.environment;
         if (still.cameras.empty()) {
             const Camera fixed = chooseCamera(still, options.frame.cameraIndex,
                                               float(options.frame.width) / float(options.frame.height), options.frame.view);
@@ -108,9 +116,7 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
         const auto frameStart = Clock::now();
         const double time = frameTime(f, options.fps);
         Scene scene = source.sceneAt(time);
-        std::string note;
-        applyEnvironment(scene, options.environment, note);
-        if (!note.empty() && !options.quiet && f == range.first) fmt::print(stderr, "{}\n", note);
+        scene.environment = environment;
         scene.energyCompensation = !options.noEnergyCompensation;
         scene.bounds = stillBounds;
         const double flattenSeconds = secondsSince(frameStart);

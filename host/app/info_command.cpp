@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "lights/default_lighting.h"
 #include "scene/environment.h"
 #include "scene/gltf_extensions.h"
 #include "scene/gltf_loader.h"
@@ -67,8 +68,9 @@ void printText(const json& r) {
     fmt::print("lights       {} point, {} spot, {} directional; {} emissive triangles\n", l["point"].get<int>(),
                l["spot"].get<int>(), l["directional"].get<int>(), l["emissiveTriangles"].get<uint64_t>());
     if (l["emissiveTriangles"].get<uint64_t>() > 0)
-        fmt::print("             emitters give {:.3g} % of the light a white sky would{}\n",
-                   100.0 * l["emitterShare"].get<double>(),
+        fmt::print("             emitters put {:.3g} % of the light a white sky would on the scene ({:.0f} % of "
+                   "theirs lands on a surface){}\n",
+                   100.0 * l["emitterShare"].get<double>(), 100.0 * l["emitterLanding"].get<double>(),
                    l["defaultSky"].get<bool>()
                        ? fmt::format(": under {:g} %, render adds the white sky", 100.0 * kMinEmitterShare)
                        : std::string());
@@ -129,11 +131,12 @@ json sceneReport(const Scene& scene) {
                         {"spot", byType[int(LightType::Spot)]},
                         {"directional", byType[int(LightType::Directional)]},
                         {"emissiveTriangles", emissiveTriangles}};
-    // The default lighting rule (scene/environment.h): is the white sky added without --env?
-    const EmitterShare emitters = emissiveTriangles > 0 ? emitterShare(scene) : EmitterShare{};
+    // The default lighting rule (lights/default_lighting.h): is the white sky added without --env?
+    const EmitterShare emitters = emissiveTriangles > 0 ? landedEmitterShare(scene) : EmitterShare{};
     const double share = emitters.share();
     report["lights"]["emitterShare"] = share;
     report["lights"]["emitterPower"] = emitters.emitterPower;  // W, as the light sampler weighs them
+    report["lights"]["emitterLanding"] = emitters.landing;     // the fraction of it that lands on the scene
     report["lights"]["defaultSkyPower"] = emitters.skyPower;
     report["lights"]["defaultSky"] = scene.lights.empty() && share < kMinEmitterShare;
     report["cameras"] = json::array();

@@ -21,8 +21,6 @@
 namespace vkp {
 namespace {
 
-constexpr float kPiF = 3.14159265358979f;
-
 std::string lowerExtension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -181,56 +179,6 @@ EmitterShare emitterShare(const Scene& scene) {
     const double radius = scene.bounds.empty() ? 0.0 : 0.5 * glm::length(glm::dvec3(scene.bounds.extent()));
     share.skyPower = environmentPower(sky, std::max(radius, 1e-6));
     return share;
-}
-
-void applyEnvironment(Scene& scene, const EnvironmentSettings& settings, std::string& note,
-                      const EnvironmentLimits& limits) {
-    settings.check();
-    Environment env;
-    glm::vec3 constant(0.0f);
-    if (settings.value.empty()) {
-        if (!scene.lights.empty()) {  // punctual lights light the scene; --exposure auto shows it
-            scene.environment = Environment{};
-            return;
-        }
-        if (sceneHasLights(scene)) {
-            const EmitterShare share = emitterShare(scene);
-            if (share.share() >= kMinEmitterShare) {
-                scene.environment = Environment{};
-                return;
-            }
-            note = fmt::format("note: the emissive surfaces give {:.2g} % of the light a white sky would (under {:g} %): "
-                               "the scene is lit by a uniform white environment of radiance 1 as well (--env to choose "
-                               "another, --env 0 for the emitters alone)",
-                               100.0 * share.share(), 100.0 * kMinEmitterShare);
-        } else {
-            note = "note: the scene has no lights: it is lit by a uniform white environment of radiance 1 (--env to "
-                   "choose another, --env 0 to refuse such scenes)";
-        }
-        constant = glm::vec3(1.0f);
-    } else if (parseEnvironmentConstant(settings.value, constant)) {
-        for (int k = 0; k < 3; ++k)
-            if (!std::isfinite(constant[k]) || constant[k] < 0.0f || constant[k] > 1.0e20f)
-                throw InputError(fmt::format("--env {}: a radiance must be finite, >= 0 and at most 1e20", settings.value));
-    } else {
-        env = loadEnvironmentMap(settings.value, limits);
-    }
-    if (!env.present) {
-        env.radiance = constant;
-        env.present = constant.x > 0.0f || constant.y > 0.0f || constant.z > 0.0f;
-        env.source = "constant";
-    }
-    env.radiance *= settings.strength;
-    for (float& v : env.rgb) v *= settings.strength;
-    env.rotation = settings.rotationDegrees * (kPiF / 180.0f);
-    env.importanceSampling = settings.importanceSampling;
-    if (settings.strength <= 0.0f) env.present = false;
-    if (!env.present && !sceneHasLights(scene))
-        throw InputError(fmt::format("{}: no lights: add a KHR_lights_punctual light, give a material an emissiveFactor, "
-                                     "or light the scene with --env",
-                                     scene.source.string()));
-    if (!env.present) env = Environment{};
-    scene.environment = std::move(env);
 }
 
 }  // namespace vkp

@@ -57,26 +57,21 @@ Environment loadEnvironmentMap(const std::filesystem::path& path, const Environm
 // True when the scene has a punctual light or an emissive triangle.
 bool sceneHasLights(const Scene& scene);
 
-// The default lighting rule's measure: the power the scene's emissive triangles emit (pi x
-// luminance of the mean emitted radiance x area, twice if double-sided, as the light sampler
-// weighs them; emissive textures averaged over the texels each triangle reads), against the
-// power the default white sky of radiance 1 would send into the scene's bounding sphere
-// (4 pi^2 r^2: its weight as a light). share = emitters / (emitters + sky).
+// The default lighting rule's measure (lights/default_lighting.h): the power the scene's emissive
+// triangles emit (pi x luminance of the mean emitted radiance x area, twice if double-sided, as
+// the light sampler weighs them; emissive textures averaged over the texels each triangle reads),
+// the fraction of it that lands on a surface of the scene (`landing`; 1 here, estimated by
+// lights/default_lighting.h's landedEmitterShare), against the power the default white sky of
+// radiance 1 would send into the scene's bounding sphere (4 pi^2 r^2: its weight as a light).
+// share = landed / (landed + sky).
 struct EmitterShare {
     double emitterPower = 0.0;
+    double landing = 1.0;
     double skyPower = 0.0;
-    double share() const { return emitterPower > 0.0 ? emitterPower / (emitterPower + skyPower) : 0.0; }
+    double landedPower() const { return emitterPower * landing; }
+    double share() const { return landedPower() > 0.0 ? landedPower() / (landedPower() + skyPower) : 0.0; }
 };
+// The emitted power and the sky's (landing 1).
 EmitterShare emitterShare(const Scene& scene);
-// Below this share the emissive surfaces are details (a helmet's lamps, a radio's buttons), not
-// what lights the scene: without --env such a scene gets the default sky too.
-constexpr double kMinEmitterShare = 0.01;
-
-// Sets scene.environment from the settings. Without --env a scene with punctual lights, or whose
-// emissive triangles give at least kMinEmitterShare of the light, gets none; any other scene a
-// uniform environment of radiance 1 (times --env-strength), and `note` says so. `--env 0` (or any zero constant) means no environment: a scene without lights is
-// refused (InputError) as before environments existed.
-void applyEnvironment(Scene& scene, const EnvironmentSettings& settings, std::string& note,
-                      const EnvironmentLimits& limits = {});
 
 }  // namespace vkp

@@ -1,5 +1,7 @@
 #include <algorithm>
 #include <future>
+#include <memory>
+#include <optional>
 #include <thread>
 
 #include <fmt/format.h>
@@ -8,6 +10,7 @@
 #include "image/exr.h"
 #include "image/png.h"
 #include "image/view_transform.h"
+#include "lights/default_lighting.h"
 #include "scene/gltf_loader.h"
 #include "util/errors.h"
 #include "util/printable.h"
@@ -120,12 +123,18 @@ int runView(const ViewCommandOptions& options,
     settings.selective.budget = render.photonBudget;
     settings.selective.groups = render.photonGroups;
     settings.preview = options.preview;
-    bool noteShown = false;
+    // The environment is chosen once, for the scene as loaded: a move never switches the default
+    // sky on or off (nor traces the emitters' landing again).
+    std::optional<Environment> environment;
     auto prepared = [&](Scene scene) {
-        std::string note;
-        applyEnvironment(scene, render.environment, note);
-        if (!note.empty() && !render.quiet && !noteShown) fmt::print(stderr, "{}\n", note);
-        noteShown = true;
+        if (!environment) {
+            std::string note;
+            applyEnvironment(scene, render.environment, note);
+            if (!note.empty() && !render.quiet) fmt::print(stderr, "{}\n", note);
+            environment = scene.environment;
+        } else {
+            scene.environment = *environment;
+        }
         scene.energyCompensation = !render.noEnergyCompensation;
         scene.bounds = stillBounds;
         return scene;

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <stb/stb_image_write.h>
 
+#include "lights/default_lighting.h"
 #include "support/chi_square.h"
 #include "support/gpu_test_support.h"
 #include "image/exr.h"

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "gpu_scene/scene_buffers.h"
+#include "lights/default_lighting.h"
 #include "support/gpu_test_support.h"
 #include "render/path_integrator.h"
 #include "render/renderer.h"
