@@ -16,6 +16,7 @@
 #include "app/subcommand.h"
 #include "image/exposure.h"
 #include "util/cli_choice.h"
+#include "util/errors.h"
 #include "view/view_command.h"
 
 namespace vkp {
@@ -73,6 +74,9 @@ ViewCommand::ViewCommand(CLI::App& app) {
         family->addOptions(*m_integratorOptions);
     }
     m_cmd->add_option("--events", m_options.events, "Replay an event script, one command a line (docs/viewer.md)");
+    m_cmd->add_flag("--headless", m_options.headless,
+                    "No window and no display needed: the --events script drives the view, each image is shown to an "
+                    "offscreen image of the window's size (for benchmarks and machines without a display)");
     m_cmd->add_option("--stats-json", render.statsJson,
                       "Write the time to the first image and, per change, to its first image and its photon paths");
     m_cmd->add_option("--photon-budget", render.photonBudget,
@@ -102,6 +106,9 @@ int ViewCommand::run() {
     RenderCommandOptions& render = m_options.render;
     requireNonEmpty(*m_cmd, "--stats-json", render.statsJson);
     requireNonEmpty(*m_cmd, "--events", m_options.events);
+    if (m_options.headless && m_options.events.empty())
+        throw InputError("--headless needs --events FILE: without a window only a script can drive the view (and end it "
+                         "with quit)");
     render.frame.nextEventEstimation = !m_bsdfOnly;
     render.frame.check();
     render.display = parseExposure(m_exposureText, render.display);

@@ -79,8 +79,8 @@ Camera framingCamera(const Bounds& bounds, float aspect, float yfovRadians) {
 }
 
 void FrameSettings::check() const {
-    checkRange("--width", width, 1u, 16384u);
-    checkRange("--height", height, 1u, 16384u);
+    checkRange("--width", width, 1u, kMaxImageSide);
+    checkRange("--height", height, 1u, kMaxImageSide);
     checkRange("--spp", samplesPerPixel, 1u, 1u << 24);
     checkRange("--max-depth", maxDepth, 1u, 1024u);
     checkRange("--time-limit", timeLimitSeconds, 0.0, 1.0e9);

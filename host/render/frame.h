@@ -47,6 +47,9 @@ struct ViewOverride {
     void check() const;
 };
 
+// The largest image side `--width`, `--height` and the viewer's resize accept.
+inline constexpr uint32_t kMaxImageSide = 16384;
+
 struct FrameSettings {
     uint32_t width = 512;
     uint32_t height = 512;

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "render/frame.h"
 #include "util/errors.h"
 #include "util/printable.h"
 
@@ -110,12 +111,22 @@ std::vector<ScriptEvent> parseEventScript(std::string_view text, const std::stri
                 throw InputError(fmt::format("{}: key: unknown key '{}' (i, r, s, space, h, q, escape)", e.where,
                                              printable(words[1])));
             e.key = *key;
+        } else if (command == "resize") {
+            expectArgs(words, 2, 2, e.where, "a width and a height in pixels: resize W H");
+            e.command = ScriptCommand::Resize;
+            for (int k = 0; k < 2; ++k) {
+                const double n = number(words[1 + k], e.where, k == 0 ? "the width" : "the height");
+                if (!(n >= 1.0 && n <= double(kMaxImageSide) && n == std::floor(n)))
+                    throw InputError(fmt::format("{}: resize: {} must be a whole number from 1 to {}", e.where,
+                                                 words[1 + k], kMaxImageSide));
+                e.from[k] = float(n);
+            }
         } else if (command == "quit") {
             expectArgs(words, 0, 0, e.where, "no arguments");
             e.command = ScriptCommand::Quit;
         } else {
             throw InputError(fmt::format("{}: unknown command '{}' (samples, seconds, screenshot, move, orbit, click, "
-                                         "drag, key, quit)",
+                                         "drag, key, resize, quit)",
                                          e.where, printable(command)));
         }
         events.push_back(std::move(e));

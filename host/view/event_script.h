@@ -11,6 +11,7 @@
 //   drag X0 Y0 X1 Y1 [BUTTON] drag from (X0, Y0) to (X1, Y1): left (orbit, the default), right
 //                             (pan) or shift (Shift+left: move the selected node)
 //   key NAME                  press a key: i, r, s, space, h, q, escape (view_input.h)
+//   resize W H                resize the window (the image) to W x H pixels
 //   quit                      close the window
 //
 // Blank lines and lines starting with '#' are skipped.
@@ -28,7 +29,7 @@
 
 namespace vkp {
 
-enum class ScriptCommand { Samples, Seconds, Screenshot, Move, Orbit, Click, Drag, Key, Quit };
+enum class ScriptCommand { Samples, Seconds, Screenshot, Move, Orbit, Click, Drag, Key, Resize, Quit };
 
 struct ScriptEvent {
     ScriptCommand command = ScriptCommand::Quit;
@@ -38,7 +39,7 @@ struct ScriptEvent {
     std::filesystem::path path;      // screenshot
     std::string node;                // move
     glm::dvec3 delta{0.0};           // move (world units)
-    glm::vec2 from{0.0f};            // click (the point), drag, orbit (degrees in from)
+    glm::vec2 from{0.0f};            // click (the point), drag, orbit (degrees in from), resize (the size)
     glm::vec2 to{0.0f};              // drag
     DragButton button = DragButton::Left;  // drag
     ViewKey key = ViewKey::Help;     // key

@@ -47,6 +47,19 @@ void ProgressiveSession::setIntegrator(const IntegratorConfig& config) {
     m_needFull = true;  // its maps are new (the selective update keys them by their settings)
 }
 
+void ProgressiveSession::resize(uint32_t width, uint32_t height) {
+    // A preparation stopped half way (or not yet started) leaves maps that must be traced again.
+    if (preparing() || m_pendingRefresh) m_needFull = true;
+    cancel();
+    m_pendingRefresh.reset();
+    FrameSettings frame = m_settings.frame;
+    frame.width = width;
+    frame.height = height;
+    frame.check();
+    m_settings.frame = frame;
+    m_film = std::make_unique<Film>(m_context, width, height);
+}
+
 void ProgressiveSession::restart(PhotonRefresh refresh, bool allowPreview) {
     const auto start = Clock::now();
     if (m_needFull) refresh = PhotonRefresh::Full;

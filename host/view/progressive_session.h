@@ -55,6 +55,10 @@ public:
     // The integrator samples come from from now on (built for the current scene). Call restart() after.
     void setIntegrator(const IntegratorConfig& config);
     void setView(const ViewOverride& view) { m_settings.frame.view = view; }
+    // Images of width x height from the next restart() on (a new film; the camera keeps its
+    // vertical field of view). Stops a running preparation. Call restart() after (the
+    // view-independent photon maps stay valid: PhotonRefresh::Reuse).
+    void resize(uint32_t width, uint32_t height);
 
     // Starts accumulating afresh: the frame (camera), raster direct light, a cleared film and
     // the integrator's prepare() (photon maps as `refresh` says). The path tracer prepares at

@@ -46,6 +46,11 @@ std::vector<ViewAction> ScriptPlayer::advance(const ScriptState& state,
             a.key = e.key;
             actions.push_back(a);
             break;
+        case ScriptCommand::Resize:
+            a.kind = ViewAction::Kind::Resize;
+            a.a = e.from;
+            actions.push_back(a);
+            break;
         case ScriptCommand::Quit: quit = true; break;
         }
         ++m_next;

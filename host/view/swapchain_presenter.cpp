@@ -19,10 +19,13 @@ bool isBgra(VkFormat format) { return format == VK_FORMAT_B8G8R8A8_UNORM || form
 SwapchainPresenter::SwapchainPresenter(vk::Context& context, VkSurfaceKHR surface, uint32_t width, uint32_t height)
     : m_context(context), m_surface(surface), m_width(width), m_height(height) {
     try {
-        VkBool32 supported = VK_FALSE;
-        vk::check(vkGetPhysicalDeviceSurfaceSupportKHR(context.physicalDevice(), context.queueFamily(), surface, &supported),
-                  "asking whether the queue presents to the window");
-        if (!supported) throw RuntimeError("the device's queue cannot present to the window");
+        if (surface) {
+            VkBool32 supported = VK_FALSE;
+            vk::check(vkGetPhysicalDeviceSurfaceSupportKHR(context.physicalDevice(), context.queueFamily(), surface,
+                                                           &supported),
+                      "asking whether the queue presents to the window");
+            if (!supported) throw RuntimeError("the device's queue cannot present to the window");
+        }
         VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
         poolInfo.queueFamilyIndex = context.queueFamily();
@@ -60,6 +63,15 @@ void SwapchainPresenter::release() {
 }
 
 void SwapchainPresenter::createSwapchain() {
+    if (offscreen()) {
+        m_format = VK_FORMAT_R8G8B8A8_UNORM;
+        m_extent = {m_width, m_height};
+        m_offscreen = std::make_unique<vk::Image>(m_context, "offscreen window", m_width, m_height, m_format,
+                                                  VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,  // vk::Image makes a view
+                                                  VK_IMAGE_ASPECT_COLOR_BIT);
+        m_images = {m_offscreen->handle()};
+        return;
+    }
     VkPhysicalDevice gpu = m_context.physicalDevice();
     VkSurfaceCapabilitiesKHR caps{};
     vk::check(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(gpu, m_surface, &caps), "reading the window's surface");
@@ -109,17 +121,28 @@ void SwapchainPresenter::destroySwapchain() {
         if (s) vkDestroySemaphore(device, s, nullptr);
     m_presentReady.clear();
     m_images.clear();
+    m_offscreen.reset();
     if (m_swapchain) vkDestroySwapchainKHR(device, m_swapchain, nullptr);
     m_swapchain = VK_NULL_HANDLE;
 }
 
 bool SwapchainPresenter::bgra() const { return isBgra(m_format); }
 
+void SwapchainPresenter::resize(uint32_t width, uint32_t height) {
+    if (width == m_width && height == m_height) return;
+    vkDeviceWaitIdle(m_context.device());
+    destroySwapchain();
+    m_width = width;
+    m_height = height;
+    createSwapchain();
+}
+
 void SwapchainPresenter::present(const vk::Buffer& pixels, const std::function<void(VkCommandBuffer)>& writePixels) {
     VkDevice device = m_context.device();
 
     uint32_t index = 0;
-    VkResult acquired = vkAcquireNextImageKHR(device, m_swapchain, UINT64_MAX, m_acquired, VK_NULL_HANDLE, &index);
+    VkResult acquired = offscreen() ? VK_SUCCESS
+                                    : vkAcquireNextImageKHR(device, m_swapchain, UINT64_MAX, m_acquired, VK_NULL_HANDLE, &index);
     if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {  // the window changed under us: a new swapchain, next time
         vkDeviceWaitIdle(device);
         destroySwapchain();
@@ -154,22 +177,30 @@ void SwapchainPresenter::present(const vk::Buffer& pixels, const std::function<v
     toPresent.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toPresent.dstAccessMask = 0;
     toPresent.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    toPresent.newLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    toPresent.newLayout = offscreen() ? VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL : VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
     vkCmdPipelineBarrier(m_cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0, nullptr, 0,
                          nullptr, 1, &toPresent);
     vk::check(vkEndCommandBuffer(m_cmd), "ending the presenter's commands");
 
     const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_TRANSFER_BIT;
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.waitSemaphoreCount = 1;
-    submit.pWaitSemaphores = &m_acquired;
-    submit.pWaitDstStageMask = &waitStage;
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &m_cmd;
-    submit.signalSemaphoreCount = 1;
-    submit.pSignalSemaphores = &m_presentReady[index];
+    if (!offscreen()) {
+        submit.waitSemaphoreCount = 1;
+        submit.pWaitSemaphores = &m_acquired;
+        submit.pWaitDstStageMask = &waitStage;
+        submit.signalSemaphoreCount = 1;
+        submit.pSignalSemaphores = &m_presentReady[index];
+    }
     vk::check(vkResetFences(device, 1, &m_fence), "resetting the presenter's fence");
     vk::check(vkQueueSubmit(m_context.queue(), 1, &submit, m_fence), "submitting the window's copy");
+    if (offscreen()) {  // the copy is the present
+        vk::check(vkWaitForFences(device, 1, &m_fence, VK_TRUE, uint64_t(60e9)), "waiting for the window's copy");
+        ++m_presented;
+        if (m_context.validationEnabled()) m_context.throwOnValidationMessages();
+        return;
+    }
 
     VkPresentInfoKHR presentInfo{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     presentInfo.waitSemaphoreCount = 1;

@@ -34,9 +34,10 @@ inline constexpr float kDollyPerNotch = 0.9f;  // distance to the look-at point 
 inline constexpr float kClickSlopPixels = 3.0f;
 
 struct ViewAction {
-    enum class Kind { Orbit, Pan, Dolly, Select, MoveSelected, MoveNode, Key };
+    enum class Kind { Orbit, Pan, Dolly, Select, MoveSelected, MoveNode, Key, Resize };
     Kind kind = Kind::Key;
-    glm::vec2 a{0.0f};         // Orbit: degrees (x: about up, y: elevation); Pan/MoveSelected: from; Select: pixel
+    glm::vec2 a{0.0f};         // Orbit: degrees (x: about up, y: elevation); Pan/MoveSelected: from; Select: pixel;
+                               // Resize: the new width and height in pixels
     glm::vec2 b{0.0f};         // Pan/MoveSelected: to
     float amount = 0.0f;       // Dolly: wheel notches (positive: towards the look-at point)
     std::string node;          // MoveNode

@@ -30,8 +30,11 @@ namespace vkp {
 namespace {
 
 // Each loop iteration aims to take this long: it renders for what is left of it after showing
-// the last image (at least kMinRenderSeconds), then presents and polls the window again.
-constexpr double kFrameSeconds = 1.0 / 30.0;
+// the last image, then presents and polls the window again. Where showing is slow (lavapipe at
+// large sizes) it renders at least kRenderPerShow times as long as showing took, so showing takes
+// at most a quarter of the time, and never less than kMinRenderSeconds.
+constexpr double kFrameSeconds = 1.0 / 60.0;
+constexpr double kRenderPerShow = 3.0;
 constexpr double kMinRenderSeconds = 1.0 / 240.0;
 // With nothing left to render the loop waits this long for input.
 constexpr double kIdleSeconds = 0.05;
@@ -63,6 +66,10 @@ void writeScreenshot(const std::filesystem::path& path, const ImageRgb& image, c
 void checkScript(const std::vector<ScriptEvent>& events, const GltfSceneSource& source, uint32_t width, uint32_t height) {
     auto inside = [&](glm::vec2 p) { return p.x >= 0.0f && p.y >= 0.0f && p.x < float(width) && p.y < float(height); };
     for (const ScriptEvent& e : events) {
+        if (e.command == ScriptCommand::Resize) {  // later pixels are in the resized window
+            width = uint32_t(e.from.x);
+            height = uint32_t(e.from.y);
+        }
         if (e.command == ScriptCommand::Move && source.findNode(e.node) < 0)
             throw InputError(fmt::format("{}: move: unknown node '{}' (no glTF node has that name)", e.where,
                                          printable(e.node)));
@@ -91,18 +98,22 @@ int runView(const ViewCommandOptions& options,
     const std::vector<ScriptEvent> events = options.events.empty() ? std::vector<ScriptEvent>{}
                                                                    : readEventScript(options.events);
     if (!render.statsJson.empty()) checkWritable(render.statsJson);
-    requireDisplay();
+    if (!options.headless) requireDisplay();
     // The display transform's lattice (a few hundred thousand evaluations) while the scene loads.
     auto lattice = std::async(std::launch::async, displayLattice, render.display.view);
-    const uint32_t width = render.frame.width, height = render.frame.height;
+    uint32_t width = render.frame.width, height = render.frame.height;  // the window's (and the image's) size
     const std::string sceneName = render.scene.filename().string();
-    ViewWindow window(width, height, fmt::format("vkphoton view: {}", sceneName));
+    // --headless: no window; the script drives the view and images go to an offscreen image.
+    const std::unique_ptr<ViewWindow> window =
+        options.headless ? nullptr : std::make_unique<ViewWindow>(width, height, fmt::format("vkphoton view: {}", sceneName));
     nlohmann::json startup;  // where the time to the first image goes (--stats-json "startup")
     startup["windowSeconds"] = secondsSince(start);
 
     vk::ContextOptions contextOptions{render.validate, render.device};
-    contextOptions.instanceExtensions = ViewWindow::requiredInstanceExtensions();
-    contextOptions.canPresent = &ViewWindow::canPresent;
+    if (window) {
+        contextOptions.instanceExtensions = ViewWindow::requiredInstanceExtensions();
+        contextOptions.canPresent = &ViewWindow::canPresent;
+    }
     vk::Context context(contextOptions);
     startup["deviceSeconds"] = secondsSince(start);
     GltfLimits limits = deviceSceneLimits(context, render.maxMemoryGiB);
@@ -150,12 +161,15 @@ int runView(const ViewCommandOptions& options,
     size_t integratorIndex = first;
     session.setIntegrator(*integrators[integratorIndex].second);
     startup["integratorSeconds"] = secondsSince(start);  // its kernels (pipelines compiled on first use)
-    SwapchainPresenter presenter(context, window.createSurface(context.instance()), width, height);
-    DisplayPass display(context, width, height, lattice.get());
+    SwapchainPresenter presenter(context, window ? window->createSurface(context.instance()) : VK_NULL_HANDLE, width,
+                                 height);
+    const std::vector<glm::vec4> displayTable = lattice.get();
+    auto display = std::make_unique<DisplayPass>(context, width, height, displayTable);
     startup["presenterSeconds"] = secondsSince(start);  // the surface, swapchain and display pass
     if (!render.quiet)
-        fmt::print(stderr, "vkphoton view: {} on {}{}; press H for help\n", printable(render.scene.string()),
-                   context.deviceName(), context.validationEnabled() ? " with validation" : "");
+        fmt::print(stderr, "vkphoton view: {} on {}{}{}\n", printable(render.scene.string()), context.deviceName(),
+                   context.validationEnabled() ? " with validation" : "",
+                   window ? "; press H for help" : ", headless (images offscreen)");
     session.restart(PhotonRefresh::Full);
     startup["restartSeconds"] = secondsSince(start);  // frame, raster light, film; the preview or the preparation
     // Photon maps, raster light (set once the integrator is prepared: after the preview, if any).
@@ -184,7 +198,7 @@ int runView(const ViewCommandOptions& options,
         return prepared(animated ? source.sceneAt(animationTime, &offsets) : source.stillScene(&offsets));
     };
     auto updateMask = [&]() {
-        display.setMask(selected >= 0 ? nodeMask(session.scene(), session.arrays(), session.frame().gpuCamera, width,
+        display->setMask(selected >= 0 ? nodeMask(session.scene(), session.arrays(), session.frame().gpuCamera, width,
                                                  height, selected)
                                       : std::vector<uint8_t>());
         redraw = true;
@@ -205,8 +219,12 @@ int runView(const ViewCommandOptions& options,
 
     std::vector<ViewAction> deferred;  // input that arrived while the integrator prepared
     auto lastTitle = Clock::now();
-    while (!quit && !window.closeRequested()) {
-        std::vector<ViewAction> actions = window.poll();
+    auto closeRequested = [&]() { return window && window->closeRequested(); };
+    auto setTitle = [&](const std::string& title) {
+        if (window) window->setTitle(title);
+    };
+    while (!quit && !closeRequested()) {
+        std::vector<ViewAction> actions = window ? window->poll() : std::vector<ViewAction>();
         bool justPrepared = false;
         if (session.preparing()) {
             session.step(0.0);  // finds the preparation done (or rethrows its error)
@@ -217,12 +235,12 @@ int runView(const ViewCommandOptions& options,
                     if (a.kind == ViewAction::Kind::Key && a.key == ViewKey::Quit) quit = true;
                     deferred.push_back(a);
                 }
-                if (quit || window.closeRequested()) {
+                if (quit || closeRequested()) {
                     session.cancel();
                     break;
                 }
                 if (secondsSince(lastTitle) > 0.5) {
-                    window.setTitle(fmt::format("vkphoton view: {} | {} | preparing ({:.0f} s){}", sceneName,
+                    setTitle(fmt::format("vkphoton view: {} | {} | preparing ({:.0f} s){}", sceneName,
                                                 session.integratorName(), secondsSince(restartAt),
                                                 deferred.empty() ? std::string() : ", input queued"));
                     lastTitle = Clock::now();
@@ -252,7 +270,7 @@ int runView(const ViewCommandOptions& options,
             state.targetSamples = session.settings().frame.samplesPerPixel;
             state.refreshDue = session.refreshDue();
             actions = script.advance(state, [&](const ScriptEvent& e) {
-                writeScreenshot(e.path, display.linearImage(), options, session);
+                writeScreenshot(e.path, display->linearImage(), options, session);
                 if (!render.quiet)
                     fmt::print(stderr, "{}: wrote {} ({})\n", e.where, printable(e.path.string()),
                                session.inPreview() ? std::string("the preview: one path-traced sample")
@@ -262,8 +280,19 @@ int runView(const ViewCommandOptions& options,
 
         // Input: camera and scene changes are gathered, then applied once (one restart).
         std::string sceneKind, viewKind;
+        bool resized = false;
         for (const ViewAction& a : actions) {
             switch (a.kind) {
+            case ViewAction::Kind::Resize: {
+                const uint32_t w = uint32_t(a.a.x), h = uint32_t(a.a.y);
+                if (w == width && h == height) break;
+                if (window && (window->width() != w || window->height() != h)) window->resize(w, h);  // a script's
+                width = w;
+                height = h;
+                resized = true;
+                viewKind = "resize";
+                break;
+            }
             case ViewAction::Kind::Orbit:
                 camera.orbit(a.a.x, a.a.y);
                 viewKind = "orbit";
@@ -305,7 +334,7 @@ int runView(const ViewCommandOptions& options,
                 case ViewKey::Screenshot: {
                     const std::filesystem::path path =
                         std::filesystem::path("out") / fmt::format("{}-view-{:04}.exr", render.scene.stem().string(), screenshots++);
-                    if (shownSamples != UINT32_MAX) writeScreenshot(path, display.linearImage(), options, session);
+                    if (shownSamples != UINT32_MAX) writeScreenshot(path, display->linearImage(), options, session);
                     if (!render.quiet) fmt::print(stderr, "wrote {}\n", printable(path.string()));
                     break;
                 }
@@ -327,6 +356,12 @@ int runView(const ViewCommandOptions& options,
             if (source.animation().endTime() > source.animation().startTime() && animationTime > source.animation().endTime())
                 animationTime = source.animation().startTime();
             if (sceneKind.empty()) sceneKind = "animation";
+        }
+        if (resized) {  // a new film, display pass and swapchain; the camera keeps its vertical field of view
+            session.resize(width, height);
+            presenter.resize(width, height);
+            display = std::make_unique<DisplayPass>(context, width, height, displayTable);
+            redraw = true;
         }
         if (!sceneKind.empty()) {
             const auto at = Clock::now();
@@ -353,12 +388,13 @@ int runView(const ViewCommandOptions& options,
             restartAt = Clock::now();
         }
         // A preview is shown before the preparation that follows it starts.
-        if (!(session.hasPreviewImage() && shownSamples == UINT32_MAX)) rendered = session.step(std::max(kFrameSeconds - showSeconds, kMinRenderSeconds));
+        if (!(session.hasPreviewImage() && shownSamples == UINT32_MAX))
+            rendered = session.step(std::max({kFrameSeconds - showSeconds, kRenderPerShow * showSeconds, kMinRenderSeconds}));
         if (session.preparing()) continue;  // the film is the preparation's until it is done
         if (rendered > 0 || shownSamples != session.samples() || redraw) {
             const auto showStart = Clock::now();
-            presenter.present(display.pixels(), [&](VkCommandBuffer cmd) {
-                display.record(cmd, session.film().sums(), session.progressiveEstimates(), session.samples(),
+            presenter.present(display->pixels(), [&](VkCommandBuffer cmd) {
+                display->record(cmd, session.film().sums(), session.progressiveEstimates(), session.samples(),
                                render.display.exposureScale(), presenter.bgra());
             });
             showSeconds = secondsSince(showStart);
@@ -367,7 +403,7 @@ int runView(const ViewCommandOptions& options,
             stats.presented(Clock::now(), session.inPreview());
             if (!startup.contains("firstPresentSeconds")) startup["firstPresentSeconds"] = secondsSince(start);
             const double seconds = secondsSince(restartAt);
-            window.setTitle(fmt::format("vkphoton view: {} | {} | {}/{} spp | {:.1f} spp/s | {} photon paths{}{}", sceneName,
+            setTitle(fmt::format("vkphoton view: {} | {} | {}/{} spp | {:.1f} spp/s | {} photon paths{}{}", sceneName,
                                         session.integratorName(), session.samples(), session.settings().frame.samplesPerPixel,
                                         seconds > 0.0 ? session.samples() / seconds : 0.0, session.lastPhotonPaths(),
                                         stats.changes().empty() ? " (first build)" : " (last change)",
@@ -383,16 +419,18 @@ int runView(const ViewCommandOptions& options,
         json["scene"] = render.scene.string();
         json["integrator"] = session.integratorName();
         json["device"] = context.deviceName();
-        json["width"] = width;
+        json["width"] = width;  // at the end (after any resize)
         json["height"] = height;
+        json["headless"] = options.headless;
         json["spp"] = render.frame.samplesPerPixel;
         json["preview"] = settings.preview;
         json["startup"] = startup;
         writeTextAtomically(render.statsJson, json.dump(2) + "\n");
     }
     if (!render.quiet && stats.firstImageSeconds())
-        fmt::print(stderr, "first image after {:.2f} s; {} change(s), {} frames presented\n", *stats.firstImageSeconds(),
-                   stats.changes().size(), stats.framesPresented());
+        fmt::print(stderr, "first image after {:.2f} s; {} change(s), {} frames presented{}\n", *stats.firstImageSeconds(),
+                   stats.changes().size(), stats.framesPresented(),
+                   stats.presentedPerSecond() ? fmt::format(" ({:.1f} per second)", *stats.presentedPerSecond()) : "");
     if (context.validationEnabled()) context.throwOnValidationMessages();
     return kExitOk;
 }

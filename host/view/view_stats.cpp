@@ -32,11 +32,22 @@ void ViewStats::presented(Clock::time_point now, bool preview) {
     ++m_frames;
     const double sinceStart = std::chrono::duration<double>(now - m_start).count();
     if (!m_firstImage) m_firstImage = sinceStart;
-    if (!preview && !m_firstIntegratorImage) m_firstIntegratorImage = sinceStart;
+    if (!preview && !m_firstIntegratorImage) {
+        m_firstIntegratorImage = sinceStart;
+        m_firstIntegratorPresent = now;
+    }
+    if (m_firstIntegratorImage) ++m_integratorFrames;
+    m_lastPresent = now;
     if (m_changes.empty()) return;
     const double sinceChange = std::chrono::duration<double>(now - m_changeStart.back()).count();
     if (!m_changes.back().secondsToFirstImage) m_changes.back().secondsToFirstImage = sinceChange;
     if (!preview && !m_changes.back().secondsToIntegratorImage) m_changes.back().secondsToIntegratorImage = sinceChange;
+}
+
+std::optional<double> ViewStats::presentedPerSecond() const {
+    const double span = std::chrono::duration<double>(m_lastPresent - m_firstIntegratorPresent).count();
+    if (m_integratorFrames < 2 || !(span > 0.0)) return std::nullopt;
+    return double(m_integratorFrames - 1) / span;
 }
 
 nlohmann::json ViewStats::toJson(Clock::time_point now) const {
@@ -56,6 +67,7 @@ nlohmann::json ViewStats::toJson(Clock::time_point now) const {
     return {{"firstImageSeconds", orNull(m_firstImage)},
             {"firstIntegratorImageSeconds", orNull(m_firstIntegratorImage)},
             {"framesPresented", m_frames},
+            {"presentedPerSecond", orNull(presentedPerSecond())},
             {"seconds", std::chrono::duration<double>(now - m_start).count()},
             {"changes", changes}};
 }

@@ -47,8 +47,10 @@ public:
     std::optional<double> firstImageSeconds() const { return m_firstImage; }
     std::optional<double> firstIntegratorImageSeconds() const { return m_firstIntegratorImage; }
     uint64_t framesPresented() const { return m_frames; }
+    // Images presented per second from the first of the integrator to the last (null before two).
+    std::optional<double> presentedPerSecond() const;
 
-    // {"firstImageSeconds", "firstIntegratorImageSeconds", "framesPresented", "seconds", "changes":
+    // {"firstImageSeconds", "firstIntegratorImageSeconds", "framesPresented", "presentedPerSecond", "seconds", "changes":
     // [{kind, secondsToFirstImage, secondsToIntegratorImage, photonPathsTraced, fullPhotonPaths,
     // refreshPhotonPaths, refreshRounds, prepareSeconds, at}]}
     nlohmann::json toJson(Clock::time_point now) const;
@@ -60,6 +62,8 @@ private:
     std::vector<ViewChange> m_changes;
     std::vector<Clock::time_point> m_changeStart;
     uint64_t m_frames = 0;
+    uint64_t m_integratorFrames = 0;  // presented since the first image of the integrator
+    Clock::time_point m_firstIntegratorPresent{}, m_lastPresent{};
 };
 
 }  // namespace vkp

@@ -42,7 +42,7 @@ ViewWindow::ViewWindow(uint32_t width, uint32_t height, const std::string& title
         throw InputError(fmt::format("the display offers no Vulkan presentation: {}", why));
     }
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
-    glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
+    glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     m_window = glfwCreateWindow(int(width), int(height), title.c_str(), nullptr, nullptr);
     if (!m_window) {
         const std::string why = glfwErrorText();
@@ -54,6 +54,7 @@ ViewWindow::ViewWindow(uint32_t width, uint32_t height, const std::string& title
     glfwSetMouseButtonCallback(m_window, &ViewWindow::onButton);
     glfwSetCursorPosCallback(m_window, &ViewWindow::onCursor);
     glfwSetScrollCallback(m_window, &ViewWindow::onScroll);
+    glfwSetFramebufferSizeCallback(m_window, &ViewWindow::onFramebufferSize);
 }
 
 ViewWindow::~ViewWindow() {
@@ -88,6 +89,8 @@ std::vector<ViewAction> ViewWindow::poll() {
 bool ViewWindow::closeRequested() const { return glfwWindowShouldClose(m_window); }
 
 void ViewWindow::setTitle(const std::string& title) { glfwSetWindowTitle(m_window, title.c_str()); }
+
+void ViewWindow::resize(uint32_t width, uint32_t height) { glfwSetWindowSize(m_window, int(width), int(height)); }
 
 void ViewWindow::onKey(GLFWwindow* window, int key, int, int action, int) {
     if (action != GLFW_PRESS) return;
@@ -147,6 +150,18 @@ void ViewWindow::onScroll(GLFWwindow* window, double, double dy) {
     ViewAction a;
     a.kind = ViewAction::Kind::Dolly;
     a.amount = float(dy);
+    self->m_actions.push_back(a);
+}
+
+// A minimised window (0 x 0) keeps its last size: nothing is shown until it comes back.
+void ViewWindow::onFramebufferSize(GLFWwindow* window, int width, int height) {
+    auto* self = static_cast<ViewWindow*>(glfwGetWindowUserPointer(window));
+    if (width <= 0 || height <= 0 || (uint32_t(width) == self->m_width && uint32_t(height) == self->m_height)) return;
+    self->m_width = uint32_t(width);
+    self->m_height = uint32_t(height);
+    ViewAction a;
+    a.kind = ViewAction::Kind::Resize;
+    a.a = {float(width), float(height)};
     self->m_actions.push_back(a);
 }
 

@@ -1,7 +1,7 @@
-// The viewer's window (GLFW, X11): opened without a client API so Vulkan presents to it, not
-// resizable (the image keeps the render's size), and its mouse and keys turned into ViewActions
-// (view/view_input.h): left drag orbits, right drag pans, the wheel dollies, a click selects,
-// Shift+left drag moves the selected node.
+// The viewer's window (GLFW, X11): opened without a client API so Vulkan presents to it,
+// resizable (the image follows the window's size: a Resize action), and its mouse and keys turned
+// into ViewActions (view/view_input.h): left drag orbits, right drag pans, the wheel dollies, a
+// click selects, Shift+left drag moves the selected node.
 #pragma once
 
 #include <cstdint>
@@ -41,6 +41,9 @@ public:
     std::vector<ViewAction> poll();
     bool closeRequested() const;
     void setTitle(const std::string& title);
+    // Asks the window system for a width x height window (a script's `resize`); the Resize action
+    // comes from its answer, as for a drag of the window's border.
+    void resize(uint32_t width, uint32_t height);
     uint32_t width() const { return m_width; }
     uint32_t height() const { return m_height; }
 
@@ -49,6 +52,7 @@ private:
     static void onButton(GLFWwindow* window, int button, int action, int mods);
     static void onCursor(GLFWwindow* window, double x, double y);
     static void onScroll(GLFWwindow* window, double dx, double dy);
+    static void onFramebufferSize(GLFWwindow* window, int width, int height);
 
     GLFWwindow* m_window = nullptr;
     uint32_t m_width, m_height;

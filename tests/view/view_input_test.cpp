@@ -36,9 +36,10 @@ TEST(ViewEventScript, ParsesEveryCommand) {
         "drag 1 2 30 40\n"
         "drag 1 2 30 40 shift\r\n"
         "key SPACE\n"
+        "resize 320 200\n"
         "quit",
         "s.txt");
-    ASSERT_EQ(events.size(), 10u);
+    ASSERT_EQ(events.size(), 11u);
     EXPECT_EQ(events[0].command, ScriptCommand::Samples);
     EXPECT_EQ(events[0].samples, 16u);
     EXPECT_EQ(events[0].where, "s.txt:2");
@@ -58,8 +59,11 @@ TEST(ViewEventScript, ParsesEveryCommand) {
     EXPECT_EQ(events[7].button, DragButton::ShiftLeft);
     EXPECT_FLOAT_EQ(events[7].to.y, 40.0f);
     EXPECT_EQ(events[8].key, ViewKey::PlayPause);
-    EXPECT_EQ(events[9].command, ScriptCommand::Quit);
-    EXPECT_EQ(events[9].where, "s.txt:12");
+    EXPECT_EQ(events[9].command, ScriptCommand::Resize);
+    EXPECT_FLOAT_EQ(events[9].from.x, 320.0f);
+    EXPECT_FLOAT_EQ(events[9].from.y, 200.0f);
+    EXPECT_EQ(events[10].command, ScriptCommand::Quit);
+    EXPECT_EQ(events[10].where, "s.txt:13");
 }
 
 TEST(ViewEventScript, BadLinesAreRefusedNamingTheLine) {
@@ -76,6 +80,10 @@ TEST(ViewEventScript, BadLinesAreRefusedNamingTheLine) {
     EXPECT_NE(errorOf("drag 1 2 3 4 middle").find("unknown button 'middle'"), std::string::npos);
     EXPECT_NE(errorOf("key F5").find("unknown key 'F5'"), std::string::npos);
     EXPECT_NE(errorOf("quit now").find("s.txt:1"), std::string::npos);
+    EXPECT_NE(errorOf("resize 64").find("resize W H"), std::string::npos);
+    EXPECT_NE(errorOf("resize 0 64").find("from 1 to 16384"), std::string::npos);
+    EXPECT_NE(errorOf("resize 64 20000").find("from 1 to 16384"), std::string::npos);
+    EXPECT_NE(errorOf("resize 64.5 64").find("whole number"), std::string::npos);
     EXPECT_EQ(errorOf("# only a comment\n\n"), "no error");
 }
 

@@ -1,4 +1,4 @@
-// `vkphoton view` end to end: without a display (exit 2 naming DISPLAY), and under Xvfb, which
+// `vkphoton view` end to end: without a display (exit 2 naming DISPLAY; `--headless` runs), and under Xvfb, which
 // each test starts itself through xvfb-run (so the suite needs no DISPLAY): an event script that
 // moves a node, checked against offline renders of the moved and unmoved scene; the stats of a
 // move, a camera change and a click-and-drag; and (VKPHOTON_VALIDATE=1, which the suite sets and
@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -213,6 +214,65 @@ TEST(ViewXvfb, ClickShiftDragMovesTheNodeAndOrbitTracesNoPhotons) {
     EXPECT_EQ(stats["changes"][1]["kind"], "orbit");
     EXPECT_EQ(stats["changes"][1]["photonPathsTraced"].get<uint64_t>(), 0u);
     EXPECT_EQ(stats["changes"][1]["fullPhotonPaths"].get<uint64_t>(), 40000u);
+}
+
+// The photon render of the resize tests, without its size (kPhotonFlags' maps traced for every
+// camera alike: --deposit all).
+const std::string kResizeFlags =
+    "--integrator photon --photons 20000 --caustic-photons 20000 --gather-rays 2 --gather-guide 0 --deposit all "
+    "--seed 3 --spp 2";
+
+// `resize 96 48` after two samples at 64x64: the screenshots have the window's size at the time,
+// the one after the resize matches an offline render at 96x48 (the camera kept its vertical field
+// of view; the maps were kept: the "resize" change traced no photon paths).
+void runAndCheckResize(const fs::path& dir, const std::function<RunResult(const std::string&)>& view) {
+    writeText(dir / "events.txt", "samples 2\nscreenshot " + (dir / "square.exr").string() +
+                                      "\nresize 96 48\nsamples 2\nscreenshot " + (dir / "wide.exr").string() +
+                                      "\nquit\n");
+    const RunResult r = view(kGlass + " " + kResizeFlags + " --width 64 --height 64 --events " +
+                             (dir / "events.txt").string() + " --stats-json " + (dir / "stats.json").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation:"), std::string::npos) << r.output;
+    const ImageRgb square = readExr(dir / "square.exr"), wide = readExr(dir / "wide.exr");
+    EXPECT_EQ(square.width, 64u);
+    EXPECT_EQ(square.height, 64u);
+    ASSERT_EQ(wide.width, 96u);
+    ASSERT_EQ(wide.height, 48u);
+    const RunResult offline = test::runVkphoton("render " + kGlass + " " + kResizeFlags + " --width 96 --height 48 "
+                                                "--quiet -o " + (dir / "offline.exr").string());
+    ASSERT_EQ(offline.exitCode, 0) << offline.output;
+    const double difference = relativeMse(wide, readExr(dir / "offline.exr"));
+    EXPECT_LT(difference, 0.001) << difference;
+    const nlohmann::json stats = readJson(dir / "stats.json");
+    ASSERT_EQ(stats["changes"].size(), 1u) << stats.dump(2);
+    EXPECT_EQ(stats["changes"][0]["kind"], "resize");
+    EXPECT_EQ(stats["changes"][0]["photonPathsTraced"].get<uint64_t>(), 0u);
+    EXPECT_TRUE(stats["changes"][0]["secondsToFirstImage"].is_number());
+    EXPECT_EQ(stats["width"], 96);
+    EXPECT_EQ(stats["height"], 48);
+}
+
+// --headless needs no display: a script drives it (without one it is refused, exit 2).
+TEST(ViewHeadless, ResizeMatchesAnOfflineRenderAtTheNewSize) {
+    const fs::path dir = test::freshTempDir("view", "headless-resize");
+    runAndCheckResize(dir, [](const std::string& args) { return runWithoutDisplay("view --headless " + args); });
+    const nlohmann::json stats = readJson(dir / "stats.json");
+    EXPECT_EQ(stats["headless"], true);
+    EXPECT_GT(stats["framesPresented"].get<uint64_t>(), 2u);
+    EXPECT_TRUE(stats["presentedPerSecond"].is_number()) << stats.dump(2);
+}
+
+TEST(ViewHeadless, WithoutEventsExitsWithTwo) {
+    const RunResult r = runWithoutDisplay("view --headless " + kGlass + " --spp 1");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--headless needs --events"), std::string::npos) << r.output;
+}
+
+// The window itself resized (GLFW asks the X server; the framebuffer's new size comes back as a
+// resize): a new swapchain of the new size, the same images as headless.
+TEST(ViewXvfb, WindowResizeMatchesAnOfflineRenderAtTheNewSize) {
+    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup.sh installs xvfb and xauth)";
+    runAndCheckResize(test::freshTempDir("view", "window-resize"), runViewUnderXvfb);
 }
 
 }  // namespace
