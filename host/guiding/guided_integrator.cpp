@@ -34,6 +34,10 @@ void GuidedIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t first, uint32
     m_recorder->record(cmd, first, count, &m_guide->params());
 }
 
+void GuidedIntegrator::recordSamplePart(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange part) {
+    m_recorder->recordPart(cmd, sample, part, &m_guide->params());
+}
+
 void GuidedIntegrator::report(Stats& stats) const {
     m_settings.report(stats);
     if (m_guide) m_guide->report(stats);

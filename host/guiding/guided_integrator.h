@@ -21,6 +21,8 @@ public:
     void prepare(const Frame& frame, const Film& film) override;
     uint32_t maxSamplesPerBatch() const override { return 4096; }
     void recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) override;
+    bool recordsSampleParts() const override { return true; }
+    void recordSamplePart(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange part) override;
     std::optional<std::string> stoppedEarly() const override {
         return m_stopReason.empty() ? std::nullopt : std::optional<std::string>(m_stopReason);
     }

@@ -252,28 +252,40 @@ void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
 
 void PhotonIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) {
     m_timer->beginRecording(cmd);
-    for (uint32_t sample = first; sample < first + count; ++sample) {
-        m_visibleParams.sampleIndex = sample;
-        m_timer->begin(cmd, kStageVisiblePoints);
-        m_visiblePass->record(cmd, m_visibleParams, m_window);
+    for (uint32_t sample = first; sample < first + count; ++sample) recordSample(cmd, sample, m_window, true);
+}
+
+void PhotonIntegrator::recordSamplePart(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange part) {
+    recordSample(cmd, sample, part, false);  // parts are not timed (the stage timer times whole batches)
+}
+
+void PhotonIntegrator::recordSample(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange pixels, bool timed) {
+    const auto begin = [&](uint32_t stage) {
+        if (timed) m_timer->begin(cmd, stage);
+    };
+    const auto end = [&](uint32_t stage) {
+        if (timed) m_timer->end(cmd, stage);
+    };
+    m_visibleParams.sampleIndex = sample;
+    begin(kStageVisiblePoints);
+    m_visiblePass->record(cmd, m_visibleParams, pixels);
+    vk::computeBarrier(cmd);
+    end(kStageVisiblePoints);
+    if (m_causticPass) {
+        begin(kStageCaustics);
+        m_causticPass->record(cmd, m_causticParams, pixels);
         vk::computeBarrier(cmd);
-        m_timer->end(cmd, kStageVisiblePoints);
-        if (m_causticPass) {
-            m_timer->begin(cmd, kStageCaustics);
-            m_causticPass->record(cmd, m_causticParams, m_window);
-            vk::computeBarrier(cmd);
-            m_timer->end(cmd, kStageCaustics);
-        }
-        // One dispatch per gather ray keeps each invocation's loops within lavapipe's limit.
-        m_gatherParams.sampleIndex = sample;
-        m_timer->begin(cmd, kStageGathers);
-        for (uint32_t ray = 0; ray < std::max(1u, m_settings.gatherRays); ++ray) {
-            m_gatherParams.rayIndex = ray;
-            m_gatherPass->record(cmd, m_gatherParams, m_window);
-            vk::computeBarrier(cmd);
-        }
-        m_timer->end(cmd, kStageGathers);
+        end(kStageCaustics);
     }
+    // One dispatch per gather ray keeps each invocation's loops within lavapipe's limit.
+    m_gatherParams.sampleIndex = sample;
+    begin(kStageGathers);
+    for (uint32_t ray = 0; ray < std::max(1u, m_settings.gatherRays); ++ray) {
+        m_gatherParams.rayIndex = ray;
+        m_gatherPass->record(cmd, m_gatherParams, pixels);
+        vk::computeBarrier(cmd);
+    }
+    end(kStageGathers);
 }
 
 void PhotonIntegrator::report(Stats& stats) const {

@@ -33,6 +33,8 @@ public:
     void prepare(const Frame& frame, const Film& film) override;
     uint32_t maxSamplesPerBatch() const override { return 64; }
     void recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) override;
+    bool recordsSampleParts() const override { return true; }
+    void recordSamplePart(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange part) override;
     std::optional<std::string> stoppedEarly() const override {
         return m_stopReason.empty() ? std::nullopt : std::optional<std::string>(m_stopReason);
     }
@@ -40,6 +42,8 @@ public:
 
 private:
     void buildMaps(const Frame& frame);
+    // Sample `sample` of `pixels`: visible points, caustics, final gathers (timed: stage queries).
+    void recordSample(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange pixels, bool timed);
     void buildGatherGuide(const PhotonMapStats& globalStats);
 
     const GpuScene& m_scene;

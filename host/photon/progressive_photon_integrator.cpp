@@ -69,11 +69,17 @@ void ProgressivePhotonIntegrator::beginSamples(uint32_t first, uint32_t count) {
 
 void ProgressivePhotonIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) {
     (void)count;
-    m_visibleParams.sampleIndex = first;
+    recordSamplePart(cmd, first, m_window);
+}
+
+// The pass's visible points and their SPPM update, per pixel: a part of the pixels reads the
+// photon map beginSamples built for this pass, as the whole frame does.
+void ProgressivePhotonIntegrator::recordSamplePart(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange part) {
+    m_visibleParams.sampleIndex = sample;
     vk::computeBarrier(cmd);
-    m_visiblePass->record(cmd, m_visibleParams, m_window);
+    m_visiblePass->record(cmd, m_visibleParams, part);
     vk::computeBarrier(cmd);
-    m_updatePass->record(cmd, m_sppmParams, m_window);
+    m_updatePass->record(cmd, m_sppmParams, part);
 }
 
 // Direct light (the film's mean) plus tau / (passes pi R^2).

@@ -29,6 +29,9 @@ public:
     uint32_t maxSamplesPerBatch() const override { return 1; }
     void beginSamples(uint32_t first, uint32_t count) override;
     void recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) override;
+    bool recordsSampleParts() const override { return true; }
+    void recordSamplePart(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange part) override;
+    bool beginsWithHostWork() const override { return true; }
     void finish(ImageRgb& image, uint32_t samplesDone) override;
     const vk::Buffer* progressiveEstimates() const override { return m_sppm.get(); }
     std::optional<std::string> stoppedEarly() const override {

@@ -5,6 +5,8 @@
 //   prepare(frame, film)          once per frame: photon maps, guides; binds the film
 //   beginSamples(first, count)    host work before a batch (SPPM: the pass's photon map)
 //   recordSamples(cmd, first, n)  records samples [first, first + n) into the film: no submit
+//   recordSamplePart(cmd, s, px)  (optional) sample s of some of the pixels only, so a consumer
+//                                 that must bound each submission (the viewer) can split one
 //   finish(image, samples)        adds what the film's sums do not hold (SPPM's photon estimate;
 //                                 progressiveEstimates() is its buffer for device-side resolves)
 //   report(stats)                 named statistics, its resolved settings, warnings
@@ -17,6 +19,7 @@
 #include <vulkan/vulkan.h>
 
 #include "image/image.h"
+#include "vk/compute_kernel.h"
 #include "render/film.h"
 #include "render/frame.h"
 #include "render/stats.h"
@@ -41,6 +44,19 @@ public:
     }
     // Records samples [first, first + count) of every pixel into the film. Record only.
     virtual void recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) = 0;
+    // Whether recordSamplePart() works (every built-in integrator's does).
+    virtual bool recordsSampleParts() const { return false; }
+    // Whether beginSamples() does work worth running beside the window's loop (SPPM's photon
+    // pass); the viewer then runs it on a thread of its own.
+    virtual bool beginsWithHostWork() const { return false; }
+    // Records sample `sample` of the pixels in `part` (a range of the frame's pixelRange()) into
+    // the film: the same values recordSamples gives those pixels. The parts of one sample, each
+    // recorded once after one beginSamples(sample, 1), may go in separate submissions. Record only.
+    virtual void recordSamplePart(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange part) {
+        (void)cmd;
+        (void)sample;
+        (void)part;
+    }
     // After the last batch: adds to the film's resolved means what they do not hold.
     virtual void finish(ImageRgb& image, uint32_t samplesDone) {
         (void)image;

@@ -40,6 +40,15 @@ void PathSampleRecorder::record(VkCommandBuffer cmd, uint32_t first, uint32_t co
     }
 }
 
+void PathSampleRecorder::recordPart(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange part,
+                                    const gpu::GuideParams* guide) {
+    m_params.firstSample = sample;
+    m_params.sampleCount = 1;
+    if (guide) m_pass.record(cmd, m_params, *guide, part);
+    else m_pass.record(cmd, m_params, part);
+    vk::computeBarrier(cmd);
+}
+
 void PathIntegrator::prepare(const Frame& frame, const Film& film) {
     m_recorder = std::make_unique<PathSampleRecorder>(m_scene, frame, film, kMaxSamplesPerDispatch, 0u);
 }

@@ -24,6 +24,8 @@ public:
 
     // Records samples [first, first + count) with the guide's push constants when there is one.
     void record(VkCommandBuffer cmd, uint32_t first, uint32_t count, const gpu::GuideParams* guide = nullptr);
+    // Records sample `sample` of the pixels in `part` only (Integrator::recordSamplePart).
+    void recordPart(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange part, const gpu::GuideParams* guide = nullptr);
 
 private:
     PathTracePass m_pass;
@@ -40,6 +42,10 @@ public:
     void prepare(const Frame& frame, const Film& film) override;
     uint32_t maxSamplesPerBatch() const override { return 4096; }
     void recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) override;
+    bool recordsSampleParts() const override { return true; }
+    void recordSamplePart(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange part) override {
+        m_recorder->recordPart(cmd, sample, part);
+    }
     void report(Stats& stats) const override { (void)stats; }
 
 private:

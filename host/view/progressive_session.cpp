@@ -42,6 +42,8 @@ bool ProgressiveSession::setScene(Scene scene) {
 
 void ProgressiveSession::setIntegrator(const IntegratorConfig& config) {
     m_config = &config;
+    m_secondsPerSample = 0.0;
+    m_secondsPerBegin = 0.0;
     m_integrator.reset();
     m_integrator = config.create(m_frameScene.renderer().gpuScene());
     m_needFull = true;  // its maps are new (the selective update keys them by their settings)
@@ -58,6 +60,8 @@ void ProgressiveSession::resize(uint32_t width, uint32_t height) {
     frame.check();
     m_settings.frame = frame;
     m_film = std::make_unique<Film>(m_context, width, height);
+    m_secondsPerSample = 0.0;
+    m_secondsPerBegin = 0.0;
 }
 
 void ProgressiveSession::restart(PhotonRefresh refresh, bool allowPreview) {
@@ -84,6 +88,8 @@ void ProgressiveSession::restart(PhotonRefresh refresh, bool allowPreview) {
     m_needFull = false;
     m_samples = 0;
     m_batch = 1;
+    m_partDone = 0;
+    m_begun = false;
     m_pendingRefresh.reset();
     m_preparedNow = false;
     m_previewImage = false;
@@ -152,6 +158,15 @@ void ProgressiveSession::refreshRound() {
 }
 
 void ProgressiveSession::cancel() {
+    if (m_begin.valid()) {  // a per-sample photon pass: stopped between chunks, its sample begun again
+        m_stop = true;
+        try {
+            m_begin.get();
+        } catch (...) {
+        }
+        m_begun = false;
+        m_partDone = 0;
+    }
     if (!m_preparation.valid()) return;
     m_stop = true;
     try {
@@ -162,6 +177,7 @@ void ProgressiveSession::cancel() {
 
 uint32_t ProgressiveSession::step(double targetSeconds) {
     m_preparedNow = false;
+    m_partRecorded = false;
     if (m_preparation.valid()) {
         // The preparation runs on its own thread; the window keeps being polled meanwhile.
         if (m_preparation.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return 0;
@@ -172,6 +188,8 @@ uint32_t ProgressiveSession::step(double targetSeconds) {
         m_refreshing = false;
         m_samples = 0;
         m_batch = 1;
+        m_partDone = 0;
+        m_begun = false;
         return 0;
     }
     if (m_pendingRefresh) {
@@ -182,11 +200,24 @@ uint32_t ProgressiveSession::step(double targetSeconds) {
         m_preparation = std::async(std::launch::async, [this, refresh] { prepareIntegrator(refresh); });
         return 0;
     }
+    if (m_begin.valid()) {  // the sample's host work (parts mode), on its own thread
+        if (m_begin.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return 0;
+        m_begin.get();  // rethrows its error
+        m_begun = true;
+    }
     if (complete() || !m_integrator) return 0;
+    // A whole sample within this long keeps the window responsive enough; longer ones go in parts
+    // of about this long (shorter parts would spend more of the time submitting and showing).
+    constexpr double kPartSeconds = 0.1;
+    const double longest = std::max(targetSeconds, kPartSeconds);
+    const bool slow = !(m_secondsPerSample > 0.0) || m_secondsPerSample > longest || m_secondsPerBegin > longest;
+    if (m_settings.sampleParts && m_integrator->recordsSampleParts() && (m_partDone > 0 || m_begun || slow))
+        return stepPart(longest);
     const uint32_t count =
         std::min({m_batch, m_integrator->maxSamplesPerBatch(), m_settings.frame.samplesPerPixel - m_samples});
     const auto start = Clock::now();
     m_integrator->beginSamples(m_samples, count);
+    m_secondsPerBegin = secondsSince(start);
     m_context.submitAndWait([&](VkCommandBuffer cmd) {
         m_integrator->recordSamples(cmd, m_samples, count);
         vk::computeToHostBarrier(cmd);
@@ -194,9 +225,48 @@ uint32_t ProgressiveSession::step(double targetSeconds) {
     m_samples += count;
     // Grow or shrink the next batch towards the target time (the window waits for it).
     const double perSample = secondsSince(start) / count;
+    m_secondsPerSample = perSample;
     const double next = perSample > 0.0 ? targetSeconds / perSample : 2.0 * m_batch;
     m_batch = uint32_t(std::clamp(next, 1.0, 4096.0));
     return count;
+}
+
+uint32_t ProgressiveSession::stepPart(double targetSeconds) {
+    constexpr uint64_t kMinPartPixels = 1024;  // below this a submission's own cost dominates
+    const vk::ItemRange window = m_frame.pixelRange();
+    const uint64_t left = window.count - m_partDone;
+    const double estimate = m_secondsPerSample > 0.0 ? double(window.count) * targetSeconds / m_secondsPerSample
+                                                     : double(window.count) / 16.0;
+    const uint64_t size = std::clamp<uint64_t>(uint64_t(estimate), std::min(left, kMinPartPixels), left);
+    if (!m_begun) {
+        if (m_integrator->beginsWithHostWork()) {
+            m_begin = std::async(std::launch::async, [this, sample = m_samples] {
+                const auto begin = Clock::now();
+                m_integrator->beginSamples(sample, 1);
+                m_secondsPerBegin = secondsSince(begin);  // read after the future's get()
+            });
+            return 0;
+        }
+        const auto begin = Clock::now();
+        m_integrator->beginSamples(m_samples, 1);
+        m_secondsPerBegin = secondsSince(begin);
+        m_begun = true;
+    }
+    const auto start = Clock::now();
+    m_context.submitAndWait([&](VkCommandBuffer cmd) {
+        m_integrator->recordSamplePart(cmd, m_samples, vk::ItemRange{window.first + m_partDone, size});
+        vk::computeToHostBarrier(cmd);
+    });
+    m_secondsPerSample = secondsSince(start) * double(window.count) / double(size);
+    m_partDone += size;
+    m_partRecorded = true;
+    ++m_partsRecorded;
+    if (m_partDone < window.count) return 0;
+    m_partDone = 0;
+    m_begun = false;
+    ++m_samples;
+    m_batch = 1;
+    return 1;
 }
 
 }  // namespace vkp

@@ -42,6 +42,9 @@ struct SessionSettings {
     // Integrators with a preparation (photon maps, guides) show one path-traced sample of the
     // changed scene first, then prepare: the change is on screen before the maps are traced.
     bool preview = true;
+    // Samples slower than a loop iteration are recorded in parts of the pixels (step()); false:
+    // whole samples always (the same images; the window waits for each sample).
+    bool sampleParts = true;
 };
 
 class ProgressiveSession {
@@ -67,13 +70,23 @@ public:
     // path-traced sample (the preview; SessionSettings::preview and `allowPreview`), or, without
     // a preview, keeps the last image until the preparation is done.
     void restart(PhotonRefresh refresh, bool allowPreview = true);
-    // One batch of samples, sized towards `targetSeconds` (at least one sample); nothing once
-    // the frame's spp are done. Returns the samples rendered. After a restart that defers the
+    // One batch of samples, sized towards `targetSeconds`; nothing once the frame's spp are
+    // done. Where one sample of every pixel takes longer than that (and 0.1 s) and the integrator
+    // can record a sample in parts (Integrator::recordsSampleParts; all built-in ones), one part
+    // of the pixels sized towards that time (the first part after a change of integrator or size:
+    // 1/16 of them), so the window is polled between bounded submissions. In that mode an
+    // integrator's per-sample host work (Integrator::beginsWithHostWork: SPPM's photon pass) runs
+    // on a thread of its own, started by one step() and found done by a later one (preparing()
+    // meanwhile); the mode is also taken when that work alone takes longer. Elsewhere whole
+    // samples, at least one.
+    // Returns the samples completed (0 after a part that did not complete one; partRecorded()). After a restart that defers the
     // preparation it starts it (returns 0), while it runs it returns 0 (preparing()), and the
     // call that finds it done returns 0 with preparedNow() true (rethrowing its error).
     // Nothing but step(), cancel() and the accessors may be called while preparing().
     uint32_t step(double targetSeconds);
-    bool preparing() const { return m_preparation.valid(); }
+    // A preparation, or an integrator's per-sample host work (SPPM's photon pass, run on a thread
+    // of its own in parts mode: Integrator::beginsWithHostWork), is running.
+    bool preparing() const { return m_preparation.valid() || m_begin.valid(); }
     // Stops a running preparation (its photon passes stop between chunks) and waits for it.
     void cancel();
     // Whether the film holds the preview's sample or the last image (the integrator not prepared).
@@ -99,6 +112,10 @@ public:
         return m_integrator && !inPreview() ? m_integrator->progressiveEstimates() : nullptr;
     }
     uint32_t samples() const { return m_samples; }
+    // Whether the last step() recorded a part of a sample (the film changed, samples() did not).
+    bool partRecorded() const { return m_partRecorded; }
+    // Submissions that recorded a part of a sample, since the session began.
+    uint64_t partsRecorded() const { return m_partsRecorded; }
     bool complete() const { return m_samples >= m_settings.frame.samplesPerPixel; }
     std::string integratorName() const { return m_integrator ? m_integrator->name() : std::string(); }
     // The photon paths the last restart traced, and what a full retrace of its maps traces.
@@ -136,6 +153,14 @@ private:
     uint32_t m_round = 0;
     uint32_t m_samples = 0;
     uint32_t m_batch = 1;
+    uint64_t m_partDone = 0;           // pixels of sample m_samples recorded in parts so far
+    std::future<void> m_begin;         // beginSamples(m_samples, 1) on its own thread (parts mode)
+    bool m_begun = false;              // beginSamples ran for sample m_samples (parts mode)
+    double m_secondsPerSample = 0.0;   // the last measured cost of one sample of every pixel (0: none yet)
+    double m_secondsPerBegin = 0.0;    // ... of the integrator's beginSamples for one sample
+    bool m_partRecorded = false;
+    uint64_t m_partsRecorded = 0;
+    uint32_t stepPart(double targetSeconds);
     uint64_t m_staleGroups = 0;
     uint32_t m_refreshRounds = 0;      // refresh rounds since the last move
     uint32_t m_refreshRoundCap = 0;

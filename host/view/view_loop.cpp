@@ -134,6 +134,7 @@ int runView(const ViewCommandOptions& options,
     settings.selective.budget = render.photonBudget;
     settings.selective.groups = render.photonGroups;
     settings.preview = options.preview;
+    settings.sampleParts = options.sampleParts;
     // The environment is chosen once, for the scene as loaded: a move never switches the default
     // sky on or off (nor traces the emitters' landing again).
     std::optional<Environment> environment;
@@ -240,8 +241,10 @@ int runView(const ViewCommandOptions& options,
                     break;
                 }
                 if (secondsSince(lastTitle) > 0.5) {
-                    setTitle(fmt::format("vkphoton view: {} | {} | preparing ({:.0f} s){}", sceneName,
-                                                session.integratorName(), secondsSince(restartAt),
+                    setTitle(fmt::format("vkphoton view: {} | {} | {} ({:.0f} s){}", sceneName,
+                                                session.integratorName(),
+                                                session.inPreview() ? "preparing" : "tracing a pass's photons",
+                                                secondsSince(restartAt),
                                                 deferred.empty() ? std::string() : ", input queued"));
                     lastTitle = Clock::now();
                 }
@@ -391,7 +394,7 @@ int runView(const ViewCommandOptions& options,
         if (!(session.hasPreviewImage() && shownSamples == UINT32_MAX))
             rendered = session.step(std::max({kFrameSeconds - showSeconds, kRenderPerShow * showSeconds, kMinRenderSeconds}));
         if (session.preparing()) continue;  // the film is the preparation's until it is done
-        if (rendered > 0 || shownSamples != session.samples() || redraw) {
+        if (rendered > 0 || session.partRecorded() || shownSamples != session.samples() || redraw) {
             const auto showStart = Clock::now();
             presenter.present(display->pixels(), [&](VkCommandBuffer cmd) {
                 display->record(cmd, session.film().sums(), session.progressiveEstimates(), session.samples(),
@@ -422,6 +425,7 @@ int runView(const ViewCommandOptions& options,
         json["width"] = width;  // at the end (after any resize)
         json["height"] = height;
         json["headless"] = options.headless;
+        json["sampleParts"] = session.partsRecorded();
         json["spp"] = render.frame.samplesPerPixel;
         json["preview"] = settings.preview;
         json["startup"] = startup;

@@ -250,6 +250,9 @@ void runAndCheckResize(const fs::path& dir, const std::function<RunResult(const 
     EXPECT_TRUE(stats["changes"][0]["secondsToFirstImage"].is_number());
     EXPECT_EQ(stats["width"], 96);
     EXPECT_EQ(stats["height"], 48);
+    // The first sample after each change of size starts in parts of the pixels (a photon sample
+    // here takes longer than the loop's frame): the images above include samples made in parts.
+    EXPECT_GE(stats["sampleParts"].get<uint64_t>(), 2u) << stats.dump(2);
 }
 
 // --headless needs no display: a script drives it (without one it is refused, exit 2).
@@ -260,6 +263,34 @@ TEST(ViewHeadless, ResizeMatchesAnOfflineRenderAtTheNewSize) {
     EXPECT_EQ(stats["headless"], true);
     EXPECT_GT(stats["framesPresented"].get<uint64_t>(), 2u);
     EXPECT_TRUE(stats["presentedPerSecond"].is_number()) << stats.dump(2);
+}
+
+// Samples slower than a loop iteration are recorded in parts of the pixels (the window is polled
+// between them): for every built-in integrator the image after them is bit for bit the image of
+// whole samples (--no-sample-parts).
+TEST(ViewHeadless, SamplesInPartsEqualWholeSamples) {
+    const fs::path dir = test::freshTempDir("view", "parts");
+    const std::string scene = std::string(VKPHOTON_SCENES) + "/cornell-box.gltf";
+    const std::string small = "--photons 20000 --caustic-photons 20000 --gather-rays 2 --width 96 --height 64 "
+                              "--spp 3 --seed 3";
+    for (const char* integrator : {"path", "guided", "photon", "sppm"}) {
+        for (const bool parts : {true, false}) {
+            const std::string name = std::string(integrator) + (parts ? "-parts" : "-whole");
+            writeText(dir / (name + ".txt"), "samples 3\nscreenshot " + (dir / (name + ".exr")).string() + "\nquit\n");
+            const RunResult r = runWithoutDisplay("view --headless " + scene + " --integrator " + integrator + " " +
+                                                  small + (parts ? "" : " --no-sample-parts") + " --events " +
+                                                  (dir / (name + ".txt")).string() + " --stats-json " +
+                                                  (dir / (name + ".json")).string());
+            ASSERT_EQ(r.exitCode, 0) << name << "\n" << r.output;
+            const uint64_t recorded = readJson(dir / (name + ".json"))["sampleParts"].get<uint64_t>();
+            // The first sample of a new integrator always starts in parts (its cost is not known yet).
+            if (parts) EXPECT_GE(recorded, 2u) << name;
+            else EXPECT_EQ(recorded, 0u) << name;
+        }
+        const ImageRgb inParts = readExr(dir / (std::string(integrator) + "-parts.exr"));
+        const ImageRgb whole = readExr(dir / (std::string(integrator) + "-whole.exr"));
+        EXPECT_EQ(inParts.pixels, whole.pixels) << integrator;
+    }
 }
 
 TEST(ViewHeadless, WithoutEventsExitsWithTwo) {
