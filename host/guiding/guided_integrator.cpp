@@ -6,12 +6,13 @@
 namespace vkp {
 namespace {
 
-// A guided vertex adds the grid's lookup (with the cache) or a k-nearest gather and the grid's
-// construction (without) to lavapipe's loop budget of a dispatch (docs/photon-mapping.md): fewer
-// samples per dispatch than the path tracer. A budget cut short is not only a darker sample: which
-// samples lavapipe cuts varies from run to run (a furnace's per-vertex render, 2 samples per
-// dispatch, lost 0 to 2 samples and its mean by 2e-4 between runs of one seed).
-constexpr uint32_t kMaxGuidedSamplesPerDispatch = 2;
+// A guided vertex adds to lavapipe's loop budget of a dispatch (docs/photon-mapping.md): with
+// the cache a binary search of at most 6 steps over the grid read in place, so as many samples
+// per dispatch as the path tracer; without it a k-nearest gather and the grid's construction, so
+// one. A budget cut short is not only a darker sample: which samples lavapipe cuts varies from
+// run to run (a furnace's per-vertex render, 2 samples per dispatch, lost 0 to 2 samples and its
+// mean by 2e-4 between runs of one seed).
+constexpr uint32_t kMaxGuidedSamplesPerDispatch = 8;
 constexpr uint32_t kMaxPerVertexGuidedSamplesPerDispatch = 1;
 
 }  // namespace

@@ -55,10 +55,21 @@ float cachedGuideMix(CachedGuide g, vec3 normal, float mix) {
     return dot(g.n, normal) < 0.99999f ? min(mix, kCachedGuideMaxMix) : mix;
 }
 
-// The grid's CDF (kMaxGuideCells entries).
-void loadCachedGuideCdf(CachedGuide g, out float cdf[kMaxGuideCells]) {
-    uint base = (g.bucket * kNormalBins + g.bin) * kMaxGuideCells;
-    for (uint i = 0u; i < kMaxGuideCells; ++i) cdf[i] = cacheCdfs[base + i];
+// Where the grid's CDF (kMaxGuideCells entries) starts in cacheCdfs.
+uint cachedGuideCdfBase(CachedGuide g) { return (g.bucket * kNormalBins + g.bin) * kMaxGuideCells; }
+
+// guidePdf and guideSample (shared/guiding.glsl) over a cached grid, read in place.
+#define GUIDE_CACHE_AT(i) cacheCdfs[cdfBase + (i)]
+float cachedGuidePdf(uint cdfBase, uint m, uint n, vec3 wi) {
+    if (wi.z <= 0.0f) return 0.0f;
+    uint c = guideCell(invertCosineHemisphere(wi), m, n);
+    return guideDensity(GUIDE_CELL_PROBABILITY(GUIDE_CACHE_AT, c), m, n, wi);
 }
+vec3 cachedGuideSample(uint cdfBase, uint m, uint n, vec3 u) {
+    uint c;
+    GUIDE_FIND_CELL(GUIDE_CACHE_AT, m * n, u.x, c)
+    return guideCellDirection(c, m, n, vec2(u.y, u.z));
+}
+#undef GUIDE_CACHE_AT
 
 #endif

@@ -33,8 +33,6 @@ layout(push_constant) uniform Push { FinalGatherParams params; };
 
 const uint kFinalGatherStream = 0x46474154u;  // "FGAT"
 
-float gatherCdf[kMaxGuideCells];  // the visible point's cached grid, as a CDF
-
 // A direction at the visible point and its weight f cos / pdf: with probability `mix` from the
 // guiding cache's grid (Jensen 1995: the photons' incoming flux; shared/papers/001), else from the
 // BSDF, weighted by the mixture density mix p_grid + (1 - mix) p_bsdf (one-sample MIS, the
@@ -46,13 +44,14 @@ bool sampleGatherDirection(VisibleSurface s, vec3 position, bool frontFace, inou
     weight = vec3(0.0f);
     float mix = 0.0f;
     CachedGuide cached;
+    uint cdfBase = 0u;  // the cached grid's CDF, read in place
     uint gm = params.guide.gridSize & 0xffu;
     uint gn = (params.guide.gridSize >> 8u) & 0xffu;
     if (params.guide.mix > 0.0f && !specularIsDelta(s.bsdf) && s.bsdf.transmission == 0.0f) {
         cached = findCachedGuide(params.guide.grid, position, s.n);
         if (cached.found) {
             mix = cachedGuideMix(cached, s.n, params.guide.mix);
-            loadCachedGuideCdf(cached, gatherCdf);
+            cdfBase = cachedGuideCdfBase(cached);
         }
     }
     if (mix <= 0.0f) {
@@ -64,7 +63,7 @@ bool sampleGatherDirection(VisibleSurface s, vec3 position, bool frontFace, inou
     }
     vec3 wi;  // local to the shading frame
     if (nextSample(rng) < mix) {
-        wi = toLocal(toWorld(guideSample(gatherCdf, gm, gn, u), cached.t, cached.b, cached.n), s.t, s.b, s.n);
+        wi = toLocal(toWorld(cachedGuideSample(cdfBase, gm, gn, u), cached.t, cached.b, cached.n), s.t, s.b, s.n);
     } else {
         BsdfSample bs = sampleBsdf(s.bsdf, s.wo, frontFace, true, u);
         if (bs.lobe == kLobeNone || (bs.lobe & kLobeDelta) != 0u) return false;
@@ -72,7 +71,7 @@ bool sampleGatherDirection(VisibleSurface s, vec3 position, bool frontFace, inou
     }
     if (wi.z <= 0.0f) return false;
     vec3 wiGrid = toLocal(toWorld(wi, s.t, s.b, s.n), cached.t, cached.b, cached.n);
-    float pdf = mix * guidePdf(gatherCdf, gm, gn, wiGrid) + (1.0f - mix) * pdfBsdf(s.bsdf, s.wo, wi);
+    float pdf = mix * cachedGuidePdf(cdfBase, gm, gn, wiGrid) + (1.0f - mix) * pdfBsdf(s.bsdf, s.wo, wi);
     if (!(pdf > 0.0f)) return false;
     dir = normalize(toWorld(wi, s.t, s.b, s.n));
     weight = evalBsdf(s.bsdf, s.wo, wi) * (wi.z / pdf);

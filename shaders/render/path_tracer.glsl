@@ -97,14 +97,34 @@ struct VertexGuide {
     vec3 b;
     vec3 normal;
     vec4 irradiance;  // the guiding photons' indirect irradiance (rgb; w 1 where there is an estimate)
+    uint cdfBase;     // with the cache: where the grid's CDF starts in the cache (read in place)
 };
 VertexGuide vertexGuide;
+#ifndef GUIDE_CACHE
 float guideCdf[kMaxGuideCells];  // the vertex's grid, as a CDF (guideFinalize)
+#endif
+
+// The vertex grid's density of local direction wi (in the grid's frame), and a direction from it.
+float vertexGuidePdf(vec3 wi) {
+#ifdef GUIDE_CACHE
+    return cachedGuidePdf(vertexGuide.cdfBase, vertexGuide.m, vertexGuide.n, wi);
+#else
+    return guidePdf(guideCdf, vertexGuide.m, vertexGuide.n, wi);
+#endif
+}
+vec3 vertexGuideSample(vec3 u) {
+#ifdef GUIDE_CACHE
+    return cachedGuideSample(vertexGuide.cdfBase, vertexGuide.m, vertexGuide.n, u);
+#else
+    return guideSample(guideCdf, vertexGuide.m, vertexGuide.n, u);
+#endif
+}
 
 void prepareGuide(PathVertex v) {
     vertexGuide.guided = false;
     vertexGuide.mix = guide.mix;
     vertexGuide.irradiance = vec4(0.0f);
+    vertexGuide.cdfBase = 0u;
     if (guide.mix <= 0.0f || specularLobeIsDelta(v.bsdf) || v.bsdf.transmission > 0.0f || !storesPhotons(v.bsdf)) return;
     uint gm = guide.gridSize & 0xffu;
     uint gn = (guide.gridSize >> 8u) & 0xffu;
@@ -118,7 +138,7 @@ void prepareGuide(PathVertex v) {
     gt = cached.t;
     gb = cached.b;
     vertexGuide.mix = cachedGuideMix(cached, v.n, guide.mix);
-    loadCachedGuideCdf(cached, guideCdf);
+    vertexGuide.cdfBase = cachedGuideCdfBase(cached);
     vec4 cachedIrradiance = cacheIrradiance[cached.bucket * kNormalBins + cached.bin];
     vertexGuide.irradiance = vec4(cachedIrradiance.rgb, 1.0f);
     uint photonsPerCell = guide.gridSize >> 16u;
@@ -154,7 +174,7 @@ float guidedDirectionPdf(PathVertex v, vec3 wi) {
     float bsdf = pdfVertexMis(v, wi);
     if (!vertexGuide.guided) return bsdf;
     vec3 wiGrid = toLocal(toWorld(wi, v.t, v.b, v.n), vertexGuide.t, vertexGuide.b, vertexGuide.normal);
-    return vertexGuide.mix * guidePdf(guideCdf, vertexGuide.m, vertexGuide.n, wiGrid) + (1.0f - vertexGuide.mix) * bsdf;
+    return vertexGuide.mix * vertexGuidePdf(wiGrid) + (1.0f - vertexGuide.mix) * bsdf;
 }
 
 // A direction from the prepared vertex's mixture, weighted by the mixture density.
@@ -162,7 +182,7 @@ BsdfSample sampleGuided(PathVertex v, vec3 u, float uSelect) {
     if (!vertexGuide.guided) return sampleVertexBsdf(v, true, u);
     BsdfSample s;
     if (uSelect < vertexGuide.mix) {
-        vec3 local = guideSample(guideCdf, vertexGuide.m, vertexGuide.n, u);
+        vec3 local = vertexGuideSample(u);
         s.wi = toLocal(toWorld(local, vertexGuide.t, vertexGuide.b, vertexGuide.normal), v.t, v.b, v.n);
         s.lobe = kLobeDiffuse;
     } else {

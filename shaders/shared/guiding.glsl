@@ -50,26 +50,55 @@ INLINE void guideFinalize(INOUT_ARRAY(float, cells, kMaxGuideCells), uint m, uin
     cells[count - 1u] = 1.0f;
 }
 
+// A grid's CDF is read through a macro, CDF_AT(i), so that the same search serves a grid in a
+// local array (a grid built at the vertex) and one read in place from a buffer (the guiding
+// cache: copying its 64 floats into a local array at every vertex cost more than the rest of
+// the guiding).
+
+// The probability of cell c of the CDF read by CDF_AT.
+#define GUIDE_CELL_PROBABILITY(CDF_AT, c) ((c) == 0u ? CDF_AT(0u) : CDF_AT(c) - CDF_AT((c) - 1u))
+
+// Sets `c` to the first of `count` cells whose CDF (read by CDF_AT) exceeds x (the last one's is
+// 1): a binary search, 6 reads for 64 cells.
+#define GUIDE_FIND_CELL(CDF_AT, count, x, c)         \
+    {                                               \
+        c = 0u;                                     \
+        uint guideLast_ = (count) - 1u;             \
+        while (c < guideLast_) {                    \
+            uint guideMid_ = (c + guideLast_) / 2u; \
+            if ((x) >= CDF_AT(guideMid_)) c = guideMid_ + 1u; \
+            else guideLast_ = guideMid_;            \
+        }                                           \
+    }
+
+// Solid-angle density of local direction wi (z > 0) in cell c of probability p.
+INLINE float guideDensity(float p, uint m, uint n, vec3 wi) { return p * float(m * n) * wi.z * kInvPi; }
+
+// A local direction in cell c of an m x n grid, from the point u inside it.
+INLINE vec3 guideCellDirection(uint c, uint m, uint n, vec2 u) {
+    uint iu = c / n;
+    uint iv = c - iu * n;
+    vec2 uv = vec2((float(iu) + u.x) / float(m), (float(iv) + u.y) / float(n));
+    return sampleCosineHemisphere(vec2(min(uv.x, kOneMinusEpsilon), min(uv.y, kOneMinusEpsilon)));
+}
+
+#define GUIDE_ARRAY_AT(i) cdf[i]
+
 INLINE float guideCellProbability(IN_ARRAY(float, cdf, kMaxGuideCells), uint c) {
-    return c == 0u ? cdf[0] : cdf[c] - cdf[c - 1u];
+    return GUIDE_CELL_PROBABILITY(GUIDE_ARRAY_AT, c);
 }
 
 // Solid-angle density of local direction wi under the guiding grid.
 INLINE float guidePdf(IN_ARRAY(float, cdf, kMaxGuideCells), uint m, uint n, vec3 wi) {
     if (wi.z <= 0.0f) return 0.0f;
-    uint c = guideCell(invertCosineHemisphere(wi), m, n);
-    return guideCellProbability(cdf, c) * float(m * n) * wi.z * kInvPi;
+    return guideDensity(guideCellProbability(cdf, guideCell(invertCosineHemisphere(wi), m, n)), m, n, wi);
 }
 
 // Samples a local direction: u.x picks the cell, u.yz the point inside it.
 INLINE vec3 guideSample(IN_ARRAY(float, cdf, kMaxGuideCells), uint m, uint n, vec3 u) {
-    uint count = m * n;
-    uint c = 0u;
-    while (c + 1u < count && u.x >= cdf[c]) c += 1u;
-    uint iu = c / n;
-    uint iv = c - iu * n;
-    vec2 uv = vec2((float(iu) + u.y) / float(m), (float(iv) + u.z) / float(n));
-    return sampleCosineHemisphere(vec2(min(uv.x, kOneMinusEpsilon), min(uv.y, kOneMinusEpsilon)));
+    uint c;
+    GUIDE_FIND_CELL(GUIDE_ARRAY_AT, m * n, u.x, c)
+    return guideCellDirection(c, m, n, vec2(u.y, u.z));
 }
 
 // The guiding cache keeps one grid per cache cell and normal bin (shared/normal_bins.glsl).
