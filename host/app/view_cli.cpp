@@ -99,7 +99,7 @@ ViewCommand::ViewCommand(CLI::App& app) {
     m_cmd->add_flag("--quiet", render.quiet, "No messages but errors");
     m_cmd->add_flag("--sample-parts,!--no-sample-parts", m_options.sampleParts,
                     "Record a sample that takes longer than 0.1 s in parts of the pixels, so the window stays "
-                    "responsive, or whole (--no-sample-parts, the default; docs/viewer.md)");
+                    "responsive (the default; the same images), or whole (--no-sample-parts)");
     m_cmd->add_flag("--preview,!--no-preview", m_options.preview,
                     "Integrators with a preparation (photon maps, guides): one path-traced sample of a change first "
                     "(the default), or none (--no-preview)");

@@ -42,10 +42,9 @@ struct SessionSettings {
     // Integrators with a preparation (photon maps, guides) show one path-traced sample of the
     // changed scene first, then prepare: the change is on screen before the maps are traced.
     bool preview = true;
-    // Samples slower than a loop iteration are recorded in parts of the pixels (step()); false
-    // (the default, until the difference in docs/viewer.md "Not done" is found): whole samples
-    // always, and the window waits for each sample.
-    bool sampleParts = false;
+    // Samples slower than a loop iteration are recorded in parts of the pixels (step()); false:
+    // whole samples always (the same images; the window waits for each sample).
+    bool sampleParts = true;
 };
 
 class ProgressiveSession {

@@ -21,7 +21,7 @@ struct ViewCommandOptions {
     std::filesystem::path events;  // --events: the script; empty: none
     bool preview = true;           // --no-preview: no path-traced sample before a preparation
     bool headless = false;         // --headless: no window (needs --events); images go to an offscreen image
-    bool sampleParts = false;      // --sample-parts: slow samples in parts of the pixels
+    bool sampleParts = true;       // --no-sample-parts: whole samples only
 };
 
 // `integrators`: the kinds I cycles through (name, config with its options parsed), starting at

@@ -262,9 +262,9 @@ TEST(ViewHeadless, ResizeMatchesAnOfflineRenderAtTheNewSize) {
     EXPECT_TRUE(stats["presentedPerSecond"].is_number()) << stats.dump(2);
 }
 
-// With --sample-parts, samples slower than a loop iteration are recorded in parts of the pixels
-// (the window is polled between them): for every built-in integrator the image after them is bit
-// for bit the image of whole samples (the default).
+// Samples slower than a loop iteration are recorded in parts of the pixels (the window is polled
+// between them): for every built-in integrator the image after them is bit for bit the image of
+// whole samples (--no-sample-parts).
 TEST(ViewHeadless, SamplesInPartsEqualWholeSamples) {
     const fs::path dir = test::freshTempDir("view", "parts");
     const std::string scene = std::string(VKPHOTON_SCENES) + "/cornell-box.gltf";
@@ -275,7 +275,7 @@ TEST(ViewHeadless, SamplesInPartsEqualWholeSamples) {
             const std::string name = std::string(integrator) + (parts ? "-parts" : "-whole");
             writeText(dir / (name + ".txt"), "samples 3\nscreenshot " + (dir / (name + ".exr")).string() + "\nquit\n");
             const RunResult r = runWithoutDisplay("view --headless " + scene + " --integrator " + integrator + " " +
-                                                  small + (parts ? " --sample-parts" : "") + " --events " +
+                                                  small + (parts ? "" : " --no-sample-parts") + " --events " +
                                                   (dir / (name + ".txt")).string() + " --stats-json " +
                                                   (dir / (name + ".json")).string());
             ASSERT_EQ(r.exitCode, 0) << name << "\n" << r.output;
