@@ -69,19 +69,24 @@ INLINE float evalRoughDielectric(vec3 wo, vec3 wi, float alpha, float eta, bool 
     return radiance ? f * eta * eta : f;
 }
 
+// The density of wi through half vector m (cosOM = dot(wo, m) > 0) when reflection is chosen with
+// probability pr: the visible normal's density times the reflection's or refraction's Jacobian.
+INLINE float roughDielectricPdfAt(vec3 wo, vec3 wi, vec3 m, float cosOM, float pr, float alpha, float eta, bool thin) {
+    float pm = ggxVisibleNormalPdf(wo, m, alpha);
+    if (wi.z > 0.0f) return pr * pm / (4.0f * cosOM);
+    if (thin) return (1.0f - pr) * pm / (4.0f * cosOM);
+    float cosIM = dot(wi, m);
+    float denom = cosIM + eta * cosOM;
+    return (1.0f - pr) * pm * abs(cosIM) / (denom * denom);
+}
+
 // Solid-angle density with which sampleRoughDielectric produces wi.
 INLINE float pdfRoughDielectric(vec3 wo, vec3 wi, float alpha, float eta, bool thin, bool infiniteIor) {
     vec3 m;
     if (!roughDielectricHalfVector(wo, wi, eta, thin, m)) return 0.0f;
     float cosOM = dot(wo, m);
     if (cosOM <= 0.0f) return 0.0f;
-    float fr = roughDielectricFresnel(cosOM, eta, infiniteIor);
-    float pm = ggxVisibleNormalPdf(wo, m, alpha);
-    if (wi.z > 0.0f) return fr * pm / (4.0f * cosOM);
-    if (thin) return (1.0f - fr) * pm / (4.0f * cosOM);
-    float cosIM = dot(wi, m);
-    float denom = cosIM + eta * cosOM;
-    return (1.0f - fr) * pm * abs(cosIM) / (denom * denom);
+    return roughDielectricPdfAt(wo, wi, m, cosOM, roughDielectricFresnel(cosOM, eta, infiniteIor), alpha, eta, thin);
 }
 
 // Samples the rough dielectric: u.x picks reflection or transmission by Fresnel, u.yz the visible
@@ -149,12 +154,7 @@ INLINE float pdfRoughDielectricFilm(vec3 wo, vec3 wi, float alpha, float eta, bo
     float cosOM = dot(wo, m);
     if (cosOM <= 0.0f) return 0.0f;
     float pr = roughDielectricFilmReflectProbability(roughDielectricFilmFresnel(cosOM, eta, film));
-    float pm = ggxVisibleNormalPdf(wo, m, alpha);
-    if (wi.z > 0.0f) return pr * pm / (4.0f * cosOM);
-    if (thin) return (1.0f - pr) * pm / (4.0f * cosOM);
-    float cosIM = dot(wi, m);
-    float denom = cosIM + eta * cosOM;
-    return (1.0f - pr) * pm * abs(cosIM) / (denom * denom);
+    return roughDielectricPdfAt(wo, wi, m, cosOM, pr, alpha, eta, thin);
 }
 
 // Samples the rough dielectric under the film: u.x picks reflection with probability P (the mean of

@@ -204,20 +204,9 @@ TEST(BsdfIridescence, RoughGlassFilmWhiteFurnace) {
                 total /= double(n);
                 reflected /= double(n);
                 plainReflected /= double(n);
-                const int steps = 512;
-                glm::dvec3 quad(0.0);
-                for (int side = -1; side <= 1; side += 2)
-                    for (int i = 0; i < steps; ++i) {
-                        const double t = (i + 0.5) / steps;
-                        const double mu = t * t * t;
-                        for (int j = 0; j < steps / 2; ++j) {
-                            const double phi = 2.0 * kPi * (j + 0.5) / (steps / 2);
-                            glm::vec3 wi = direction(static_cast<float>(mu), static_cast<float>(phi));
-                            wi.z *= static_cast<float>(side);
-                            quad += glm::dvec3(evalDielectricLayer(p, wo, wi, true, false)) * (mu * 3.0 * t * t);
-                        }
-                    }
-                quad *= (1.0 / steps) * (2.0 * kPi / (steps / 2));
+                const glm::dvec3 quad = test::sphereQuadrature(512, [&](glm::vec3 wi, double mu) {
+                    return glm::dvec3(evalDielectricLayer(p, wo, wi, true, false)) * mu;
+                });
                 for (int c = 0; c < 3; ++c) {
                     const std::string d = "roughness " + std::to_string(roughness) + (thin ? " thin" : " solid") +
                                           " cos " + std::to_string(cosWo) + " channel " + std::to_string(c) +

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "support/chi_square.h"
+#include "support/local_directions.h"
 #include "shared/bsdf.glsl"
 
 namespace vkp {
@@ -17,10 +18,7 @@ namespace {
 
 using namespace vkp::gpu;
 
-glm::vec3 direction(float cosTheta, float phi) {
-    const float s = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
-    return glm::vec3(s * std::cos(phi), s * std::sin(phi), cosTheta);
-}
+glm::vec3 direction(float cosTheta, float phi) { return test::localDirection(cosTheta, phi); }
 
 BsdfParams glass(float roughness, bool thin) {
     BsdfParams p = makeBsdfParams(glm::vec3(1.0f), 0.0f, roughness);
@@ -137,20 +135,9 @@ TEST(BsdfTransmission, RoughGlassWhiteFurnace) {
                     }
                     const double sampled = sum / n;
                     // Quadrature over the sphere (mu = t^3 concentrates nodes at the horizon).
-                    const int steps = 1024;
-                    double quad = 0.0;
-                    for (int side = -1; side <= 1; side += 2)
-                        for (int i = 0; i < steps; ++i) {
-                            const double t = (i + 0.5) / steps;
-                            const double mu = t * t * t;
-                            for (int j = 0; j < steps / 2; ++j) {
-                                const double phi = 2.0 * kPi * (j + 0.5) / (steps / 2);
-                                glm::vec3 wi = direction(static_cast<float>(mu), static_cast<float>(phi));
-                                wi.z *= static_cast<float>(side);
-                                quad += evalDielectricLayer(p, wo, wi, entering, false).x * mu * 3.0 * t * t;
-                            }
-                        }
-                    quad *= (1.0 / steps) * (2.0 * kPi / (steps / 2));
+                    const double quad = test::sphereQuadrature(1024, [&](glm::vec3 wi, double mu) {
+                        return evalDielectricLayer(p, wo, wi, entering, false).x * mu;
+                    });
                     std::ostringstream d;
                     d << "roughness " << roughness << (thin ? " thin" : " solid") << (entering ? " entering" : " leaving")
                       << " cos " << cosWo << ": sampled " << sampled << " quadrature " << quad;
