@@ -75,6 +75,7 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
     // The environment too, chosen once for the still scene: the default sky never switches on or
     // off between frames, and every range of a split sequence chooses the same.
     Environment environment;
+    std::vector<int> backdropNodes;  // sky boxes, found once with the environment
     {
         Scene still = source.stillScene();
         stillBounds = still.bounds;
@@ -82,6 +83,7 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
         applyEnvironment(still, options.environment, note);
         if (!note.empty() && !options.quiet) fmt::print(stderr, "{}\n", note);
         environment = still.environment;
+        backdropNodes = still.backdropNodes;
         if (still.cameras.empty()) {
             const Camera fixed = chooseCamera(still, options.frame.cameraIndex,
                                               float(options.frame.width) / float(options.frame.height), options.frame.view);
@@ -117,6 +119,7 @@ int runRenderFrames(const RenderCommandOptions& options, const IntegratorConfig&
         const double time = frameTime(f, options.fps);
         Scene scene = source.sceneAt(time);
         scene.environment = environment;
+        scene.backdropNodes = backdropNodes;
         scene.energyCompensation = !options.noEnergyCompensation;
         scene.bounds = stillBounds;
         const double flattenSeconds = secondsSince(frameStart);

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "lights/default_lighting.h"
+#include "lights/backdrop.h"
 #include "scene/environment.h"
 #include "scene/gltf_extensions.h"
 #include "scene/gltf_loader.h"
@@ -74,6 +75,8 @@ void printText(const json& r) {
                    l["defaultSky"].get<bool>()
                        ? fmt::format(": under {:g} %, render adds the white sky", 100.0 * kMinEmitterShare)
                        : std::string());
+    for (int node : l["skyBoxNodes"].get<std::vector<int>>())
+        fmt::print("             nodes[{}] is a sky box: camera rays see it, the sky lights the scene through it\n", node);
     const json& cameras = r["cameras"];
     fmt::print("cameras      {}{}\n", cameras.size(),
                cameras.empty() ? " (renders use a three-quarter view framing the bounds)" : "");
@@ -139,6 +142,8 @@ json sceneReport(const Scene& scene) {
     report["lights"]["emitterLanding"] = emitters.landing;     // the fraction of it that lands on the scene
     report["lights"]["defaultSkyPower"] = emitters.skyPower;
     report["lights"]["defaultSky"] = scene.lights.empty() && share < kMinEmitterShare;
+    // Sky boxes the default sky would light the scene through (lights/backdrop.h).
+    report["lights"]["skyBoxNodes"] = report["lights"]["defaultSky"].get<bool>() ? findBackdrops(scene) : std::vector<int>{};
     report["cameras"] = json::array();
     for (const Camera& c : scene.cameras)
         report["cameras"].push_back(c.orthoHalfHeight > 0.0f

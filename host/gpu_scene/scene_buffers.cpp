@@ -1,5 +1,6 @@
 #include "gpu_scene/scene_buffers.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -114,9 +115,15 @@ SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling, const T
     for (uint32_t index : bvh.staticOrder) source.push_back(&scene.triangles[index]);
     for (size_t m = 0; m < bvh.meshOrder.size(); ++m)
         for (uint32_t index : bvh.meshOrder[m]) source.push_back(&scene.meshes[m].triangles[index]);
+    // Sky boxes' triangles (Scene::backdropNodes; static only, as the loader flattens them).
+    std::vector<bool> backdrop(scene.triangles.size(), false);
+    for (const Drawing& d : scene.drawings)
+        if (std::binary_search(scene.backdropNodes.begin(), scene.backdropNodes.end(), d.node))
+            std::fill_n(backdrop.begin() + d.first, std::min<size_t>(d.count, backdrop.size() - d.first), true);
     for (uint32_t i = 0; i < a.triangles.size(); ++i) {  // the traversal's alpha test and culling (gpu_types.glsl)
         const Material& m = scene.materials[source[i]->material];
-        if (m.alphaMode != AlphaMode::Opaque) a.triangles[i].v0.w = 1.0f;
+        if (m.alphaMode != AlphaMode::Opaque) a.triangles[i].v0.w = gpu::kTriangleAlphaTested;
+        if (i < bvh.staticOrder.size() && backdrop[bvh.staticOrder[i]]) a.triangles[i].v0.w = gpu::kTriangleBackdrop;
         // glTF culls the back faces of single-sided materials; camera rays do (docs/scene-format.md
         // "Back faces"), except on transmissive ones, whose back faces refracted rays see from inside.
         if (!m.doubleSided && m.transmission <= 0.0f) a.triangles[i].v2.w = 1.0f;

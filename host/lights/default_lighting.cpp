@@ -6,8 +6,11 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "bvh/scene_bvh.h"
+#include "lights/backdrop.h"
+#include "lights/surface_rays.h"
 #include "scene/scene.h"
 #include "scene/textured_emission.h"
 #include "shared/sampling.glsl"
@@ -36,30 +39,48 @@ double emitterLanding(const Scene& scene, uint32_t rays) {
     const gpu::BvhArrays arrays = bvh.arrays();
     const float reach = rayOffsetScale(scene.bounds);
     std::mt19937 rng(7);
-    std::uniform_real_distribution<float> u(0.0f, 1.0f);
     std::discrete_distribution<size_t> pick(power.begin(), power.end());
     uint32_t landed = 0;
     for (uint32_t r = 0; r < rays; ++r) {
         const size_t k = pick(rng);
         const Triangle& t = scene.triangles[emitters[k]];
-        const glm::vec2 b = gpu::sampleTriangleBarycentrics(glm::vec2(u(rng), u(rng)));
-        const glm::vec3 p = t.p[0] * (1.0f - b.x - b.y) + t.p[1] * b.x + t.p[2] * b.y;
-        // The front is the side the vertex normals face (the winding's side when they agree or
-        // are missing); a double-sided emitter sends half its light out of each side.
-        glm::vec3 n = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
-        if (!(glm::length(n) > 0.0f)) continue;  // a degenerate triangle: its ray counts as lost
-        n = glm::normalize(n);
-        if (glm::dot(n, t.n[0] + t.n[1] + t.n[2]) < 0.0f) n = -n;
-        if (scene.materials[t.material].doubleSided && u(rng) < 0.5f) n = -n;
-        glm::vec3 tangent, bitangent;
-        gpu::orthonormalBasis(n, tangent, bitangent);
-        const glm::vec3 dir = gpu::toWorld(gpu::sampleCosineHemisphere(glm::vec2(u(rng), u(rng))), tangent, bitangent, n);
-        // The shaders' offset (scene_access.glsl rayEpsilon).
-        const float eps = 1.0e-4f * std::max({reach, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-        landed += closestHit(arrays, p + n * eps, dir, std::numeric_limits<float>::infinity()).hit;
+        const SurfaceRay ray = frontRay(t, scene.materials[t.material].doubleSided, reach, rng);
+        if (!ray.valid) continue;  // a degenerate triangle: its ray counts as lost
+        landed += closestHit(arrays, ray.origin, ray.direction, std::numeric_limits<float>::infinity()).hit;
     }
     return double(landed) / double(rays);
 }
+
+namespace {
+
+// emitterShare, with the landing fraction traced only where the emitted power alone reaches
+// kMinEmitterShare (landing can only lower the share).
+EmitterShare weighedEmitterShare(const Scene& scene) {
+    EmitterShare share = emitterShare(scene);
+    if (share.share() >= kMinEmitterShare) share.landing = emitterLanding(scene);
+    return share;
+}
+
+// Whether the environment is what lights the scene: no punctual light, and emitters (if any)
+// that are details by the rule above.
+bool litByEnvironmentAlone(const Scene& scene) {
+    if (!scene.lights.empty()) return false;
+    return !sceneHasLights(scene) || weighedEmitterShare(scene).share() < kMinEmitterShare;
+}
+
+// Sky boxes around an environment-lit scene become backdrops (backdrop.h); the note names them.
+void findSkyBoxes(Scene& scene, std::string& note) {
+    scene.backdropNodes.clear();
+    if (!scene.environment.present || !litByEnvironmentAlone(scene)) return;
+    scene.backdropNodes = findBackdrops(scene);
+    if (scene.backdropNodes.empty()) return;
+    if (!note.empty()) note += "\n";
+    note += fmt::format("note: nodes[{}] encloses the scene, facing inward, and hides the environment from it: a sky "
+                        "box, seen by camera rays only, so the environment lights the scene through it",
+                        fmt::join(scene.backdropNodes, "], nodes["));
+}
+
+}  // namespace
 
 EmitterShare landedEmitterShare(const Scene& scene) {
     EmitterShare share = emitterShare(scene);
@@ -78,9 +99,7 @@ void applyEnvironment(Scene& scene, const EnvironmentSettings& settings, std::st
             return;
         }
         if (sceneHasLights(scene)) {
-            EmitterShare share = emitterShare(scene);
-            // Landing can only lower the share: it is traced only where the emitted power is enough.
-            if (share.share() >= kMinEmitterShare) share.landing = emitterLanding(scene);
+            const EmitterShare share = weighedEmitterShare(scene);
             if (share.share() >= kMinEmitterShare) {
                 scene.environment = Environment{};
                 return;
@@ -118,6 +137,7 @@ void applyEnvironment(Scene& scene, const EnvironmentSettings& settings, std::st
                                      scene.source.string()));
     if (!env.present) env = Environment{};
     scene.environment = std::move(env);
+    findSkyBoxes(scene, note);
 }
 
 }  // namespace vkp

@@ -409,8 +409,14 @@ private:
         for (const glm::dmat4& local : transforms) {
             const glm::dmat4 placed = (node.skin >= 0 ? glm::dmat4(1.0) : world) * local;
             if (!isFinite(placed)) fail(element, "an instance's world transform is not finite");
-            if (m_instancedMesh[node.mesh]) addInstance(node.mesh, placed, nodeIndex, element);
-            else addMesh(node.mesh, placed, element);
+            if (m_instancedMesh[node.mesh]) {
+                addInstance(node.mesh, placed, nodeIndex, element);
+                continue;
+            }
+            const auto first = static_cast<uint32_t>(m_scene.triangles.size());
+            addMesh(node.mesh, placed, element);
+            const auto count = static_cast<uint32_t>(m_scene.triangles.size()) - first;
+            if (count > 0) m_scene.drawings.push_back({nodeIndex, node.mesh, first, count});
         }
         m_drawingNode = nullptr;
         m_skinJoints = nullptr;

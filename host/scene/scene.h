@@ -172,6 +172,15 @@ struct Instance {
     int node = -1;                  // the glTF node that placed it (-1: none)
 };
 
+// A glTF node's mesh flattened into Scene::triangles: triangles [first, first + count), in the
+// loader's walk order (one per node, or per EXT_mesh_gpu_instancing transform).
+struct Drawing {
+    int node = -1;                  // the glTF node that draws it
+    int mesh = -1;                  // its glTF mesh
+    uint32_t first = 0;
+    uint32_t count = 0;
+};
+
 struct Scene {
     std::filesystem::path source;
     std::vector<Triangle> triangles;
@@ -188,6 +197,10 @@ struct Scene {
     bool energyCompensation = true;          // multiple-scattering GGX (render --no-energy-compensation)
     std::vector<Mesh> meshes;                // instanced meshes (object space), docs/bvh.md
     std::vector<Instance> instances;         // their placements; Scene::triangles holds the rest
+    std::vector<Drawing> drawings;           // where each flattened node's triangles are
+    // Nodes whose drawings are sky boxes around an environment-lit scene (lights/backdrop.h):
+    // camera rays see them, no other ray does, so the environment lights the scene through them.
+    std::vector<int> backdropNodes;          // glTF node indices, ascending
 };
 
 // Every triangle in world space: Scene::triangles, then each instance's mesh transformed (the

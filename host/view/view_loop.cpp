@@ -138,14 +138,17 @@ int runView(const ViewCommandOptions& options,
     // The environment is chosen once, for the scene as loaded: a move never switches the default
     // sky on or off (nor traces the emitters' landing again).
     std::optional<Environment> environment;
+    std::vector<int> backdropNodes;  // sky boxes, found once with the environment
     auto prepared = [&](Scene scene) {
         if (!environment) {
             std::string note;
             applyEnvironment(scene, render.environment, note);
             if (!note.empty() && !render.quiet) fmt::print(stderr, "{}\n", note);
             environment = scene.environment;
+            backdropNodes = scene.backdropNodes;
         } else {
             scene.environment = *environment;
+            scene.backdropNodes = backdropNodes;
         }
         scene.energyCompensation = !render.noEnergyCompensation;
         scene.bounds = stillBounds;

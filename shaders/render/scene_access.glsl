@@ -285,7 +285,8 @@ bool alphaPasses(uint tri, float b1, float b2, vec3 org, vec3 dir) {
     h = hashCombine(h, floatBitsToUint(dir.z));
     return uintToUnitFloat(h) < alpha;
 }
-// Called by traceClosest/traceAny (shared/bvh_traverse.glsl) only for hits on triangles with v0.w != 0.
+// Called by traceClosest/traceAny (shared/bvh_traverse.glsl) only for hits on triangles with
+// v0.w == kTriangleAlphaTested.
 #define BVH_ALPHA_TEST(triangle, tri, b1, b2, org, dir) alphaPasses(tri, b1, b2, org, dir)
 
 #include "render/scene_geometry.glsl"  // the traversal's node and triangle reads (texel buffers)

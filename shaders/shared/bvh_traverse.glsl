@@ -65,7 +65,7 @@ struct BvhArrays {
 #define BVH_INSTANCE_HEADER instanceHeader
 #endif
 
-// Whether a hit on an alpha-tested `triangle` (v0.w != 0, index tri) counts: the including GLSL
+// Whether a hit on an alpha-tested `triangle` (v0.w == kTriangleAlphaTested, index tri) counts: the including GLSL
 // defines it as glTF's alpha test (scene_access.glsl alphaPasses); the host traversal has no
 // materials, so every hit counts there. It is evaluated OUTSIDE the traversal's triangle loop, by
 // the trace wrappers below (lavapipe inlines it at every trace call site: inside the loop it cost
@@ -120,7 +120,7 @@ INLINE vec3 transformVector3x4(vec4 r0, vec4 r1, vec4 r2, vec3 v) {
 // object for a mesh: glTF's front face is the mesh's counter-clockwise side whatever the node's
 // determinant); among hits at exactly equal t the first one visited wins.
 // Any-hit mode returns at the first hit found on a triangle without alpha test (shadow and
-// visibility rays); hits on alpha-tested ones only set alphaSeen. On a miss: false, t = tMax,
+// visibility rays); hits on alpha-tested and backdrop ones (v0.w != 0) only set alphaSeen. On a miss: false, t = tMax,
 // tri = kBvhNoTriangle.
 //
 // Two levels, one walk and one stack: the static tree (world space, root 0) is walked first
@@ -274,10 +274,10 @@ INLINE bool culledBackFace(bool cullBackFaces, bool backFace, GpuTriangle triang
 }
 
 // One trace, alpha test and back-face culling outside the traversal: closest-hit mode restarts
-// past a hit that fails BVH_ALPHA_TEST or is a culled back face (cullBackFaces: camera rays only);
-// any-hit mode (never culls) first walks ignoring alpha-tested triangles, and only when it found
-// one of them and no opaque occluder goes on as closest-hit with the alpha test (scenes without
-// alpha-tested triangles walk once, as before).
+// past a hit that does not count (a failed BVH_ALPHA_TEST, a culled back face, or a backdrop met
+// by a ray other than a camera ray); any-hit mode (never culls) first walks ignoring
+// alpha-tested and backdrop triangles (v0.w != 0), and only when it found one of them and no
+// opaque occluder goes on as closest-hit (scenes without them walk once).
 INLINE bool traceBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool anyHit, bool cullBackFaces, OUT(float) t,
                      OUT(uint) tri, OUT(float) b1, OUT(float) b2) {
     bool anyMode = anyHit;
@@ -295,9 +295,14 @@ INLINE bool traceBvh(BVH_ARRAYS_PARAM vec3 org, vec3 dir, float tMax, bool anyHi
             continue;
         }
         if (!hit) return false;
+        // A hit counts unless it is a culled back face, a sky box's triangle (kTriangleBackdrop:
+        // camera rays only, docs/environment.md "Sky boxes") met by another ray, or an
+        // alpha-tested one where glTF's alpha test fails.
         GpuTriangle triangle = BVH_TRIANGLE(triIndex);
         if (!culledBackFace(cullBackFaces, backFace, triangle) &&
-            (!kSceneHasAlphaTest || triangle.v0.w == 0.0f || BVH_ALPHA_TEST(triangle, triIndex, b1, b2, org, dir))) {
+            (!kSceneHasAlphaTest || triangle.v0.w == 0.0f ||
+             (triangle.v0.w == kTriangleBackdrop ? cullBackFaces
+                                                 : BVH_ALPHA_TEST(triangle, triIndex, b1, b2, org, dir)))) {
             return true;
         }
         tMin = t;

@@ -6,8 +6,10 @@
 #include "compat.glsl"
 SHARED_BEGIN
 
-// Triangle positions in world space; traversal reads only this buffer. v0.w is 1 when the
-// triangle's material has an alpha test (alphaMode MASK or BLEND), else 0; v1.w is the index of
+// Triangle positions in world space; traversal reads only this buffer. v0.w is
+// kTriangleAlphaTested when the triangle's material has an alpha test (alphaMode MASK or BLEND),
+// kTriangleBackdrop on a sky box's triangle that only camera rays see (host/lights/backdrop.h;
+// traced like an alpha-tested one), else 0; v1.w is the index of
 // its entry in the light list (as a float), -1 when it is not a light; v2.w is 1 when camera rays
 // skip its back face (glTF doubleSided false and not transmissive, docs/scene-format.md "Back
 // faces"), else 0.
@@ -17,6 +19,8 @@ struct GpuTriangle {
     vec4 v2;
 };
 STATIC_ASSERT_SIZE(GpuTriangle, 48)
+const float kTriangleAlphaTested = 1.0f;  // GpuTriangle v0.w
+const float kTriangleBackdrop = 2.0f;
 
 // Shading attributes of the triangle with the same index as in the GpuTriangle buffer. Unit
 // vectors are octahedral (shared/photon.glsl encodeOctahedral, 16+16 bits), colours RGBA8, so
