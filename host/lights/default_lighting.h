@@ -30,7 +30,9 @@ EmitterShare landedEmitterShare(const Scene& scene);
 // none; one whose emissive triangles give at least kMinEmitterShare of the light (landed) gets
 // none; any other scene a uniform environment of radiance 1 (times --env-strength), and `note`
 // says so. `--env 0` (or any zero constant) means no environment: a scene without lights is then
-// refused (InputError) as before environments existed.
+// refused (InputError) as before environments existed. Where the environment is the scene's
+// only light (no punctual light, emitters that are details), its sky boxes become backdrops
+// (Scene::backdropNodes, lights/backdrop.h), and `note` names them.
 void applyEnvironment(Scene& scene, const EnvironmentSettings& settings, std::string& note,
                       const EnvironmentLimits& limits = {});
 
