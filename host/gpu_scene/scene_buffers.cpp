@@ -115,15 +115,29 @@ SceneArrays buildSceneArrays(const Scene& scene, LightSampling sampling, const T
     for (uint32_t index : bvh.staticOrder) source.push_back(&scene.triangles[index]);
     for (size_t m = 0; m < bvh.meshOrder.size(); ++m)
         for (uint32_t index : bvh.meshOrder[m]) source.push_back(&scene.meshes[m].triangles[index]);
-    // Sky boxes' triangles (Scene::backdropNodes; static only, as the loader flattens them).
+    // Sky boxes' triangles (Scene::backdropNodes): flattened ones by the drawings of their nodes,
+    // an instanced mesh's when every instance of it is a sky box's (its flags are shared).
+    const auto isBackdrop = [&](int node) {
+        return std::binary_search(scene.backdropNodes.begin(), scene.backdropNodes.end(), node);
+    };
     std::vector<bool> backdrop(scene.triangles.size(), false);
     for (const Drawing& d : scene.drawings)
-        if (std::binary_search(scene.backdropNodes.begin(), scene.backdropNodes.end(), d.node))
+        if (isBackdrop(d.node) && d.first < backdrop.size())
             std::fill_n(backdrop.begin() + d.first, std::min<size_t>(d.count, backdrop.size() - d.first), true);
+    std::vector<int> meshBackdrop(scene.meshes.size(), -1);  // -1: no instance yet, 1: all sky box, 0: not
+    for (const Instance& instance : scene.instances) {
+        int& state = meshBackdrop[instance.mesh];
+        state = (state != 0 && isBackdrop(instance.node)) ? 1 : 0;
+    }
+    std::vector<bool> positionBackdrop;  // per position in the triangle arrays
+    positionBackdrop.reserve(a.triangles.size());
+    for (uint32_t index : bvh.staticOrder) positionBackdrop.push_back(backdrop[index]);
+    for (size_t m = 0; m < bvh.meshOrder.size(); ++m)
+        positionBackdrop.insert(positionBackdrop.end(), bvh.meshOrder[m].size(), meshBackdrop[m] == 1);
     for (uint32_t i = 0; i < a.triangles.size(); ++i) {  // the traversal's alpha test and culling (gpu_types.glsl)
         const Material& m = scene.materials[source[i]->material];
         if (m.alphaMode != AlphaMode::Opaque) a.triangles[i].v0.w = gpu::kTriangleAlphaTested;
-        if (i < bvh.staticOrder.size() && backdrop[bvh.staticOrder[i]]) a.triangles[i].v0.w = gpu::kTriangleBackdrop;
+        if (positionBackdrop[i]) a.triangles[i].v0.w = gpu::kTriangleBackdrop;
         // glTF culls the back faces of single-sided materials; camera rays do (docs/scene-format.md
         // "Back faces"), except on transmissive ones, whose back faces refracted rays see from inside.
         if (!m.doubleSided && m.transmission <= 0.0f) a.triangles[i].v2.w = 1.0f;

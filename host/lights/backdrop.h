@@ -33,9 +33,10 @@ constexpr double kBackdropMinInside = 0.99;     // - its bounds (and 1 % of its 
 constexpr double kBackdropMinRaysOnIt = 0.25;   // - this share of the rays leaving the other
 constexpr double kBackdropMaxEscaping = 0.05;   //   surfaces end on it, and at most this share
                                                 //   reaches the environment: it hides the sky.
-// Rays: `rays` cosine-distributed ones from points uniform over the area of the other flattened
-// triangles (their fronts; either side if double-sided), through the shaders' traversal on the
-// host; a fixed seed. Nodes whose drawings are all instanced meshes are not considered.
+// Rays: `rays` cosine-distributed ones from points uniform over the area of the other nodes'
+// triangles, flattened or instanced (their fronts; either side if double-sided), through the
+// shaders' traversal on the host; a fixed seed. A node's geometry is its flattened drawings and
+// its instances (`view` draws every node as an instance).
 std::vector<BackdropCandidate> backdropCandidates(const Scene& scene, uint32_t rays = 4096);
 // The nodes of the candidates that are backdrops, ascending.
 std::vector<int> findBackdrops(const Scene& scene, uint32_t rays = 4096);

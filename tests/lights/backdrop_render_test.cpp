@@ -63,6 +63,12 @@ TEST_F(SkyBoxRender, TheSkyLightsTheSceneThroughItsSkyBox) {
     EXPECT_GT(wall, 0.47f);
     EXPECT_LT(wall, 0.51f);
     EXPECT_NEAR(meanOf(alone, 0.5f, false), 1.0f, 1e-6f) << "without the box the camera sees the sky";
+    // The box as an instance (its mesh's triangles carry the flag): the same image.
+    const Scene instanced = lit({.instanced = true}, inside);
+    ASSERT_EQ(instanced.backdropNodes, std::vector<int>{0});
+    const ImageRgb instancedImage = pathTraced(instanced);
+    EXPECT_NEAR(meanOf(instancedImage, 0.5f, false), wall, 0.01f * wall) << "instanced box";
+    EXPECT_NEAR(meanOf(instancedImage, 0.2f, true), cube, 0.01f * cube) << "instanced box";
 
 }
 

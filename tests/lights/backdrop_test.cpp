@@ -39,6 +39,19 @@ TEST(SkyBox, AnInwardBoxAroundTheSceneIsABackdrop) {
     EXPECT_EQ(findBackdrops(scene), std::vector<int>{0});
 }
 
+// `view` draws every node as an instance: the box is found there too.
+TEST(SkyBox, AnInstancedSkyBox) {
+    const Scene scene = test::skyBoxScene({.instanced = true});
+    ASSERT_EQ(scene.instances.size(), 1u);
+    const auto candidates = backdropCandidates(scene);
+    const BackdropCandidate* box = candidate(candidates, 0);
+    ASSERT_NE(box, nullptr);
+    EXPECT_DOUBLE_EQ(box->inwardArea, 1.0);
+    EXPECT_DOUBLE_EQ(box->raysOnIt, 1.0);
+    EXPECT_EQ(findBackdrops(scene), std::vector<int>{0});
+    EXPECT_TRUE(findBackdrops(test::skyBoxScene({.doubleSided = true, .instanced = true})).empty());
+}
+
 TEST(SkyBox, BoxesThatAreNotSkyBoxes) {
     for (const auto& [name, options] :
          {std::pair{"double-sided", test::SkyBoxOptions{.doubleSided = true}},

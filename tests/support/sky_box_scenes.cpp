@@ -25,7 +25,18 @@ Scene skyBoxScene(const SkyBoxOptions& options) {
             std::swap(t.p[1], t.p[2]);  // facing inward
             for (glm::vec3& n : t.n) n = -n;
         }
-        scene.drawings.push_back({0, 0, 0, static_cast<uint32_t>(scene.triangles.size())});
+        if (options.instanced) {
+            Mesh mesh;
+            mesh.name = "sky box";
+            mesh.triangles = std::move(scene.triangles);
+            scene.triangles.clear();
+            for (const Triangle& t : mesh.triangles)
+                for (const glm::vec3& p : t.p) mesh.bounds.grow(p);
+            scene.meshes.push_back(std::move(mesh));
+            scene.instances.push_back({0, glm::mat4(1.0f), 0});
+        } else {
+            scene.drawings.push_back({0, 0, 0, static_cast<uint32_t>(scene.triangles.size())});
+        }
     }
     const auto first = static_cast<uint32_t>(scene.triangles.size());
     const glm::vec3 at(options.cubeOutside ? 20.0f : 0.0f, 0.0f, 0.0f);

@@ -13,6 +13,7 @@ struct SkyBoxOptions {
     bool emissive = false;      // its material glows
     bool cubeOutside = false;   // the cube at x = 20, outside the box
     bool withBox = true;        // false: the cube alone
+    bool instanced = false;     // the box drawn as an instance of a mesh (as `view` draws every node)
 };
 
 Scene skyBoxScene(const SkyBoxOptions& options = {});
