@@ -69,9 +69,10 @@ bool litByEnvironmentAlone(const Scene& scene) {
 }
 
 // Sky boxes around an environment-lit scene become backdrops (backdrop.h); the note names them.
-void findSkyBoxes(Scene& scene, std::string& note) {
+// `litByEnvironment`: already known that the environment is the light (the default rule chose it).
+void findSkyBoxes(Scene& scene, std::string& note, bool litByEnvironment) {
     scene.backdropNodes.clear();
-    if (!scene.environment.present || !litByEnvironmentAlone(scene)) return;
+    if (!scene.environment.present || !(litByEnvironment || litByEnvironmentAlone(scene))) return;
     scene.backdropNodes = findBackdrops(scene);
     if (scene.backdropNodes.empty()) return;
     if (!note.empty()) note += "\n";
@@ -93,7 +94,8 @@ void applyEnvironment(Scene& scene, const EnvironmentSettings& settings, std::st
     settings.check();
     Environment env;
     glm::vec3 constant(0.0f);
-    if (settings.value.empty()) {
+    const bool defaultSky = settings.value.empty();  // reached only where the rule adds the sky
+    if (defaultSky) {
         if (!scene.lights.empty()) {  // punctual lights light the scene; --exposure auto shows it
             scene.environment = Environment{};
             return;
@@ -137,7 +139,7 @@ void applyEnvironment(Scene& scene, const EnvironmentSettings& settings, std::st
                                      scene.source.string()));
     if (!env.present) env = Environment{};
     scene.environment = std::move(env);
-    findSkyBoxes(scene, note);
+    findSkyBoxes(scene, note, defaultSky);
 }
 
 }  // namespace vkp
