@@ -23,7 +23,7 @@ for scene in "$@"; do
     done
     cyclesAtT=$(python3 -c "print(${err[cycles256]} * ${secs[cycles256]} / $T)")
     echo "$scene cycles relMSE at $T s (E_256 t_256 / T): $cyclesAtT"
-    for variant in "photon" "photon --gather-guide 0" "sppm"; do
+    for variant in "photon" "photon --gather-reuse 0 --gather-rays 4 --radiance-photons 4" "sppm" "path"; do
         name=$(echo "$variant" | tr ' ' '_')
         start=$(date +%s.%N)
         "$root/build/vkphoton" render "$gltf" --integrator $variant --time-limit "$T" --spp 1000000 \

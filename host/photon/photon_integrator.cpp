@@ -27,12 +27,36 @@ constexpr uint32_t kGatherGuideGridU = 4;
 constexpr uint32_t kGatherGuideGridV = 16;
 constexpr uint32_t kGatherGuideK = 50;
 // The camera passes' stages, timed on the device (vk/stage_timer.h), and their stats keys.
-enum CameraStage : uint32_t { kStageVisiblePoints, kStageCaustics, kStageGathers, kStageCount };
+enum CameraStage : uint32_t { kStageVisiblePoints, kStageCaustics, kStageGathers, kStageGatherReuse, kStageCount };
 const char* const kCameraStageKeys[kStageCount] = {"timings.photon.visiblePointsSeconds",
                                                    "timings.photon.causticLookupSeconds",
-                                                   "timings.photon.gatherSeconds"};
+                                                   "timings.photon.gatherSeconds",
+                                                   "timings.photon.gatherReuseSeconds"};
+// Gathers are shared between pixels (--gather-reuse) with at most this many rays per pixel (the
+// reuse kernel's loop visits every ray of up to 17 x 17 pixels) and this much memory for the rays.
+constexpr uint32_t kMaxGatherReuseRays = 64;
+constexpr uint64_t kMaxGatherSampleBytes = uint64_t(512) << 20;
+
+// The pixels `range` needs around it: `window` rows and pixels before and after, within the frame.
+vk::ItemRange withHalo(vk::ItemRange range, uint32_t window, uint32_t width, uint64_t pixels) {
+    const uint64_t halo = uint64_t(window) * width + window;
+    const uint64_t first = range.first > halo ? range.first - halo : 0;
+    const uint64_t end = std::min(pixels, range.first + range.count + halo);
+    return {first, end - first};
+}
+
+// The pixels of `range` that lie in `window`.
+vk::ItemRange within(vk::ItemRange range, vk::ItemRange window) {
+    const uint64_t first = std::max(range.first, window.first);
+    const uint64_t end = std::min(range.first + range.count, window.first + window.count);
+    return {first, end > first ? end - first : 0};
+}
 
 }  // namespace
+
+float gatherReuseRadius(float radius, uint32_t sample) {
+    return radius * float(std::pow(1.0 + double(sample) / kGatherReuseShrinkSamples, -1.0 / 6.0));
+}
 
 gpu::VisiblePointParams visiblePointParams(const Frame& frame, uint32_t lightCount) {
     gpu::VisiblePointParams params{};
@@ -216,10 +240,26 @@ void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
                                             vk::kStorageUsage);
     m_visiblePass = std::make_unique<VisiblePointPass>(context, m_scene.buffers(), film.sums(), *m_points,
                                                        *frame.rasterDirect);
+    // Gathers shared between pixels: every ray of a sample kept until the reuse pass has read it.
+    const uint64_t sampleBytes = frame.pixels() * uint64_t(p.gatherRays) * sizeof(gpu::GatherSample);
+    const bool reuse = p.gatherRays > 0 && p.gatherReuse > 0.0f && p.gatherRays <= kMaxGatherReuseRays &&
+                       sampleBytes <= kMaxGatherSampleBytes;
+    if (p.gatherRays > 0 && p.gatherReuse > 0.0f && !reuse)
+        m_stats.note(fmt::format("final gathers are not shared between pixels: {} rays per sample at {} x {} need "
+                                 "more than {} rays or {} MiB",
+                                 p.gatherRays, frame.width, frame.height, kMaxGatherReuseRays, kMaxGatherSampleBytes >> 20));
+    m_stats.set("settings.photon.gatherReuseOn", reuse);
+    m_gatherSamples.reset();
+    m_reusePass.reset();
+    if (reuse)
+        m_gatherSamples = std::make_unique<vk::Buffer>(context, "final-gather samples", sampleBytes, vk::kStorageUsage);
     m_gatherPass = std::make_unique<FinalGatherPass>(context, m_scene.buffers(), film.sums(), *m_points, gatherGrid,
-                                                     m_gatherGuide.get());
+                                                     m_gatherGuide.get(), m_gatherSamples.get());
+    if (reuse)
+        m_reusePass = std::make_unique<GatherReusePass>(context, m_scene.buffers(), film.sums(), *m_points, *m_gatherSamples);
     m_causticPass.reset();
-    if (m_causticMap)
+    // An empty caustic map (nothing specular the lights reach) has nothing to look up.
+    if (m_causticMap && m_causticMap->stored() > 0)
         m_causticPass = std::make_unique<CausticEstimatePass>(context, m_scene.buffers(), film.sums(), *m_points,
                                                               m_causticMap->grid());
 
@@ -245,6 +285,14 @@ void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
     m_gatherParams.maxRadius = globalRadius;
     m_gatherParams.maxSpecularDepth = kMaxSpecularDepth;
     if (m_gatherGuide) m_gatherParams.guide = m_gatherGuide->params();
+    m_gatherParams.reuse = reuse ? 1u : 0u;
+    const uint64_t gatherSamples = uint64_t(std::max(frame.gpuCamera.pixelSamples, 1u)) * p.gatherRays;
+    m_gatherParams.samplerCount = gatherSamples <= (uint64_t(1) << 30) ? uint32_t(gatherSamples) : 0u;
+    m_reuseParams = {};
+    m_reuseParams.width = frame.width;
+    m_reuseParams.height = frame.height;
+    m_reuseParams.gatherRays = p.gatherRays;
+    m_reuseParams.footprintScale = std::sqrt(float(std::max(frame.gpuCamera.pixelSamples, 1u)));
 
     m_stats.set("settings.photon.radius", m_radius);
     m_stats.set("settings.photon.globalRadius", globalRadius);
@@ -252,14 +300,46 @@ void PhotonIntegrator::prepare(const Frame& frame, const Film& film) {
 
 void PhotonIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) {
     m_timer->beginRecording(cmd);
-    for (uint32_t sample = first; sample < first + count; ++sample) recordSample(cmd, sample, m_window, true);
+    const uint64_t framePixels = uint64_t(m_reuseParams.width) * m_reuseParams.height;
+    for (uint32_t sample = first; sample < first + count; ++sample) {
+        // Shared gathers read the rays of pixels up to `window` rows around the window's, so a
+        // --tile or --crop part traces those too (their film entries lie outside its image) and
+        // gets the values of the full render.
+        const vk::ItemRange traced = m_reusePass ? withHalo(m_window, reuseParams(sample).window, m_reuseParams.width, framePixels)
+                                                 : m_window;
+        recordSample(cmd, sample, traced, m_window, true);
+    }
 }
 
 void PhotonIntegrator::recordSamplePart(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange part) {
-    recordSample(cmd, sample, part, false);  // parts are not timed (the stage timer times whole batches)
+    // Parts go in order through the window; a pixel's shared gathers need the rays of the next
+    // `window` rows, so each part shares the gathers of the pixels that far behind its end (the
+    // last part, those up to the window's end): every pixel once per sample, after its own visible
+    // point and caustics, as recordSamples orders them.
+    vk::ItemRange shared = part;
+    if (m_reusePass) {
+        // The lag in whole granules, so that the shared ranges fall on the parts' SIMD batches too.
+        const uint32_t w = reuseParams(sample).window;
+        const uint64_t lag = (uint64_t(w) * m_reuseParams.width + w + kSamplePartGranule - 1) / kSamplePartGranule *
+                             kSamplePartGranule;
+        const uint64_t windowEnd = m_window.first + m_window.count;
+        const uint64_t partEnd = part.first + part.count;
+        const uint64_t first = std::max(m_window.first, part.first > lag ? part.first - lag : 0);
+        const uint64_t end = partEnd >= windowEnd ? windowEnd : std::max(first, partEnd > lag ? partEnd - lag : 0);
+        shared = {first, end - first};
+    }
+    recordSample(cmd, sample, part, shared, false);  // parts are not timed (the stage timer times whole batches)
 }
 
-void PhotonIntegrator::recordSample(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange pixels, bool timed) {
+gpu::GatherReuseParams PhotonIntegrator::reuseParams(uint32_t sample) const {
+    gpu::GatherReuseParams params = m_reuseParams;
+    params.radius = gatherReuseRadius(m_settings.gatherReuse, sample);
+    params.window = std::min(uint32_t(std::ceil(params.radius)), gpu::kMaxGatherReuseWindow);
+    return params;
+}
+
+void PhotonIntegrator::recordSample(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange pixels, vk::ItemRange shared,
+                                    bool timed) {
     const auto begin = [&](uint32_t stage) {
         if (timed) m_timer->begin(cmd, stage);
     };
@@ -273,7 +353,7 @@ void PhotonIntegrator::recordSample(VkCommandBuffer cmd, uint32_t sample, vk::It
     end(kStageVisiblePoints);
     if (m_causticPass) {
         begin(kStageCaustics);
-        m_causticPass->record(cmd, m_causticParams, pixels);
+        m_causticPass->record(cmd, m_causticParams, within(pixels, m_window));  // not the halo
         vk::computeBarrier(cmd);
         end(kStageCaustics);
     }
@@ -286,6 +366,12 @@ void PhotonIntegrator::recordSample(VkCommandBuffer cmd, uint32_t sample, vk::It
         vk::computeBarrier(cmd);
     }
     end(kStageGathers);
+    if (m_reusePass && shared.count > 0) {
+        begin(kStageGatherReuse);
+        m_reusePass->record(cmd, reuseParams(sample), shared);
+        vk::computeBarrier(cmd);
+        end(kStageGatherReuse);
+    }
 }
 
 void PhotonIntegrator::report(Stats& stats) const {

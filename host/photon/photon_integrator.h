@@ -3,7 +3,7 @@
 // importon pass when deposition is importance-driven. Per camera sample: visible points behind
 // delta bounces with emission and next-event direct light (visible_points.comp), caustics from
 // the caustic map (caustic_estimate.comp), and indirect light by a final gather into the global
-// map (final_gather.comp).
+// map (final_gather.comp), whose rays rough surfaces share with their neighbours (gather_reuse.comp).
 #pragma once
 
 #include <memory>
@@ -13,6 +13,7 @@
 #include "photon/radiance_photons.h"
 #include "photon/caustic_estimate_pass.h"
 #include "photon/final_gather_pass.h"
+#include "photon/gather_reuse_pass.h"
 #include "photon/visible_point_pass.h"
 #include "photon/importon_map.h"
 #include "render/integrator.h"
@@ -42,8 +43,11 @@ public:
 
 private:
     void buildMaps(const Frame& frame);
-    // Sample `sample` of `pixels`: visible points, caustics, final gathers (timed: stage queries).
-    void recordSample(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange pixels, bool timed);
+    // Sample `sample`: visible points and final gathers of `pixels`, caustics of those in the window,
+    // and the shared gathers of `shared` (timed: stage queries).
+    void recordSample(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange pixels, vk::ItemRange shared, bool timed);
+    // The reuse pass's parameters at a sample: the radius shrinks as samples grow (gatherReuseRadius).
+    gpu::GatherReuseParams reuseParams(uint32_t sample) const;
     void buildGatherGuide(const PhotonMapStats& globalStats);
 
     const GpuScene& m_scene;
@@ -59,14 +63,23 @@ private:
     std::unique_ptr<VisiblePointPass> m_visiblePass;
     std::unique_ptr<FinalGatherPass> m_gatherPass;
     std::unique_ptr<CausticEstimatePass> m_causticPass;
+    std::unique_ptr<vk::Buffer> m_gatherSamples;  // every gather ray of a sample (--gather-reuse)
+    std::unique_ptr<GatherReusePass> m_reusePass;
     std::unique_ptr<vk::StageTimer> m_timer;  // GPU time of the camera passes (kStage*)
     gpu::VisiblePointParams m_visibleParams{};
     gpu::CausticEstimateParams m_causticParams{};
     gpu::FinalGatherParams m_gatherParams{};
+    gpu::GatherReuseParams m_reuseParams{};  // radius and window: reuseParams(sample)
     float m_globalCellSize = 0.0f;
     std::string m_stopReason;  // a photon pass stopped early (render/render_control.h)
     vk::ItemRange m_window;    // the pixels the camera passes compute (--tile, --crop)
 };
+
+// The radius (in pixel footprints) within which camera sample `sample` shares final gathers:
+// radius (1 + sample / kGatherReuseShrinkSamples)^(-1/6), the rate at which a 2-D kernel estimate's
+// squared bias and variance shrink together, so that shared gathers converge to the plain ones.
+constexpr double kGatherReuseShrinkSamples = 64.0;
+float gatherReuseRadius(float radius, uint32_t sample);
 
 // The visible-point pass's parameters for a frame (shared with the progressive integrator).
 gpu::VisiblePointParams visiblePointParams(const Frame& frame, uint32_t lightCount);

@@ -106,6 +106,8 @@ public:
     // Watts carried by a photon of relative power 1 (total light power / paths of one build).
     float photonPower() const { return m_photonPower; }
     uint32_t capacity() const { return m_capacity; }
+    // Photons in the map after its last build (or selective update).
+    uint64_t stored() const { return m_lastStored; }
     // Device memory of the map's photons and its grid, and density control's redistribution sums
     // (allocated in segments as the map fills; the traced chunk's slots are scratch).
     uint64_t bytes() const;

@@ -21,6 +21,7 @@ void PhotonIntegratorSettings::check() const {
     checkRange("--gather-k", gatherK, 1u, gpu::kMaxGatherK);
     checkRange("--radiance-photons", radiancePhotonStride, 0u, 1024u);
     checkRange("--gather-guide", gatherGuide, 0.0f, 1.0f);
+    checkRange("--gather-reuse", gatherReuse, 0.0f, float(gpu::kMaxGatherReuseWindow));
     if (radius != 0.0f) checkPositive("--radius", radius);
     if (!(coneK >= 1.0f)) throw InputError(fmt::format("cone filter k {}: must be at least 1", coneK));
     checkRange("--alpha", alpha, 0.01f, 0.99f);
@@ -42,6 +43,7 @@ void PhotonIntegratorSettings::report(Stats& stats) const {
     stats.set("settings.photon.gatherRays", gatherRays);
     stats.set("settings.photon.gatherK", gatherK);
     stats.set("settings.photon.gatherGuide", gatherGuide);
+    stats.set("settings.photon.gatherReuse", gatherReuse);
     stats.set("settings.photon.radiancePhotons", radiancePhotonStride);
     stats.set("settings.photon.progressive", progressive);
     stats.set("settings.photon.alpha", alpha);
@@ -76,6 +78,10 @@ void PhotonIntegratorSettings::addOptions(IntegratorOptions& options) {
                      "Probability of a final-gather direction importance-sampled from the global map's indirect photons "
                      "(a guiding grid per cell, Jensen 1995), else from the BSDF; weighted by the mixture density "
                      "(0: the BSDF's alone)")
+        ->capture_default_str();
+    group.add_option("--gather-reuse", gatherReuse,
+                     "Pixels within which rough surfaces share their final-gather rays, each weighting the others' "
+                     "by its own BSDF (in pixel footprints, shrinking as samples grow; 0: each pixel its own rays)")
         ->capture_default_str();
     group.add_option("--radiance-photons", radiancePhotonStride,
                      "About every n-th global photon carries a precomputed irradiance estimate that final gathers read "

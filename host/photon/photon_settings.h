@@ -17,11 +17,13 @@ class IntegratorOptions;
 struct PhotonIntegratorSettings {
     uint32_t globalPaths = kDefaultPhotonPaths;  // --photons: paths traced for the global map (per pass of sppm)
     uint32_t causticPaths = 500000;   // --caustic-photons: paths traced for the caustic map (0: none)
-    uint32_t gatherRays = 4;          // --gather-rays per sample; 0 reads the global map at the visible point
+    uint32_t gatherRays = 1;          // --gather-rays per sample; 0 reads the global map at the visible point
     uint32_t gatherK = 32;            // --gather-k nearest photons per global-map estimate
     float gatherGuide = 0.5f;         // --gather-guide: probability of a gather direction from the photons'
                                       // guiding grid (else the BSDF's; mixture-weighted); 0: the BSDF's alone
-    uint32_t radiancePhotonStride = 4;  // --radiance-photons: about every n-th global photon carries a
+    float gatherReuse = 4.0f;         // --gather-reuse: pixels (footprints) within which rough surfaces share
+                                      // their final-gather rays, shrinking with the sample count; 0: not shared
+    uint32_t radiancePhotonStride = 8;  // --radiance-photons: about every n-th global photon carries a
                                         // precomputed estimate for final gathers (0: estimate at every hit)
     float radius = 0.0f;              // --radius (world units); 0: 1.5 % of the scene's bounding radius
     float coneK = 1.1f;               // cone filter constant of the caustic estimate

@@ -27,6 +27,12 @@
 namespace vkp {
 namespace vk { class Buffer; }
 
+// Parts of a sample (Integrator::recordSamplePart) start at multiples of this many pixels from the
+// window's first, so that every part's invocations fall into the same workgroups and SIMD batches
+// as in a whole-frame dispatch (lavapipe runs a batch's lanes together, and its loop budget counts
+// a batch's iterations: with parts cut elsewhere, pixels near a cut came out differently).
+constexpr uint64_t kSamplePartGranule = 256;
+
 class Integrator {
 public:
     virtual ~Integrator() = default;

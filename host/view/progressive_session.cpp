@@ -237,13 +237,10 @@ uint32_t ProgressiveSession::stepPart(double targetSeconds) {
     const uint64_t left = window.count - m_partDone;
     const double estimate = m_secondsPerSample > 0.0 ? double(window.count) * targetSeconds / m_secondsPerSample
                                                      : double(window.count) / 16.0;
-    // Parts start at multiples of kPartGranule pixels from the window's first, so every part's
-    // invocations fall into the same workgroups and SIMD batches as in a whole-frame dispatch
-    // (lavapipe runs a batch's lanes together, and its loop budget counts a batch's iterations:
-    // with parts cut elsewhere, pixels near a cut came out differently, 2026-11-28).
-    constexpr uint64_t kPartGranule = 256;
+    // Parts start at multiples of kSamplePartGranule pixels from the window's first (pixels near
+    // a cut elsewhere came out differently, 2026-11-28).
     uint64_t size = std::clamp<uint64_t>(uint64_t(estimate), std::min(left, kMinPartPixels), left);
-    if (size < left) size = std::max<uint64_t>(kPartGranule, size / kPartGranule * kPartGranule);
+    if (size < left) size = std::max<uint64_t>(kSamplePartGranule, size / kSamplePartGranule * kSamplePartGranule);
     if (!m_begun) {
         if (m_integrator->beginsWithHostWork()) {
             m_begin = std::async(std::launch::async, [this, sample = m_samples] {

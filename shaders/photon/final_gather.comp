@@ -28,6 +28,7 @@ layout(local_size_x = kPhotonEstimateGroupSize) in;
 
 layout(std430, set = 0, binding = kFinalGatherFilmBinding) buffer Film { vec4 film[]; };
 layout(std430, set = 0, binding = kFinalGatherPointBinding) readonly buffer VisiblePoints { GpuVisiblePoint visiblePoints[]; };
+layout(std430, set = 0, binding = kFinalGatherSampleBinding) writeonly buffer GatherSamples { GatherSample gatherSamples[]; };
 
 layout(push_constant) uniform Push { FinalGatherParams params; };
 
@@ -37,11 +38,14 @@ const uint kFinalGatherStream = 0x46474154u;  // "FGAT"
 // guiding cache's grid (Jensen 1995: the photons' incoming flux; shared/papers/001), else from the
 // BSDF, weighted by the mixture density mix p_grid + (1 - mix) p_bsdf (one-sample MIS, the
 // balance heuristic), so the estimate stays that of BSDF sampling in expectation. Returns false
-// for no direction (the BSDF's delta lobes, which the visible point does not follow).
-bool sampleGatherDirection(VisibleSurface s, vec3 position, bool frontFace, inout Sampler rng, out vec3 dir, out vec3 weight) {
+// for no direction (the BSDF's delta lobes, which the visible point does not follow). `pdf`: the
+// density that chose `dir` (solid angle), which gather_reuse.comp divides other pixels' BSDFs by.
+bool sampleGatherDirection(VisibleSurface s, vec3 position, bool frontFace, inout Sampler rng, out vec3 dir, out vec3 weight,
+                           out float pdf) {
     vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
     dir = vec3(0.0f);
     weight = vec3(0.0f);
+    pdf = 0.0f;
     float mix = 0.0f;
     CachedGuide cached;
     uint cdfBase = 0u;  // the cached grid's CDF, read in place
@@ -59,6 +63,7 @@ bool sampleGatherDirection(VisibleSurface s, vec3 position, bool frontFace, inou
         if (bs.lobe == kLobeNone || (bs.lobe & kLobeDelta) != 0u) return false;
         dir = normalize(toWorld(bs.wi, s.t, s.b, s.n));
         weight = bs.weight;
+        pdf = bs.pdf;
         return true;
     }
     vec3 wi;  // local to the shading frame
@@ -71,19 +76,17 @@ bool sampleGatherDirection(VisibleSurface s, vec3 position, bool frontFace, inou
     }
     if (wi.z <= 0.0f) return false;
     vec3 wiGrid = toLocal(toWorld(wi, s.t, s.b, s.n), cached.t, cached.b, cached.n);
-    float pdf = mix * cachedGuidePdf(cdfBase, gm, gn, wiGrid) + (1.0f - mix) * pdfBsdf(s.bsdf, s.wo, wi);
+    pdf = mix * cachedGuidePdf(cdfBase, gm, gn, wiGrid) + (1.0f - mix) * pdfBsdf(s.bsdf, s.wo, wi);
     if (!(pdf > 0.0f)) return false;
     dir = normalize(toWorld(wi, s.t, s.b, s.n));
     weight = evalBsdf(s.bsdf, s.wo, wi) * (wi.z / pdf);
     return true;
 }
 
-// Radiance arriving at the visible point along one gather direction, divided by its pdf and
-// multiplied by f cos (the sample's weight).
-vec3 gatherRay(GpuVisiblePoint vp, VisibleSurface s, inout Sampler rng) {
-    vec3 dir;
-    vec3 weight;
-    if (!sampleGatherDirection(s, vp.position, (vp.flags & kVisiblePointFrontFace) != 0u, rng, dir, weight)) return vec3(0.0f);
+// The radiance arriving at the visible point along a gather direction (one sample of it: the
+// global map read where the ray, after any delta bounces, first meets a surface that stores photons).
+vec3 incomingRadiance(GpuVisiblePoint vp, vec3 dir, inout Sampler rng) {
+    vec3 weight = vec3(1.0f);
     // Non-delta lobes reflect: the ray starts outside any medium.
     vec3 geometricNormal = decodeOctahedral(vp.geometricNormal);
     Ray ray = rayFrom(offsetRayOrigin(vp.position, geometricNormal, dir), dir);
@@ -121,20 +124,31 @@ vec3 gatherRay(GpuVisiblePoint vp, VisibleSurface s, inout Sampler rng) {
 
 void finalGather() {
     uint pixel = gl_GlobalInvocationID.x;
-    if (pixel >= params.width * params.height) return;
+    uint pixels = params.width * params.height;
+    if (pixel >= pixels) return;
     GpuVisiblePoint vp = visiblePoints[pixel];
     if ((vp.flags & kVisiblePointValid) == 0u) return;
     VisibleSurface s = visibleSurface(vp);
-    vec3 radiance;
     if (params.gatherRays == 0u) {
-        radiance = radianceNearest(params.grid, vp.position, params.k, params.maxRadius, 0u,
-                                   kPhotonPrimary | kPhotonCaustic, s.bsdf, s.wo, s.t, s.b, s.n);
-    } else {
-        Sampler rng = makePixelSampler(params.sampleIndex * params.gatherRays + params.rayIndex, params.gatherRays,
-                                  hashCombine(hashCombine(params.seed, kFinalGatherStream), pixel));
-        radiance = gatherRay(vp, s, rng) / float(params.gatherRays);
+        vec3 radiance = radianceNearest(params.grid, vp.position, params.k, params.maxRadius, 0u,
+                                        kPhotonPrimary | kPhotonCaustic, s.bsdf, s.wo, s.t, s.b, s.n);
+        film[pixel] += vec4(finiteOrZero(vp.throughput * radiance), 0.0f);
+        return;
     }
-    film[pixel] += vec4(finiteOrZero(vp.throughput * radiance), 0.0f);
+    Sampler rng = makePixelSampler(params.sampleIndex * params.gatherRays + params.rayIndex, params.samplerCount,
+                                   hashCombine(hashCombine(params.seed, kFinalGatherStream), pixel));
+    vec3 dir, weight;
+    float pdf;
+    bool sampled = sampleGatherDirection(s, vp.position, (vp.flags & kVisiblePointFrontFace) != 0u, rng, dir, weight, pdf);
+    vec3 incoming = sampled ? incomingRadiance(vp, dir, rng) : vec3(0.0f);
+    bool pooled = params.reuse != 0u && gatherReusable(s.bsdf);
+    if (params.reuse != 0u) {
+        GatherSample g;
+        g.radianceOverPdf = !pooled ? vec3(-1.0f) : sampled ? finiteOrZero(incoming / pdf) : vec3(0.0f);
+        g.direction = encodeOctahedral(sampled ? dir : vec3(0.0f, 0.0f, 1.0f));
+        gatherSamples[params.rayIndex * pixels + pixel] = g;
+    }
+    if (!pooled) film[pixel] += vec4(finiteOrZero(vp.throughput * weight * incoming / float(params.gatherRays)), 0.0f);
 }
 
 void main() {

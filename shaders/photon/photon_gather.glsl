@@ -58,8 +58,12 @@ struct FixedRadiusGather {
     uint count;
 };
 
-FixedRadiusGather gatherFixedRadius(PhotonGridView g, vec3 x, float r, float coneK, uint required, uint rejected,
-                                    BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n) {
+// `lambertian` (a constant at each call: gatherFixedRadius) gives the photon loop a copy that
+// weights by baseColor / pi, without evalBsdf's other lobes, which lavapipe runs under a mask in
+// the loop whatever the material (a dense caustic's thousands of photons pay it each).
+FixedRadiusGather gatherFixedRadiusWith(PhotonGridView g, vec3 x, float r, float coneK, uint required, uint rejected,
+                                        BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n, const bool lambertian) {
+    vec3 lambert = bsdf.baseColor * kInvPi;
     FixedRadiusGather result;
     result.weightedPower = vec3(0.0f);
     result.count = 0u;
@@ -87,7 +91,8 @@ FixedRadiusGather gatherFixedRadius(PhotonGridView g, vec3 x, float r, float con
                     if (!photonCounts(p, n, required, rejected)) continue;
                     vec3 wi = toLocal(decodeOctahedral(p.direction), t, b, n);
                     float w = coneK > 0.0f ? coneFilterWeight(sqrt(d2), r, coneK) : 1.0f;
-                    result.weightedPower += evalBsdf(bsdf, wo, wi) * photonRelativePower(p) * w;
+                    vec3 f = lambertian ? (wi.z > 0.0f ? lambert : vec3(0.0f)) : evalBsdf(bsdf, wo, wi);
+                    result.weightedPower += f * photonRelativePower(p) * w;
                     result.count += 1u;
                 }
                 noteLoopCut(visited, max(end, begin) - begin);
@@ -95,6 +100,13 @@ FixedRadiusGather gatherFixedRadius(PhotonGridView g, vec3 x, float r, float con
     ivec3 extent = max(hi - lo + ivec3(1), ivec3(0));
     noteLoopCut(cells, uint(extent.x * extent.y * extent.z));
     return result;
+}
+
+FixedRadiusGather gatherFixedRadius(PhotonGridView g, vec3 x, float r, float coneK, uint required, uint rejected,
+                                    BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n) {
+    return bsdfIsLambertian(bsdf) && wo.z > 0.0f
+               ? gatherFixedRadiusWith(g, x, r, coneK, required, rejected, bsdf, wo, t, b, n, true)
+               : gatherFixedRadiusWith(g, x, r, coneK, required, rejected, bsdf, wo, t, b, n, false);
 }
 
 // The k-nearest search's max-heap on squared distance (heapDistance2[0] the farthest), private

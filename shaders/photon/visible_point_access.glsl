@@ -28,6 +28,15 @@ VisibleSurface visibleSurface(GpuVisiblePoint vp) {
     return s;
 }
 
+// Whether a visible point's final-gather rays may serve its neighbours, and theirs it
+// (gather_reuse.comp): a BSDF broad enough that rays drawn from another pixel's density estimate
+// its integral with little variance. No transmission (those gathers follow the dielectric layer),
+// isotropic, a specular lobe and a coat of perceptual roughness 0.5 or more.
+bool gatherReusable(BsdfParams p) {
+    return p.transmission == 0.0f && !isAnisotropic(p) && p.roughness >= 0.5f &&
+           (p.clearcoat == 0.0f || p.clearcoatRoughness >= 0.5f);
+}
+
 vec3 finiteOrZero(vec3 v) {
     return any(isnan(v)) || any(isinf(v)) ? vec3(0.0f) : v;
 }

@@ -358,9 +358,19 @@ INLINE bool storesPhotons(BsdfParams p) {
     return p.transmission < 1.0f && !mirrorLike;
 }
 
+// A Lambertian BSDF: no specular layer (KHR_materials_specular's factor 0), not metallic, no
+// sheen, coat, thin film or transmission. Every lobe but the diffuse one is then zero, and
+// diffuseWeight is 1, so evalBsdf is baseColor / pi exactly: it returns that without the lobes'
+// work (table lookups, GGX), which costs the shared final gathers most (gather_reuse.comp).
+INLINE bool bsdfIsLambertian(BsdfParams p) {
+    return p.specular == 0.0f && p.metallic == 0.0f && p.clearcoat == 0.0f && p.transmission == 0.0f &&
+           maxComponent(p.sheenColor) <= 0.0f && iridescenceWeight(p) <= 0.0f;
+}
+
 // Non-delta part of the BSDF (f, without the cosine) for local wo, wi; both on the +z side.
 INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
+    if (bsdfIsLambertian(p)) return p.baseColor * kInvPi;
     vec3 h = normalize(wo + wi);
     float cosH = dot(wo, h);
     // glTF base: diffuse + GGX specular (+ multiple scattering).

@@ -87,10 +87,18 @@ INLINE uint permutationElement(uint i, uint n, uint seed) {
 }
 
 // The sample number that dimension-stream `h` reads for sample `index` of a pixel taking `count`
-// samples: a permutation within index's block of `count` numbers. count 0 (not known) is taken as
-// 2^16: dimensions stay decorrelated, but a pixel's few samples are no longer a stratified set.
+// samples: a permutation within index's block of `count` numbers. A count that is not known (0)
+// or past 2^16 — a render that runs until a time limit, given a huge --spp — takes blocks that
+// double instead, [1, 2), [2, 4), [4, 8), ..., each permuted on its own: the first 2^k samples of
+// a pixel are then the first 2^k Sobol numbers, a stratified set, wherever the render stops, and
+// each block spans every stratum of every dimension, so dimensions stay decorrelated. (One block
+// of 2^16 or of the whole count made a few samples a random subset of many: not stratified.)
 INLINE uint permutedSampleNumber(uint index, uint count, uint h) {
-    if (count == 0u) count = 65536u;
+    if (count == 0u || count > 65536u) {
+        if (index < 2u) return index;
+        uint start = 1u << uint(findMSB(index));
+        return start + permutationElement(index - start, start, hashCombine(h, start));
+    }
     uint block = index / count;
     uint first = block * count;
     return first + permutationElement(index - first, count, hashCombine(h, block));

@@ -61,13 +61,51 @@ struct FinalGatherParams {
     uint maxSpecularDepth;
     uint radianceLookup;  // 1: the grid holds radiance photons (read the nearest one), 0: photons
     float lookupRadius;   // radiance photons farther than this are not used
-    uint pad0;
+    uint reuse;           // 1: a visible point whose BSDF is rough (gatherReusable) leaves its ray in
+                          // the gather-sample buffer for gather_reuse.comp instead of adding it to the film
     // Gather directions importance-sampled from the photons (the guiding cache's grids: their
     // incoming flux) with probability guide.mix, else the BSDF's, weighted by the mixture density
     // (one-sample MIS); guide.mix 0: the BSDF's alone.
     GuideParams guide;
+    // Gather rays a pixel takes in the whole render (samples x gatherRays; 0: not known, past 2^30):
+    // the size of the sampler's per-pixel permutation (makePixelSampler), so that every dimension
+    // of a pixel's gather rays is stratified on its own and the dimensions are not correlated.
+    uint samplerCount;
+    uint pad1;
+    uint pad2;
+    uint pad3;
 };
-STATIC_ASSERT_SIZE(FinalGatherParams, 96)
+STATIC_ASSERT_SIZE(FinalGatherParams, 112)
+
+// One final-gather ray of one pixel, kept for gather_reuse.comp: its direction (world, octahedral)
+// and the radiance it brought back over the density that chose it, L / pdf. A negative x marks a
+// pixel whose rays are not shared (its BSDF is not gatherReusable; the ray went to the film);
+// zero, a ray that found nothing (or no direction): a sample of value zero that still counts.
+struct GatherSample {
+    vec3 radianceOverPdf;
+    uint direction;
+};
+STATIC_ASSERT_SIZE(GatherSample, 16)
+
+// gather_reuse.comp (docs/photon-mapping.md, "Gathers shared between pixels"): each pixel whose
+// BSDF is rough adds the mean of f_p(wi_q) cos / pdf_q * L_q over the gather rays of the pixels q
+// around it (its own included) that lie on the same surface: within `radius` pixel footprints in
+// world space, normals within kGatherReuseCos, off its plane by at most a tenth of that.
+struct GatherReuseParams {
+    uint width;
+    uint height;
+    uint gatherRays;      // rays per pixel in the gather-sample buffer (ray r of pixel p: r * pixels + p)
+    uint window;          // neighbours searched: (2 window + 1)^2 pixels, window = ceil(radius)
+    float radius;         // in pixel footprints (0: the pixel's own rays only)
+    float footprintScale; // the visible point's cone width times this is its pixel's footprint
+    uint pad0;
+    uint pad1;
+};
+STATIC_ASSERT_SIZE(GatherReuseParams, 32)
+
+const uint kMaxGatherReuseWindow = 8u;
+// Normals of pixels that share their gathers at most ~26 degrees apart.
+const float kGatherReuseCos = 0.9f;
 
 // sppm_update.comp: stochastic progressive photon mapping (Hachisuka & Jensen 2009), one update
 // of every pixel's statistics per photon pass.

@@ -98,6 +98,15 @@ TEST(Tiles, PhotonMappedTilesMergeToTheFullRenderBitForBit) {
                                     {"--tile 1/2", "--tile 2/2"});
 }
 
+// Shared final gathers read the rays of pixels up to 4 rows around each pixel: a crop traces
+// them beyond its window, so windows that split rows merge to the full render too.
+TEST(Tiles, PhotonMappedCropsWithSharedGathersMergeToTheFullRenderBitForBit) {
+    expectPartsMergeToTheFullRender("photon-crop",
+                                    "render " + kBox + kSmall +
+                                        " --spp 2 --integrator photon --photons 20000 --gather-reuse 4",
+                                    {"--crop 0,0,9,20", "--crop 9,0,24,7", "--crop 9,7,24,20"});
+}
+
 TEST(Tiles, ProgressivePhotonTilesMergeToTheFullRenderBitForBit) {
     expectPartsMergeToTheFullRender("sppm",
                                     "render " + kBox + kSmall +

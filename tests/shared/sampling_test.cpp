@@ -238,6 +238,34 @@ TEST(OwenSobol, EachBlockOfTheCountIsStratifiedIn1DAnd2D) {
                 }
 }
 
+// A render that runs to a time limit does not know its count (0, or a huge --spp): whenever it
+// stops after 2^k samples, a pixel's samples are stratified in 1-D and 2-D all the same (blocks that
+// double), and the samples of the next block fill every 1-D stratum once more.
+TEST(OwenSobol, WithoutAKnownCountEveryPowerOfTwoPrefixIsStratified) {
+    for (uint32_t count : {0u, 1u << 20})
+        for (uint32_t seed : {0u, 12345u})
+            for (uint32_t dimension : {0u, 2u, 7u})
+                for (uint32_t n : {4u, 16u, 64u}) {
+                    std::vector<int> line(n, 0), next(n, 0);
+                    for (uint32_t i = 0; i < n; ++i) line[static_cast<int>(owenSobol1(i, count, seed, dimension) * n)]++;
+                    for (uint32_t i = n; i < 2 * n; ++i) next[static_cast<int>(owenSobol1(i, count, seed, dimension) * n)]++;
+                    for (uint32_t k = 0; k < n; ++k) {
+                        EXPECT_EQ(line[k], 1) << "1-D prefix, count " << count << ", seed " << seed << ", n " << n;
+                        EXPECT_EQ(next[k], 1) << "1-D next block, count " << count << ", seed " << seed << ", n " << n;
+                    }
+                    for (uint32_t columns = 1; columns <= n; columns *= 2) {
+                        const uint32_t rows = n / columns;
+                        std::vector<int> grid(n, 0);
+                        for (uint32_t i = 0; i < n; ++i) {
+                            const glm::vec2 p = owenSobol2(i, count, seed, dimension);
+                            grid[static_cast<int>(p.y * rows) * columns + static_cast<int>(p.x * columns)]++;
+                        }
+                        for (int h : grid)
+                            EXPECT_EQ(h, 1) << "2-D " << columns << "x" << rows << ", count " << count << ", n " << n;
+                    }
+                }
+}
+
 // A count that is not a power of two: the pixel's samples still take each sample number of the
 // block exactly once in every dimension (a permutation), so the set of points is the Sobol prefix.
 TEST(OwenSobol, ThePermutationIsABijectionForAnyCount) {
@@ -255,17 +283,18 @@ TEST(OwenSobol, ThePermutationIsABijectionForAnyCount) {
 
 // Padding must pair dimensions at random: over one pixel's 64 samples, no two of its first 32
 // dimensions may be correlated beyond what independent uniform pairs show (|r| has a standard
-// deviation of 1/sqrt(63) = 0.126; the worst of 496 pairs x 3 pixels is about 0.45 by chance). A
+// deviation of 1/sqrt(63) = 0.126; the worst of 496 pairs x 6 pixels is about 0.45 by chance). A
 // nested-uniform shuffle of the sample number instead of a permutation gave |r| up to 0.6 here,
 // and an unshuffled index gives 1.
 TEST(OwenSobol, DimensionsOfOnePixelAreNotCorrelated) {
     constexpr uint32_t kSamples = 64;
     constexpr uint32_t kDimensions = 32;
     double worst = 0.0;
+    for (uint32_t count : {kSamples, 0u})  // 0: a time-limited render's count, not known
     for (uint32_t pixel : {0u, 77u, 4242u}) {
         std::vector<std::vector<double>> values(kDimensions, std::vector<double>(kSamples));
         for (uint32_t d = 0; d < kDimensions; ++d)
-            for (uint32_t i = 0; i < kSamples; ++i) values[d][i] = owenSobol1(i, kSamples, hashCombine(9u, pixel), d);
+            for (uint32_t i = 0; i < kSamples; ++i) values[d][i] = owenSobol1(i, count, hashCombine(9u, pixel), d);
         for (uint32_t a = 0; a < kDimensions; ++a)
             for (uint32_t b = a + 1; b < kDimensions; ++b) {
                 double sab = 0.0, saa = 0.0, sbb = 0.0;

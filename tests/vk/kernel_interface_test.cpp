@@ -63,7 +63,7 @@ std::vector<vk::KernelInterface> everyKernel() {
             vk::interfaceOf<GridCopyKernel>(), vk::interfaceOf<ScanBlocksKernel>(), vk::interfaceOf<ScanAddKernel>(),
             vk::interfaceOf<CompactMarkKernel>(), vk::interfaceOf<CompactScatterKernel>(),
             vk::interfaceOf<CompactAdvanceKernel>(), vk::interfaceOf<VisiblePointsKernel>(),
-            vk::interfaceOf<CausticEstimateKernel>(), vk::interfaceOf<FinalGatherKernel>(),
+            vk::interfaceOf<CausticEstimateKernel>(), vk::interfaceOf<FinalGatherKernel>(), vk::interfaceOf<GatherReuseKernel>(),
             vk::interfaceOf<SppmUpdateKernel>(), vk::interfaceOf<RadiancePhotonsKernel>(),
             vk::interfaceOf<GuideCacheBuildKernel>(), vk::interfaceOf<ShadowVolumeBuildKernel>(),
             vk::interfaceOf<RasterDirectKernel>(), vk::interfaceOf<AovKernel>(),

@@ -1,5 +1,5 @@
 // Interface of the photon integrator's camera-side kernels: visible_points.comp and the
-// estimates at the visible points, caustic_estimate.comp, final_gather.comp, sppm_update.comp,
+// estimates at the visible points, caustic_estimate.comp, final_gather.comp, gather_reuse.comp, sppm_update.comp,
 // with radiance_photons.comp, which precomputes what final gathers read
 // (host/photon/visible_point_pass.h, caustic_estimate_pass.h, final_gather_pass.h,
 // sppm_update_pass.h, radiance_photons.h). A grid binding holds the photon grid's cell starts and
@@ -28,6 +28,12 @@ const uint kFinalGatherPointBinding = kSceneBindingCount + 1u;
 const uint kFinalGatherGridBinding = kSceneBindingCount + 2u;           // the global map's or the radiance photons' grid (two bindings)
 const uint kFinalGatherGuideCellsBinding = kSceneBindingCount + 4u;     // the guiding cache (guide_cache_access.glsl): cells
 const uint kFinalGatherGuideCdfsBinding = kSceneBindingCount + 5u;      // and grids
+const uint kFinalGatherSampleBinding = kSceneBindingCount + 6u;         // GatherSample per pixel and ray (written with reuse)
+
+// gather_reuse.comp: the scene's (0 .. kSceneBindingCount - 1), then
+const uint kGatherReuseFilmBinding = kSceneBindingCount + 0u;
+const uint kGatherReusePointBinding = kSceneBindingCount + 1u;
+const uint kGatherReuseSampleBinding = kSceneBindingCount + 2u;         // GatherSample per pixel and ray
 
 // sppm_update.comp: the scene's (0 .. kSceneBindingCount - 1), then
 const uint kSppmUpdatePixelBinding = kSceneBindingCount + 0u;            // SppmPixel per pixel
@@ -59,9 +65,15 @@ struct CausticEstimateKernel {
 };
 struct FinalGatherKernel {
     static constexpr const char* kShader = "final_gather.comp";
-    static constexpr uint32_t kBindingCount = kFinalGatherGuideCdfsBinding + 1u;
+    static constexpr uint32_t kBindingCount = kFinalGatherSampleBinding + 1u;
     static constexpr uint32_t kGroupSize = kPhotonEstimateGroupSize;
     using Push = FinalGatherParams;
+};
+struct GatherReuseKernel {
+    static constexpr const char* kShader = "gather_reuse.comp";
+    static constexpr uint32_t kBindingCount = kGatherReuseSampleBinding + 1u;
+    static constexpr uint32_t kGroupSize = kPhotonEstimateGroupSize;
+    using Push = GatherReuseParams;
 };
 struct SppmUpdateKernel {
     static constexpr const char* kShader = "sppm_update.comp";
