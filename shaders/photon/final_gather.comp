@@ -105,9 +105,7 @@ vec3 incomingRadiance(GpuVisiblePoint vp, vec3 dir, inout Sampler rng) {
             if (params.radianceLookup == 0u)
                 return weight * radianceNearest(params.grid, v.hit.position, params.k, params.maxRadius, 0u, 0u, v.bsdf,
                                                 v.wo, v.t, v.b, v.n);
-            float radius2;
-            if (gatherNearest(params.grid, v.hit.position, v.n, 1u, params.lookupRadius, 0u, 0u, radius2) == 0u)
-                return vec3(0.0f);
+            if (!findNearest(params.grid, v.hit.position, v.n, params.lookupRadius, 0u, 0u)) return vec3(0.0f);
             vec3 irradiance = photonRelativePower(gridPhoton(heapIndex[0])) * params.grid.photonPower;
             return weight * diffuseReflectance(v.bsdf, v.wo) * irradiance;
         }

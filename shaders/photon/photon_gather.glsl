@@ -150,9 +150,11 @@ struct NearestSearch {
     float radius2;
 };
 
-// Offers the photons of cell c to the heap of a k-nearest search.
+// Offers the photons of cell c to the heap of a k-nearest search. `one` (a constant at each call)
+// is a search for the nearest photon alone (k = 1): it keeps that photon without the heap's loops,
+// which lavapipe runs under a lane mask for every photon a cell holds.
 void gatherNearestInCell(PhotonGridView g, ivec3 c, vec3 x, vec3 n, uint required, uint rejected,
-                         inout NearestSearch s) {
+                         inout NearestSearch s, const bool one) {
     uint bucket = gridHash(c, g.tableMask);
     uint begin = gridCellStart[bucket];
     uint end = gridCellStart[bucket + 1u];
@@ -163,7 +165,12 @@ void gatherNearestInCell(PhotonGridView g, ivec3 c, vec3 x, vec3 n, uint require
         vec3 d = p.position - x;
         float d2 = dot(d, d);
         if (d2 < s.radius2 && gridCell(p.position, g.invCellSize) == c && photonCounts(p, n, required, rejected)) {
-            if (s.count < s.capacity) {
+            if (one) {
+                heapDistance2[0] = d2;
+                heapIndex[0] = i;
+                s.count = 1u;
+                s.radius2 = d2;
+            } else if (s.count < s.capacity) {
                 heapPush(s.count, d2, i);
                 s.count += 1u;
             } else {
@@ -178,11 +185,11 @@ void gatherNearestInCell(PhotonGridView g, ivec3 c, vec3 x, vec3 n, uint require
 // The k nearest photons (k <= kMaxGatherK) within maxRadius of x: fills heapIndex[0, found) with
 // grid indices and returns found. radius2 is the squared distance of the farthest one when k
 // were found, else maxRadius^2 (the disk the estimate divides by).
-uint gatherNearest(PhotonGridView g, vec3 x, vec3 n, uint k, float maxRadius, uint required, uint rejected,
-                   out float radius2) {
+uint gatherNearestWith(PhotonGridView g, vec3 x, vec3 n, uint k, float maxRadius, uint required, uint rejected,
+                       out float radius2, const bool one) {
     NearestSearch s;
     s.count = 0u;
-    s.capacity = clamp(k, 1u, kMaxGatherK);
+    s.capacity = one ? 1u : clamp(k, 1u, kMaxGatherK);
     s.radius2 = maxRadius * maxRadius;
     // Cells in rings of growing Chebyshev distance around x's cell: once k photons are found the
     // radius shrinks to the k-th distance and the outer rings' cells are mostly skipped.
@@ -195,11 +202,22 @@ uint gatherNearest(PhotonGridView g, vec3 x, vec3 n, uint k, float maxRadius, ui
                 for (int dx = -ring; dx <= ring; ++dx) {
                     ivec3 c = center + ivec3(dx, dy, dz);
                     if (max(abs(dx), max(abs(dy), abs(dz))) == ring && cellDistance2(g, c, x) <= s.radius2)
-                        gatherNearestInCell(g, c, x, n, required, rejected, s);
+                        gatherNearestInCell(g, c, x, n, required, rejected, s, one);
                 }
     noteLoopCut(ringsDone, uint(max(rings + 1, 0)));
     radius2 = s.count == s.capacity ? heapDistance2[0] : maxRadius * maxRadius;
     return s.count;
+}
+
+uint gatherNearest(PhotonGridView g, vec3 x, vec3 n, uint k, float maxRadius, uint required, uint rejected,
+                   out float radius2) {
+    return gatherNearestWith(g, x, n, k, maxRadius, required, rejected, radius2, false);
+}
+
+// The nearest photon alone (heapIndex[0] when found): gatherNearest with k = 1, without the heap.
+bool findNearest(PhotonGridView g, vec3 x, vec3 n, float maxRadius, uint required, uint rejected) {
+    float radius2;
+    return gatherNearestWith(g, x, n, 1u, maxRadius, required, rejected, radius2, true) != 0u;
 }
 
 // Reflected radiance estimate from the k nearest photons (Jensen: L = sum f_r dPhi / (pi r^2),

@@ -457,7 +457,7 @@ const std::map<std::string, std::vector<std::string>> kNumericFlags = {
                 "--max-memory", "--max-texture-size", "--exposure", "--fov", "--env-strength", "--env-rotation", "--scene"}},
     {"render --direct raster", {"--area-light-samples"}},
     {"render --light-sampler photon", {"--light-photons", "--light-cell-k", "--light-cell-floor", "--light-cell-size"}},
-    {"render --integrator photon", {"--photons", "--caustic-photons", "--gather-rays", "--max-deposits", "--gather-k", "--gather-guide", "--radiance-photons",
+    {"render --integrator photon", {"--photons", "--caustic-photons", "--gather-rays", "--max-deposits", "--gather-k", "--gather-guide", "--gather-reuse", "--radiance-photons",
                                     "--radius", "--q", "--importons", "--deposit-epsilon", "--density-accuracy",
                                     "--density-rounds"}},
     {"render --integrator sppm", {"--alpha"}},
