@@ -44,6 +44,7 @@ vec3 neighbourSum(uint pixel, GpuVisiblePoint vp, VisibleSurface s, const bool l
     int x = int(pixel % params.width);
     int y = int(pixel / params.width);
     vec3 lambert = s.bsdf.baseColor * kInvPi;
+    BsdfWoTerms woTerms = bsdfWoTerms(s.bsdf, s.wo);  // p's BSDF at many wi: its wo terms once
     vec3 sum = vec3(0.0f);
     rays = 0u;
     for (int dy = -window; dy <= window; ++dy) {
@@ -71,7 +72,7 @@ vec3 neighbourSum(uint pixel, GpuVisiblePoint vp, VisibleSurface s, const bool l
                 vec3 dir = decodeOctahedral(g.direction);
                 vec3 wi = toLocal(dir, s.t, s.b, s.n);
                 if (wi.z <= 0.0f || (!own && dot(dir, normal) <= 0.0f)) continue;  // below p's surface
-                vec3 f = lambertian ? lambert : evalBsdf(s.bsdf, s.wo, wi);
+                vec3 f = lambertian ? lambert : evalBsdfWith(s.bsdf, woTerms, s.wo, wi);
                 sum += f * (wi.z * scale) * g.radianceOverPdf;
             }
         }

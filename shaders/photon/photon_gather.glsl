@@ -64,6 +64,7 @@ struct FixedRadiusGather {
 FixedRadiusGather gatherFixedRadiusWith(PhotonGridView g, vec3 x, float r, float coneK, uint required, uint rejected,
                                         BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n, const bool lambertian) {
     vec3 lambert = bsdf.baseColor * kInvPi;
+    BsdfWoTerms woTerms = bsdfWoTerms(bsdf, wo);
     FixedRadiusGather result;
     result.weightedPower = vec3(0.0f);
     result.count = 0u;
@@ -91,7 +92,7 @@ FixedRadiusGather gatherFixedRadiusWith(PhotonGridView g, vec3 x, float r, float
                     if (!photonCounts(p, n, required, rejected)) continue;
                     vec3 wi = toLocal(decodeOctahedral(p.direction), t, b, n);
                     float w = coneK > 0.0f ? coneFilterWeight(sqrt(d2), r, coneK) : 1.0f;
-                    vec3 f = lambertian ? (wi.z > 0.0f ? lambert : vec3(0.0f)) : evalBsdf(bsdf, wo, wi);
+                    vec3 f = lambertian ? (wi.z > 0.0f ? lambert : vec3(0.0f)) : evalBsdfWith(bsdf, woTerms, wo, wi);
                     result.weightedPower += f * photonRelativePower(p) * w;
                     result.count += 1u;
                 }
@@ -227,11 +228,12 @@ vec3 radianceNearest(PhotonGridView g, vec3 x, uint k, float maxRadius, uint req
                      BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n) {
     float radius2;
     uint found = gatherNearest(g, x, n, k, maxRadius, required, rejected, radius2);
+    BsdfWoTerms woTerms = bsdfWoTerms(bsdf, wo);
     vec3 sum = vec3(0.0f);
     for (uint j = 0u; j < found; ++j) {
         GpuPhoton p = gridPhoton(heapIndex[j]);
         vec3 wi = toLocal(decodeOctahedral(p.direction), t, b, n);
-        sum += evalBsdf(bsdf, wo, wi) * photonRelativePower(p);
+        sum += evalBsdfWith(bsdf, woTerms, wo, wi) * photonRelativePower(p);
     }
     return sum * (g.photonPower * nearestEstimateScale(found, clamp(k, 1u, kMaxGatherK)) / (kPi * radius2));
 }

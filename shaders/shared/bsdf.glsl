@@ -367,8 +367,24 @@ INLINE bool bsdfIsLambertian(BsdfParams p) {
            maxComponent(p.sheenColor) <= 0.0f && iridescenceWeight(p) <= 0.0f;
 }
 
-// Non-delta part of the BSDF (f, without the cosine) for local wo, wi; both on the +z side.
-INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
+// The parts of evalBsdf that depend on wo alone: the multiple-scattering colour and
+// 1 - E(cos theta_o) (table lookups). A caller that evaluates one BSDF for many wi computes them
+// once (evalBsdfWith); evalBsdf computes them at every call.
+struct BsdfWoTerms {
+    vec3 multipleScattering;  // multipleScatteringColour (zero: no compensation, or a delta lobe)
+    float lossWo;             // ggxLoss(p, wo.z) where multipleScattering is not zero
+};
+
+INLINE BsdfWoTerms bsdfWoTerms(BsdfParams p, vec3 wo) {
+    BsdfWoTerms terms;
+    bool none = bsdfIsLambertian(p) || specularLobeIsDelta(p);  // a Lambertian BSDF's is zero too
+    terms.multipleScattering = none ? vec3(0.0f) : multipleScatteringColour(p);
+    terms.lossWo = maxComponent(terms.multipleScattering) > 0.0f ? ggxLoss(p, wo.z) : 0.0f;
+    return terms;
+}
+
+// evalBsdf with its wo terms given: the same value.
+INLINE vec3 evalBsdfWith(BsdfParams p, BsdfWoTerms terms, vec3 wo, vec3 wi) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);
     if (bsdfIsLambertian(p)) return p.baseColor * kInvPi;
     vec3 h = normalize(wo + wi);
@@ -377,8 +393,8 @@ INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
     vec3 f = p.baseColor * (kInvPi * diffuseWeight(p, cosH));
     if (!specularLobeIsDelta(p)) {
         f = f + specularFresnel(p, cosH) * specularLobe(p, wo, wi);
-        vec3 ms = multipleScatteringColour(p);
-        if (maxComponent(ms) > 0.0f) f = f + ms * (ggxLoss(p, wo.z) * ggxLoss(p, wi.z));
+        vec3 ms = terms.multipleScattering;
+        if (maxComponent(ms) > 0.0f) f = f + ms * (terms.lossWo * ggxLoss(p, wi.z));
     }
     // Sheen over the base, clearcoat over both.
     if (maxComponent(p.sheenColor) > 0.0f) {
@@ -391,6 +407,11 @@ INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
         if (!clearcoatIsDelta(p)) f = f + vec3(fc * clearcoatReflection(p, wo, wi));
     }
     return f * (1.0f - p.transmission);
+}
+
+// Non-delta part of the BSDF (f, without the cosine) for local wo, wi; both on the +z side.
+INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
+    return evalBsdfWith(p, bsdfWoTerms(p, wo), wo, wi);
 }
 
 // The diffuse part of the BSDF for light arriving along the normal: what turns precomputed
