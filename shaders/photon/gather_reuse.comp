@@ -33,8 +33,8 @@ layout(push_constant) uniform Push { GatherReuseParams params; };
 
 // The sum of f_p cos / pdf_q L_q over the rays of the pixels that share p's surface, and how many
 // rays that is. `lambertian` (a constant at each call) gives the loop a copy without evalBsdf's
-// lobes: lavapipe runs a loop's every branch under a mask, so the test inside evalBsdf alone
-// saves little.
+// other lobes (evalBsdfAs): lavapipe runs a loop's every branch under a mask, so the test inside
+// evalBsdf alone saves little.
 vec3 neighbourSum(uint pixel, GpuVisiblePoint vp, VisibleSurface s, const bool lambertian, out uint rays) {
     uint pixels = params.width * params.height;
     vec3 normal = decodeOctahedral(vp.geometricNormal);
@@ -43,7 +43,6 @@ vec3 neighbourSum(uint pixel, GpuVisiblePoint vp, VisibleSurface s, const bool l
     int window = int(min(params.window, kMaxGatherReuseWindow));
     int x = int(pixel % params.width);
     int y = int(pixel / params.width);
-    vec3 lambert = s.bsdf.baseColor * kInvPi;
     BsdfWoTerms woTerms = bsdfWoTerms(s.bsdf, s.wo);  // p's BSDF at many wi: its wo terms once
     vec3 sum = vec3(0.0f);
     rays = 0u;
@@ -72,8 +71,7 @@ vec3 neighbourSum(uint pixel, GpuVisiblePoint vp, VisibleSurface s, const bool l
                 vec3 dir = decodeOctahedral(g.direction);
                 vec3 wi = toLocal(dir, s.t, s.b, s.n);
                 if (wi.z <= 0.0f || (!own && dot(dir, normal) <= 0.0f)) continue;  // below p's surface
-                vec3 f = lambertian ? lambert : evalBsdfWith(s.bsdf, woTerms, s.wo, wi);
-                sum += f * (wi.z * scale) * g.radianceOverPdf;
+                sum += evalBsdfAs(s.bsdf, woTerms, s.wo, wi, lambertian) * (wi.z * scale) * g.radianceOverPdf;
             }
         }
     }
@@ -88,8 +86,7 @@ void gatherReuse() {
     if (gatherSamples[pixel].radianceOverPdf.x < 0.0f) return;  // not shared: final_gather.comp added its rays
     VisibleSurface s = visibleSurface(vp);
     uint rays;
-    vec3 sum = bsdfIsLambertian(s.bsdf) && s.wo.z > 0.0f ? neighbourSum(pixel, vp, s, true, rays)
-                                                          : neighbourSum(pixel, vp, s, false, rays);
+    vec3 sum = bsdfIsLambertian(s.bsdf) ? neighbourSum(pixel, vp, s, true, rays) : neighbourSum(pixel, vp, s, false, rays);
     film[pixel] += vec4(finiteOrZero(vp.throughput * sum / float(max(rays, 1u))), 0.0f);
 }
 

@@ -58,12 +58,10 @@ struct FixedRadiusGather {
     uint count;
 };
 
-// `lambertian` (a constant at each call: gatherFixedRadius) gives the photon loop a copy that
-// weights by baseColor / pi, without evalBsdf's other lobes, which lavapipe runs under a mask in
-// the loop whatever the material (a dense caustic's thousands of photons pay it each).
+// `lambertian` (a constant at each call: gatherFixedRadius) gives the photon loop a copy without
+// evalBsdf's other lobes (evalBsdfAs; a dense caustic's thousands of photons paid them each).
 FixedRadiusGather gatherFixedRadiusWith(PhotonGridView g, vec3 x, float r, float coneK, uint required, uint rejected,
                                         BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n, const bool lambertian) {
-    vec3 lambert = bsdf.baseColor * kInvPi;
     BsdfWoTerms woTerms = bsdfWoTerms(bsdf, wo);
     FixedRadiusGather result;
     result.weightedPower = vec3(0.0f);
@@ -92,8 +90,7 @@ FixedRadiusGather gatherFixedRadiusWith(PhotonGridView g, vec3 x, float r, float
                     if (!photonCounts(p, n, required, rejected)) continue;
                     vec3 wi = toLocal(decodeOctahedral(p.direction), t, b, n);
                     float w = coneK > 0.0f ? coneFilterWeight(sqrt(d2), r, coneK) : 1.0f;
-                    vec3 f = lambertian ? (wi.z > 0.0f ? lambert : vec3(0.0f)) : evalBsdfWith(bsdf, woTerms, wo, wi);
-                    result.weightedPower += f * photonRelativePower(p) * w;
+                    result.weightedPower += evalBsdfAs(bsdf, woTerms, wo, wi, lambertian) * photonRelativePower(p) * w;
                     result.count += 1u;
                 }
                 noteLoopCut(visited, max(end, begin) - begin);
@@ -105,7 +102,7 @@ FixedRadiusGather gatherFixedRadiusWith(PhotonGridView g, vec3 x, float r, float
 
 FixedRadiusGather gatherFixedRadius(PhotonGridView g, vec3 x, float r, float coneK, uint required, uint rejected,
                                     BsdfParams bsdf, vec3 wo, vec3 t, vec3 b, vec3 n) {
-    return bsdfIsLambertian(bsdf) && wo.z > 0.0f
+    return bsdfIsLambertian(bsdf)
                ? gatherFixedRadiusWith(g, x, r, coneK, required, rejected, bsdf, wo, t, b, n, true)
                : gatherFixedRadiusWith(g, x, r, coneK, required, rejected, bsdf, wo, t, b, n, false);
 }

@@ -409,8 +409,17 @@ INLINE vec3 evalBsdfWith(BsdfParams p, BsdfWoTerms terms, vec3 wo, vec3 wi) {
     return f * (1.0f - p.transmission);
 }
 
+// evalBsdfWith where the caller knows whether the BSDF is Lambertian (`lambertian` a constant at
+// the call, bsdfIsLambertian(p) tested once outside): a loop that evaluates one BSDF for many wi
+// gets a copy without the other lobes' code, which lavapipe would run under a lane mask anyway.
+INLINE vec3 evalBsdfAs(BsdfParams p, BsdfWoTerms terms, vec3 wo, vec3 wi, const bool lambertian) {
+    if (!lambertian) return evalBsdfWith(p, terms, wo, wi);
+    return wo.z > 0.0f && wi.z > 0.0f ? p.baseColor * kInvPi : vec3(0.0f);
+}
+
 // Non-delta part of the BSDF (f, without the cosine) for local wo, wi; both on the +z side.
 INLINE vec3 evalBsdf(BsdfParams p, vec3 wo, vec3 wi) {
+    if (wo.z <= 0.0f || wi.z <= 0.0f) return vec3(0.0f);  // before the wo terms' table lookups
     return evalBsdfWith(p, bsdfWoTerms(p, wo), wo, wi);
 }
 
