@@ -65,10 +65,10 @@ float cachedGuidePdf(uint cdfBase, uint m, uint n, vec3 wi) {
     uint c = guideCell(invertCosineHemisphere(wi), m, n);
     return guideDensity(GUIDE_CELL_PROBABILITY(GUIDE_CACHE_AT, c), m, n, wi);
 }
-vec3 cachedGuideSample(uint cdfBase, uint m, uint n, vec3 u) {
-    uint c;
-    GUIDE_FIND_CELL(GUIDE_CACHE_AT, m * n, u.x, c)
-    return guideCellDirection(c, m, n, vec2(u.y, u.z));
+vec3 cachedGuideSample(uint cdfBase, uint m, uint n, vec2 u) {
+    vec3 wi;
+    GUIDE_SAMPLE(GUIDE_CACHE_AT, m, n, u, wi)
+    return wi;
 }
 #undef GUIDE_CACHE_AT
 

@@ -42,7 +42,8 @@ const uint kFinalGatherStream = 0x46474154u;  // "FGAT"
 // density that chose `dir` (solid angle), which gather_reuse.comp divides other pixels' BSDFs by.
 bool sampleGatherDirection(VisibleSurface s, vec3 position, bool frontFace, inout Sampler rng, out vec3 dir, out vec3 weight,
                            out float pdf) {
-    vec3 u = vec3(nextSample(rng), nextSample(rng), nextSample(rng));
+    float uLobe = nextSample(rng);
+    vec2 point = nextSample2(rng);  // the direction (and the branch) from one stratified 2-D point
     dir = vec3(0.0f);
     weight = vec3(0.0f);
     pdf = 0.0f;
@@ -59,7 +60,7 @@ bool sampleGatherDirection(VisibleSurface s, vec3 position, bool frontFace, inou
         }
     }
     if (mix <= 0.0f) {
-        BsdfSample bs = sampleBsdf(s.bsdf, s.wo, frontFace, true, u);
+        BsdfSample bs = sampleBsdf(s.bsdf, s.wo, frontFace, true, vec3(uLobe, point));
         if (bs.lobe == kLobeNone || (bs.lobe & kLobeDelta) != 0u) return false;
         dir = normalize(toWorld(bs.wi, s.t, s.b, s.n));
         weight = bs.weight;
@@ -67,10 +68,10 @@ bool sampleGatherDirection(VisibleSurface s, vec3 position, bool frontFace, inou
         return true;
     }
     vec3 wi;  // local to the shading frame
-    if (nextSample(rng) < mix) {
-        wi = toLocal(toWorld(cachedGuideSample(cdfBase, gm, gn, u), cached.t, cached.b, cached.n), s.t, s.b, s.n);
+    if (guideChosen(point, mix)) {
+        wi = toLocal(toWorld(cachedGuideSample(cdfBase, gm, gn, point), cached.t, cached.b, cached.n), s.t, s.b, s.n);
     } else {
-        BsdfSample bs = sampleBsdf(s.bsdf, s.wo, frontFace, true, u);
+        BsdfSample bs = sampleBsdf(s.bsdf, s.wo, frontFace, true, vec3(uLobe, point));
         if (bs.lobe == kLobeNone || (bs.lobe & kLobeDelta) != 0u) return false;
         wi = bs.wi;
     }

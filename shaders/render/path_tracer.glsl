@@ -112,7 +112,7 @@ float vertexGuidePdf(vec3 wi) {
     return guidePdf(guideCdf, vertexGuide.m, vertexGuide.n, wi);
 #endif
 }
-vec3 vertexGuideSample(vec3 u) {
+vec3 vertexGuideSample(vec2 u) {
 #ifdef GUIDE_CACHE
     return cachedGuideSample(vertexGuide.cdfBase, vertexGuide.m, vertexGuide.n, u);
 #else
@@ -177,16 +177,18 @@ float guidedDirectionPdf(PathVertex v, vec3 wi) {
     return vertexGuide.mix * vertexGuidePdf(wiGrid) + (1.0f - vertexGuide.mix) * bsdf;
 }
 
-// A direction from the prepared vertex's mixture, weighted by the mixture density.
-BsdfSample sampleGuided(PathVertex v, vec3 u, float uSelect) {
+// A direction from the prepared vertex's mixture, weighted by the mixture density. u: the BSDF's
+// lobe choice and the stratified 2-D point that picks the branch (guideChosen) and the direction.
+BsdfSample sampleGuided(PathVertex v, vec3 u) {
     if (!vertexGuide.guided) return sampleVertexBsdf(v, true, u);
     BsdfSample s;
-    if (uSelect < vertexGuide.mix) {
-        vec3 local = vertexGuideSample(u);
+    vec2 point = u.yz;
+    if (guideChosen(point, vertexGuide.mix)) {
+        vec3 local = vertexGuideSample(point);
         s.wi = toLocal(toWorld(local, vertexGuide.t, vertexGuide.b, vertexGuide.normal), v.t, v.b, v.n);
         s.lobe = kLobeDiffuse;
     } else {
-        s = sampleVertexBsdf(v, true, u);
+        s = sampleVertexBsdf(v, true, vec3(u.x, point));
         if (s.lobe == kLobeNone) return s;
     }
     s.pdf = guidedDirectionPdf(v, s.wi);
@@ -245,7 +247,7 @@ bool extendPath(inout PathState st) {
     float uLayer = nextSample(st.rng);
     vec3 u = vec3(uLayer, nextSample2(st.rng));  // the direction from one stratified 2-D point
 #ifdef GUIDED
-    BsdfSample bs = sampleGuided(v, u, nextSample(st.rng));
+    BsdfSample bs = sampleGuided(v, u);
     vec4 irradiance = vertexGuide.irradiance;
 #else
     BsdfSample bs = sampleVertexBsdf(v, true, u);

@@ -71,6 +71,32 @@ INLINE void guideFinalize(INOUT_ARRAY(float, cells, kMaxGuideCells), uint m, uin
         }                                           \
     }
 
+// Sets `wi` to the local direction of the unit-square point u under the CDF read by CDF_AT: u.x
+// picks the cell, and where u.x fell within the cell's share of [0, 1), rescaled to [0, 1), is the
+// point's theta coordinate inside the cell, u.y its phi coordinate. One 2-D point makes the whole
+// direction, so the stratification of a pixel's 2-D points carries over to its directions (each
+// cell gets its share of them, spread over the cell), as it does for BSDF sampling; a cell chosen
+// by a dimension of its own would pair cells and in-cell points at random.
+#define GUIDE_SAMPLE(CDF_AT, m, n, u, wi)                                                                   \
+    {                                                                                                     \
+        uint guideCell_;                                                                                  \
+        GUIDE_FIND_CELL(CDF_AT, (m) * (n), (u).x, guideCell_)                                             \
+        float guideLow_ = guideCell_ == 0u ? 0.0f : CDF_AT(guideCell_ - 1u);                              \
+        float guideShare_ = CDF_AT(guideCell_) - guideLow_;                                               \
+        float guideIn_ = guideShare_ > 0.0f ? clamp(((u).x - guideLow_) / guideShare_, 0.0f, kOneMinusEpsilon) : 0.5f; \
+        wi = guideCellDirection(guideCell_, m, n, vec2(guideIn_, (u).y));                                \
+    }
+
+// One-sample choice between the guide (probability `mix`, 0 < mix <= 1) and the BSDF by the first
+// coordinate of a unit-square point, rescaled to [0, 1) within the branch taken: each branch then
+// gets a stratified set of points (with mix 1/2, exactly a net of half the points).
+INLINE bool guideChosen(INOUT(vec2) u, float mix) {
+    bool chosen = u.x < mix;
+    u.x = chosen ? u.x / mix : (u.x - mix) / (1.0f - mix);
+    u.x = min(max(u.x, 0.0f), kOneMinusEpsilon);
+    return chosen;
+}
+
 // Solid-angle density of local direction wi (z > 0) in cell c of probability p.
 INLINE float guideDensity(float p, uint m, uint n, vec3 wi) { return p * float(m * n) * wi.z * kInvPi; }
 
@@ -94,11 +120,11 @@ INLINE float guidePdf(IN_ARRAY(float, cdf, kMaxGuideCells), uint m, uint n, vec3
     return guideDensity(guideCellProbability(cdf, guideCell(invertCosineHemisphere(wi), m, n)), m, n, wi);
 }
 
-// Samples a local direction: u.x picks the cell, u.yz the point inside it.
-INLINE vec3 guideSample(IN_ARRAY(float, cdf, kMaxGuideCells), uint m, uint n, vec3 u) {
-    uint c;
-    GUIDE_FIND_CELL(GUIDE_ARRAY_AT, m * n, u.x, c)
-    return guideCellDirection(c, m, n, vec2(u.y, u.z));
+// Samples a local direction from the unit-square point u.
+INLINE vec3 guideSample(IN_ARRAY(float, cdf, kMaxGuideCells), uint m, uint n, vec2 u) {
+    vec3 wi;
+    GUIDE_SAMPLE(GUIDE_ARRAY_AT, m, n, u, wi)
+    return wi;
 }
 
 // The guiding cache keeps one grid per cache cell and normal bin (shared/normal_bins.glsl).

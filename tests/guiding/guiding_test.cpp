@@ -2,7 +2,9 @@
 // one, matches what it samples (chi-square), puts more samples where more flux arrives, and gives
 // every direction a non-zero density; guide-driven Russian roulette never gives a path zero odds.
 #include <cmath>
+#include <algorithm>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -58,9 +60,47 @@ TEST(Guiding, SamplingMatchesThePdf) {
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> u(0.0f, kOneMinusEpsilon);
     const auto r = test::chiSquareSphere(
-        [&](int, glm::vec3& w) { w = guideSample(g.cdf, g.m, g.n, {u(rng), u(rng), u(rng)}); return true; },
+        [&](int, glm::vec3& w) { w = guideSample(g.cdf, g.m, g.n, {u(rng), u(rng)}); return true; },
         [&](const glm::vec3& w) { return double(guidePdf(g.cdf, g.m, g.n, w)); }, 200000, 16, 32, 128);
     EXPECT_GT(r.pValue, kSignificance) << r.details;
+}
+
+// A stratified set of 2-D points stays stratified through the grid: each cell gets its share of
+// the points to within one, and inside the cell that gets the most, the points spread evenly
+// over both of its coordinates (a cell chosen by a number of its own would scatter them at random).
+TEST(Guiding, StratifiedPointsStayStratified) {
+    const Grid g = peakedGrid(4, 16, 2);
+    const uint32_t count = 4096;
+    std::vector<uint32_t> perCell(kMaxGuideCells, 0);
+    std::vector<glm::vec2> inCell[kMaxGuideCells];
+    const auto radicalInverse = [](uint32_t i) {
+        double r = 0.0, digit = 0.5;
+        for (; i != 0; i >>= 1, digit *= 0.5) r += (i & 1u) * digit;
+        return float(r);
+    };
+    for (uint32_t i = 0; i < count; ++i) {
+        // Hammersley's net: i / N against the base-2 radical inverse of i.
+        const glm::vec2 point{(float(i) + 0.5f) / float(count), radicalInverse(i)};
+        const glm::vec3 w = guideSample(g.cdf, g.m, g.n, point);
+        const glm::vec2 square = invertCosineHemisphere(w);
+        const uint32_t c = guideCell(square, g.m, g.n);
+        perCell[c] += 1;
+        inCell[c].push_back({square.x * g.m - float(c / g.n), square.y * g.n - float(c % g.n)});
+    }
+    uint32_t fullest = 0;
+    for (uint32_t c = 0; c < g.m * g.n; ++c) {
+        const double share = count * double(guideCellProbability(g.cdf, c));
+        EXPECT_NEAR(perCell[c], share, 1.01) << "cell " << c;
+        if (perCell[c] > perCell[fullest]) fullest = c;
+    }
+    const auto& points = inCell[fullest];
+    ASSERT_GE(points.size(), 256u);
+    for (int axis = 0; axis < 2; ++axis) {
+        std::vector<uint32_t> bins(8, 0);
+        for (const glm::vec2& p : points) bins[std::min(7u, uint32_t(std::clamp(p[axis], 0.0f, 1.0f) * 8.0f))] += 1;
+        for (uint32_t b = 0; b < 8; ++b)
+            EXPECT_NEAR(bins[b], points.size() / 8.0, 2.01) << "axis " << axis << " bin " << b << " of " << points.size();
+    }
 }
 
 // The chi-square test can fail: the guided sampler checked against the plain cosine pdf.
@@ -69,7 +109,7 @@ TEST(Guiding, ChiSquareRejectsTheCosinePdf) {
     std::mt19937 rng(4);
     std::uniform_real_distribution<float> u(0.0f, kOneMinusEpsilon);
     const auto r = test::chiSquareSphere(
-        [&](int, glm::vec3& w) { w = guideSample(g.cdf, g.m, g.n, {u(rng), u(rng), u(rng)}); return true; },
+        [&](int, glm::vec3& w) { w = guideSample(g.cdf, g.m, g.n, {u(rng), u(rng)}); return true; },
         [&](const glm::vec3& w) { return double(cosineHemispherePdf(w.z)); }, 300000);
     EXPECT_LT(r.pValue, 1e-6) << r.details;
 }
