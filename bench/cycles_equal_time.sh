@@ -8,7 +8,7 @@
 # own noise taken out of both. A reference of N Cycles samples is itself off by E_N = V / N (V: one
 # Cycles sample's relMSE), and every render's measured relMSE is its own error plus E_N; Cycles'
 # 256-spp error gives V = E_256 / (1/256 + 1/N), N read from the reference's JSON ("spp"). With
-# shared/refs's 8192-spp cornell-glass, E_N is about a quarter of the errors compared: average
+# shared/refs's 8192-spp cornell-glass, E_N is half the photon integrator's error at 30 s: average
 # more renders into the reference (bench/cycles_reference.sh) to make it small.
 set -euo pipefail
 peers=$1 refs=$2 T=$3 size=$4
@@ -22,6 +22,9 @@ metric() { "$peers/compare.sh" "$1" "$2" | awk -v k="$3" '$1 == k { print $2 }';
 for scene in "$@"; do
     ref="$refs/$scene.exr"
     gltf="$refs/$scene.gltf"
+    for f in "$gltf" "$ref" "$ref.json"; do
+        [ -f "$f" ] || { echo "cycles_equal_time: no $f (REFS_DIR holds SCENE.gltf, SCENE.exr and SCENE.exr.json)" >&2; exit 2; }
+    done
     declare -A err=() secs=()
     for spp in 64 256; do
         log=$(blender -b --factory-startup -P "$peers/cycles_render.py" -- "$gltf" "$out/cycles-$spp.exr" "$size" "$size" "$spp" seed=1 2>&1)

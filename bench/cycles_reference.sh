@@ -13,6 +13,9 @@ seeds=${SEEDS:-"11 12 13"}
 mkdir -p "$out/renders"
 for scene in "$@"; do
     gltf="$refs/$scene.gltf"
+    for f in "$gltf" "$refs/$scene.exr" "$refs/$scene.exr.json"; do
+        [ -f "$f" ] || { echo "cycles_reference: no $f (REFS_DIR holds SCENE.gltf, SCENE.exr and SCENE.exr.json)" >&2; exit 2; }
+    done
     read -r width height refSpp < <(python3 -c "
 import json; d = json.load(open('$refs/$scene.exr.json')); print(d['width'], d['height'], d['spp'])")
     parts=("$refs/$scene.exr") weights=("$refSpp")
@@ -22,7 +25,8 @@ import json; d = json.load(open('$refs/$scene.exr.json')); print(d['width'], d['
         if [ ! -f "$render" ]; then
             echo "$scene: Cycles, $spp spp, seed $seed ($width x $height)" >&2
             blender -b --factory-startup -P "$peers/cycles_render.py" -- "$gltf" "$render.part.exr" \
-                "$width" "$height" "$spp" seed="$seed" >"$out/renders/$scene-$seed.log" 2>&1
+                "$width" "$height" "$spp" seed="$seed" >"$out/renders/$scene-$seed.log" 2>&1 ||
+                { echo "cycles_reference: Cycles failed, see $out/renders/$scene-$seed.log" >&2; exit 1; }
             mv "$render.part.exr" "$render"
         fi
         parts+=("$render") weights+=("$spp")
