@@ -59,28 +59,25 @@ bool sampleGatherDirection(VisibleSurface s, vec3 position, bool frontFace, inou
             cdfBase = cachedGuideCdfBase(cached);
         }
     }
-    if (mix <= 0.0f) {
-        BsdfSample bs = sampleBsdf(s.bsdf, s.wo, frontFace, true, vec3(uLobe, point));
-        if (bs.lobe == kLobeNone || (bs.lobe & kLobeDelta) != 0u) return false;
-        dir = normalize(toWorld(bs.wi, s.t, s.b, s.n));
-        weight = bs.weight;
-        pdf = bs.pdf;
-        return true;
-    }
-    vec3 wi;  // local to the shading frame
-    if (guideChosen(point, mix)) {
-        wi = toLocal(toWorld(cachedGuideSample(cdfBase, gm, gn, point), cached.t, cached.b, cached.n), s.t, s.b, s.n);
+    // One evaluation of the BSDF's density and value serves both branches (lavapipe runs the code
+    // of both sides of a branch, so a second one costs every gather).
+    BsdfSample bs;
+    if (mix > 0.0f && guideChosen(point, mix)) {
+        bs.wi = toLocal(toWorld(cachedGuideSample(cdfBase, gm, gn, point), cached.t, cached.b, cached.n), s.t, s.b, s.n);
+        bs.lobe = kLobeDiffuse;
     } else {
-        BsdfSample bs = sampleBsdf(s.bsdf, s.wo, frontFace, true, vec3(uLobe, point));
-        if (bs.lobe == kLobeNone || (bs.lobe & kLobeDelta) != 0u) return false;
-        wi = bs.wi;
+        bs = sampleBsdfDirection(s.bsdf, s.wo, frontFace, true, vec3(uLobe, point));
     }
-    if (wi.z <= 0.0f) return false;
-    vec3 wiGrid = toLocal(toWorld(wi, s.t, s.b, s.n), cached.t, cached.b, cached.n);
-    pdf = mix * cachedGuidePdf(cdfBase, gm, gn, wiGrid) + (1.0f - mix) * pdfBsdf(s.bsdf, s.wo, wi);
+    // Delta lobes (and the dielectric layers, all sampled as Dirac lobes here) are not followed.
+    if (!bsdfSampleUnweighted(bs) || bs.wi.z <= 0.0f) return false;
+    pdf = pdfBsdf(s.bsdf, s.wo, bs.wi);
+    if (mix > 0.0f) {
+        vec3 wiGrid = toLocal(toWorld(bs.wi, s.t, s.b, s.n), cached.t, cached.b, cached.n);
+        pdf = mix * cachedGuidePdf(cdfBase, gm, gn, wiGrid) + (1.0f - mix) * pdf;
+    }
     if (!(pdf > 0.0f)) return false;
-    dir = normalize(toWorld(wi, s.t, s.b, s.n));
-    weight = evalBsdf(s.bsdf, s.wo, wi) * (wi.z / pdf);
+    dir = normalize(toWorld(bs.wi, s.t, s.b, s.n));
+    weight = evalBsdf(s.bsdf, s.wo, bs.wi) * (bs.wi.z / pdf);
     return true;
 }
 

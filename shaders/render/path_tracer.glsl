@@ -169,34 +169,47 @@ void prepareGuide(PathVertex v) {
     vertexGuide.normal = gnrm;
 }
 
-// The density with which sampleGuided produces local direction wi at the prepared vertex.
-float guidedDirectionPdf(PathVertex v, vec3 wi) {
-    float bsdf = pdfVertexMis(v, wi);
-    if (!vertexGuide.guided) return bsdf;
+// The density with which sampleGuided produces local direction wi at the prepared vertex, given
+// the BSDF's density there (bsdfPdf).
+float guidedMixturePdf(PathVertex v, vec3 wi, float bsdfPdf) {
+    if (!vertexGuide.guided) return bsdfPdf;
     vec3 wiGrid = toLocal(toWorld(wi, v.t, v.b, v.n), vertexGuide.t, vertexGuide.b, vertexGuide.normal);
-    return vertexGuide.mix * vertexGuidePdf(wiGrid) + (1.0f - vertexGuide.mix) * bsdf;
+    return vertexGuide.mix * vertexGuidePdf(wiGrid) + (1.0f - vertexGuide.mix) * bsdfPdf;
 }
+float guidedDirectionPdf(PathVertex v, vec3 wi) { return guidedMixturePdf(v, wi, pdfVertexMis(v, wi)); }
 
 // A direction from the prepared vertex's mixture, weighted by the mixture density. u: the BSDF's
 // lobe choice and the stratified 2-D point that picks the branch (guideChosen) and the direction.
+// Unguided vertices sample the BSDF alone, as the path tracer does. Every branch shares one
+// evaluation of the BSDF's density and value: lavapipe runs the code of both sides of a branch,
+// and a second evaluation cost every vertex. A delta lobe (a smooth clearcoat over a rough base)
+// is reached by the BSDF branch alone, with probability 1 - mix.
 BsdfSample sampleGuided(PathVertex v, vec3 u) {
-    if (!vertexGuide.guided) return sampleVertexBsdf(v, true, u);
+    float mix = vertexGuide.guided ? vertexGuide.mix : 0.0f;
     BsdfSample s;
     vec2 point = u.yz;
-    if (guideChosen(point, vertexGuide.mix)) {
+    if (mix > 0.0f && guideChosen(point, mix)) {
         vec3 local = vertexGuideSample(point);
         s.wi = toLocal(toWorld(local, vertexGuide.t, vertexGuide.b, vertexGuide.normal), v.t, v.b, v.n);
         s.lobe = kLobeDiffuse;
+        s.pdf = 0.0f;
+        s.weight = vec3(0.0f);
     } else {
-        s = sampleVertexBsdf(v, true, vec3(u.x, point));
-        if (s.lobe == kLobeNone) return s;
+        s = sampleBsdfDirection(v.bsdf, v.wo, v.hit.frontFace, true, vec3(u.x, point));
     }
-    s.pdf = guidedDirectionPdf(v, s.wi);
+    s = keepOnSurfaceSide(v, s);
+    if (!bsdfSampleUnweighted(s)) {
+        if ((s.lobe & kLobeDelta) != 0u) s.weight /= 1.0f - mix;
+        return s;
+    }
+    // The density of the opaque lobes, as sampleBsdf's (misPdfOfSample adds a rough layer's for MIS;
+    // guided vertices have none).
+    s.pdf = guidedMixturePdf(v, s.wi, pdfVertexBsdf(v, s.wi));
     if (s.wi.z <= 0.0f || s.pdf <= 0.0f) {
         s.lobe = kLobeNone;
         return s;
     }
-    s.weight = evalVertexBsdf(v, s.wi) * (s.wi.z / s.pdf);
+    s.weight = evalVertexBsdf(v, s.wi) * s.wi.z / s.pdf;
     return s;
 }
 

@@ -156,17 +156,22 @@ bool traceVertex(Ray ray, out PathVertex v) {
     return true;
 }
 
+// The sample, or none (kLobeNone) where its direction leaves on the geometric side its lobe does
+// not: a direction the shading normal allows but the geometry does not (see sampleVertexBsdf).
+BsdfSample keepOnSurfaceSide(PathVertex v, BsdfSample bs) {
+    vec3 side = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
+    bool reflects = (bs.lobe & kLobeTransmission) == 0u;
+    if (bs.lobe != kLobeNone && (dot(toWorld(bs.wi, v.t, v.b, v.n), side) > 0.0f) != reflects) bs.lobe = kLobeNone;
+    return bs;
+}
+
 // Samples the vertex's BSDF for the next direction (local). `radiance`: camera-path and gather
 // throughput (refraction scales it by eta^2), not photons and importons (shared/bsdf.glsl).
 // A direction the shading normal (interpolated or normal-mapped) allows but the geometry does not
 // (a reflection below the surface, a transmission that stays on the arrival side) is dropped
 // (kLobeNone), so shading normals never carry camera paths, photons or importons through a surface.
 BsdfSample sampleVertexBsdf(PathVertex v, bool radiance, vec3 u) {
-    BsdfSample bs = sampleBsdf(v.bsdf, v.wo, v.hit.frontFace, radiance, u);
-    vec3 side = v.hit.frontFace ? v.hit.geometricNormal : -v.hit.geometricNormal;
-    bool reflects = (bs.lobe & kLobeTransmission) == 0u;
-    if (bs.lobe != kLobeNone && (dot(toWorld(bs.wi, v.t, v.b, v.n), side) > 0.0f) != reflects) bs.lobe = kLobeNone;
-    return bs;
+    return keepOnSurfaceSide(v, sampleBsdf(v.bsdf, v.wo, v.hit.frontFace, radiance, u));
 }
 
 // The vertex's BSDF (f, without the cosine) towards local wi.

@@ -588,8 +588,12 @@ INLINE BsdfSample sampleRoughDielectricLayer(BsdfParams p, vec3 wo, bool enterin
     return s;
 }
 
-// Samples the whole BSDF: u.x picks the layer (and, rescaled, the opaque lobe), u.yz the direction.
-INLINE BsdfSample sampleBsdf(BsdfParams p, vec3 wo, bool entering, bool radiance, vec3 u) {
+// sampleBsdf's choice of lobe and direction: u.x picks the layer (and, rescaled, the opaque lobe),
+// u.yz the direction. Delta lobes and the transmission layers come back whole; a sample of an
+// opaque non-delta lobe comes back with its direction only (bsdfSampleUnweighted): sampleBsdf
+// weighs it by the density of all the opaque lobes, a caller sampling a mixture of the BSDF and
+// something else (the guided path tracer) by the mixture's, with one evaluation for both branches.
+INLINE BsdfSample sampleBsdfDirection(BsdfParams p, vec3 wo, bool entering, bool radiance, vec3 u) {
     if (u.x < p.transmission) {
         if (dielectricIsDelta(p)) return sampleDielectric(p, wo, entering, radiance, vec2(u.y, u.z));
         return sampleRoughDielectricLayer(p, wo, entering, radiance,
@@ -643,10 +647,19 @@ INLINE BsdfSample sampleBsdf(BsdfParams p, vec3 wo, bool entering, bool radiance
     } else {
         return s;
     }
-    if (s.wi.z <= 0.0f) {
-        s.lobe = kLobeNone;
-        return s;
-    }
+    if (s.wi.z <= 0.0f) s.lobe = kLobeNone;
+    return s;
+}
+
+// A sample of an opaque non-delta lobe, whose pdf and weight are still to be set.
+INLINE bool bsdfSampleUnweighted(BsdfSample s) {
+    return s.lobe != kLobeNone && (s.lobe & (kLobeDelta | kLobeTransmission | kLobeLayer)) == 0u;
+}
+
+// Samples the whole BSDF: u.x picks the layer (and, rescaled, the opaque lobe), u.yz the direction.
+INLINE BsdfSample sampleBsdf(BsdfParams p, vec3 wo, bool entering, bool radiance, vec3 u) {
+    BsdfSample s = sampleBsdfDirection(p, wo, entering, radiance, u);
+    if (!bsdfSampleUnweighted(s)) return s;
     // Every non-delta lobe could have produced wi: weight by the full mixture pdf (delta lobes
     // are excluded, they have probability zero of producing this direction).
     s.pdf = pdfBsdf(p, wo, s.wi);
