@@ -10,6 +10,7 @@
 
 #include "support/chi_square.h"
 #include "shared/guiding.glsl"
+#include "shared/halton.glsl"
 
 namespace vkp {
 namespace {
@@ -73,14 +74,10 @@ TEST(Guiding, StratifiedPointsStayStratified) {
     const uint32_t count = 4096;
     std::vector<uint32_t> perCell(kMaxGuideCells, 0);
     std::vector<glm::vec2> inCell[kMaxGuideCells];
-    const auto radicalInverse = [](uint32_t i) {
-        double r = 0.0, digit = 0.5;
-        for (; i != 0; i >>= 1, digit *= 0.5) r += (i & 1u) * digit;
-        return float(r);
-    };
     for (uint32_t i = 0; i < count; ++i) {
-        // Hammersley's net: i / N against the base-2 radical inverse of i.
-        const glm::vec2 point{(float(i) + 0.5f) / float(count), radicalInverse(i)};
+        // Hammersley's net: i / N against the base-2 radical inverse of i (its digits scrambled by
+        // a fixed permutation per position, which keeps the net).
+        const glm::vec2 point{(float(i) + 0.5f) / float(count), scrambledRadicalInverse(2u, i, 0u)};
         const glm::vec3 w = guideSample(g.cdf, g.m, g.n, point);
         const glm::vec2 square = invertCosineHemisphere(w);
         const uint32_t c = guideCell(square, g.m, g.n);
