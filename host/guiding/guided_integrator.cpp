@@ -1,5 +1,7 @@
 #include "guiding/guided_integrator.h"
 
+#include <algorithm>
+
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
@@ -25,17 +27,28 @@ GuidedIntegrator::GuidedIntegrator(const GpuScene& scene, const GuideSettings& s
 void GuidedIntegrator::prepare(const Frame& frame, const Film& film) {
     m_guide = std::make_unique<PathGuide>(m_scene, m_settings, frame.seed, &frame.control);
     m_stopReason = m_guide->stopReason();
+    m_firstPixel = frame.pixelRange().first;
     m_recorder = std::make_unique<PathSampleRecorder>(
         m_scene, frame, film, m_settings.cache ? kMaxGuidedSamplesPerDispatch : kMaxPerVertexGuidedSamplesPerDispatch,
         m_settings.roulette ? gpu::kPathFlagGuideRoulette : 0u,
         m_guide->shader(), m_guide->buffers());
 }
 
+// With learning, the samples of one iteration (guide_learning.h) go in dispatches of their own,
+// the grids updated before each iteration's first.
 void GuidedIntegrator::recordSamples(VkCommandBuffer cmd, uint32_t first, uint32_t count) {
-    m_recorder->record(cmd, first, count, &m_guide->params());
+    const GuideLearning* learning = m_guide->learning();
+    for (uint32_t sample = first; sample < first + count;) {
+        const uint32_t end = learning ? std::min(first + count, GuideLearning::nextIterationStart(sample)) : first + count;
+        if (learning) learning->recordBefore(cmd, sample);
+        m_recorder->record(cmd, sample, end - sample, &m_guide->params());
+        sample = end;
+    }
 }
 
 void GuidedIntegrator::recordSamplePart(VkCommandBuffer cmd, uint32_t sample, vk::ItemRange part) {
+    if (const GuideLearning* learning = m_guide->learning(); learning && part.first == m_firstPixel)
+        learning->recordBefore(cmd, sample);
     m_recorder->recordPart(cmd, sample, part, &m_guide->params());
 }
 

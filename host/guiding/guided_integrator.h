@@ -36,6 +36,7 @@ private:
     std::unique_ptr<PathGuide> m_guide;
     std::unique_ptr<PathSampleRecorder> m_recorder;
     std::string m_stopReason;  // a photon pass stopped early (render/render_control.h)
+    uint64_t m_firstPixel = 0;  // the frame's window's first pixel: a sample's first part starts there
 };
 
 // --integrator guided and its "guided path tracer" options.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <numbers>
 #include <string_view>
 
 #include <cstdio>
@@ -72,6 +73,11 @@ void GuideSettings::addOptions(CLI::App& group, bool sampling) {
                      "pixel's (adjoint-driven); off: by the path's throughput")
         ->transform(oneOf(onOff))
         ->option_text(choiceText(onOff, roulette));
+    group.add_option("--guide-learn", learn,
+                     "on: refine the guiding cache's grids from the path tracer's own samples, at every doubling of "
+                     "the samples; off: the photons' grids throughout (needs --guide-cache on)")
+        ->transform(oneOf(onOff))
+        ->option_text(choiceText(onOff, learn));
     group.add_option("--guide-mix", mix, "Probability of sampling the guiding grid rather than the BSDF (1: the paper's "
                                          "method)")
         ->capture_default_str();
@@ -85,6 +91,7 @@ void GuideSettings::report(Stats& stats) const {
     stats.set("settings.guide.cache", cache);
     stats.set("settings.guide.roulette", roulette);
     stats.set("settings.guide.adapt", adaptPhotons);
+    stats.set("settings.guide.learn", learn && cache);
 }
 
 PathGuide::PathGuide(const GpuScene& scene, const GuideSettings& g, uint32_t seed, const RenderControl* control) {
@@ -119,11 +126,17 @@ PathGuide::PathGuide(const GpuScene& scene, const GuideSettings& g, uint32_t see
         });
         m_params = m_cache->params();
         m_shader = "guided_cached_pathtrace.comp";
+        if (g.learn) {
+            const double meanRadiance = arrays.totalLightPower / (std::numbers::pi * area);
+            m_learning = std::make_unique<GuideLearning>(context, *m_cache, meanRadiance);
+            m_shader = "guided_learning_pathtrace.comp";
+        }
     }
     m_seconds = secondsSince(start);
 }
 
 std::vector<const vk::Buffer*> PathGuide::buffers() const {
+    if (m_learning) return {&m_cache->cells(), &m_cache->cdfs(), &m_cache->irradiance(), &m_learning->sums()};
     if (m_cache) return {&m_cache->cells(), &m_cache->cdfs(), &m_cache->irradiance()};
     return {&m_map->grid().cellStart(), &m_map->grid().photons()};
 }
@@ -133,7 +146,7 @@ void PathGuide::report(Stats& stats) const {
     stats.set("photons.globalStored", m_mapStats.stored);
     stats.add("photons.dropped", m_mapStats.dropped);
     stats.add("photons.seconds", m_seconds);
-    stats.add("photons.mapBytes", m_map->bytes() + (m_cache ? m_cache->bytes() : 0));
+    stats.add("photons.mapBytes", m_map->bytes() + (m_cache ? m_cache->bytes() : 0) + (m_learning ? m_learning->bytes() : 0));
     stats.set("settings.guide.searchRadius", m_searchRadius);
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gpu_scene/gpu_scene.h"
+#include "guiding/guide_learning.h"
 #include "photon/guide_cache.h"
 #include "photon/photon_map.h"
 #include "render/stats.h"
@@ -27,11 +28,12 @@ struct GuideSettings {
     bool cache = true;                // --guide-cache: grids per cache cell and normal bin, built once
     uint32_t adaptPhotons = 0;        // --guide-adapt: coarsen cache grids to this many photons per cell (0: off)
     bool roulette = false;            // --guide-rr: Russian roulette by the guide's irradiance estimate
+    bool learn = true;                // --guide-learn: refine the cache's grids from the path tracer's samples
 
     // Throws InputError naming the flag of a value the guided path tracer cannot use.
     void check() const;
     // Registers --guide-photons, --guide-k and --guide-grid, and with `sampling` also --guide-mix,
-    // --guide-cache, --guide-adapt and --guide-rr, in `group`, writing into this object.
+    // --guide-cache, --guide-adapt, --guide-rr and --guide-learn, in `group`, writing into this object.
     void addOptions(CLI::App& group, bool sampling = true);
     // "settings.guide.*".
     void report(Stats& stats) const;
@@ -48,6 +50,8 @@ public:
     std::vector<const vk::Buffer*> buffers() const;
     const gpu::GuideParams& params() const { return m_params; }
     const PhotonMap& map() const { return *m_map; }
+    // The cache's learning from the samples (--guide-learn on with the cache), or null.
+    const GuideLearning* learning() const { return m_learning.get(); }
     // Largest search radius of a k-nearest gather in the map.
     float searchRadius() const { return m_searchRadius; }
     // "photons.*": photon counts, bytes and seconds; "settings.guide.searchRadius".
@@ -56,6 +60,7 @@ public:
 private:
     std::unique_ptr<PhotonMap> m_map;
     std::unique_ptr<GuideCache> m_cache;
+    std::unique_ptr<GuideLearning> m_learning;
     gpu::GuideParams m_params{};
     PhotonMapStats m_mapStats;
     double m_seconds = 0.0;

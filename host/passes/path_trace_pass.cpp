@@ -10,7 +10,8 @@ namespace {
 // The interface of `shader`, one of the path tracer kernels.
 vk::KernelInterface pathTraceInterface(const std::string& shader) {
     for (const vk::KernelInterface& k : {vk::interfaceOf<gpu::PathTraceKernel>(), vk::interfaceOf<gpu::GuidedPathTraceKernel>(),
-                                         vk::interfaceOf<gpu::GuidedCachedPathTraceKernel>()})
+                                         vk::interfaceOf<gpu::GuidedCachedPathTraceKernel>(),
+                                         vk::interfaceOf<gpu::GuidedLearningPathTraceKernel>()})
         if (k.shader == shader) return k;
     throw RuntimeError(fmt::format("{}: not a path tracer kernel (shared/kernels/path_trace.glsl)", shader));
 }

@@ -37,6 +37,9 @@ layout(std430, set = 0, binding = kPathTraceRasterDirectBinding) readonly buffer
 #define GUIDE_CACHE_CDFS_BINDING kPathTraceGuideCdfsBinding
 #include "guiding/guide_cache_access.glsl"
 layout(std430, set = 0, binding = kPathTraceGuideIrradianceBinding) readonly buffer CacheIrradiance { vec4 cacheIrradiance[]; };
+#ifdef GUIDE_LEARN
+#define GUIDE_LEARN_SUMS_BINDING kPathTraceGuideLearnBinding
+#endif
 #else
 #define PHOTON_GRID_BINDING kPathTraceGuideBinding
 #include "photon/photon_gather.glsl"
@@ -219,6 +222,9 @@ vec3 rouletteReflectance(BsdfParams bsdf, vec3 wo) {
     vec3 specular = specularLobeIsDelta(bsdf) ? vec3(0.0f) : specularFresnel(bsdf, wo.z) * (kInvPi * (1.0f - bsdf.transmission));
     return diffuseReflectance(bsdf, wo) + specular;
 }
+#ifdef GUIDE_LEARN
+#include "guiding/guide_learning.glsl"
+#endif
 #endif
 
 // Extends the path by one vertex: emission (MIS-weighted), next-event estimation, BSDF sampling
@@ -230,6 +236,9 @@ bool extendPath(inout PathState st) {
         // Escaped: the environment light (none when the scene has no environment).
         st.radiance += st.throughput * escapedRadiance(params.lightCount, st.ray.dir, useNee && !st.lastDelta, st.lastPdf,
                                                         st.lastPosition, st.lastNormal);
+#ifdef GUIDE_LEARN
+        learnSetBase(st.radiance);
+#endif
         return false;
     }
     st.throughput *= v.transmittance;
@@ -243,6 +252,9 @@ bool extendPath(inout PathState st) {
             st.radiance += st.throughput * le * weight;
         }
     }
+#ifdef GUIDE_LEARN
+    learnSetBase(st.radiance);  // what arrives from here on, the sampled direction brought by further bounces
+#endif
     if (st.depth == params.maxDepth) return false;
 #ifdef GUIDED
     prepareGuide(v);  // before next-event estimation, whose MIS weight reads the vertex's grid
@@ -269,6 +281,9 @@ bool extendPath(inout PathState st) {
     if (bs.lobe == kLobeNone) return false;
     vec3 arriving = st.throughput;
     st.throughput *= bs.weight;
+#ifdef GUIDE_LEARN
+    learnNoteVertex(v, bs, st.throughput, st.radiance);  // before the roulette, whose survivors' light then counts 1/q
+#endif
     st.lastDelta = isDeltaForMis(bs);
     st.lastPdf = st.lastDelta ? bs.pdf : misPdfOfSample(v, bs);
     st.lastPosition = v.hit.position;
@@ -309,10 +324,16 @@ void main() {
     uint done = 0u;
     uint segments = 0u;
     PathState st = startPath(params.firstSample, streamSeed, px, py);
+#ifdef GUIDE_LEARN
+    learnBeginPath();
+#endif
     while (done < params.sampleCount) {
         segments += 1u;
         if (extendPath(st)) continue;
         vec3 l = st.radiance;
+#ifdef GUIDE_LEARN
+        learnEndPath(l);
+#endif
         if (addRaster) l += rasterDirect[pixel].rgb;
         if (any(isnan(l)) || any(isinf(l))) {
             atomicAdd(counters[kPathTraceCounterNonFinite], 1u);

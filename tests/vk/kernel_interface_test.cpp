@@ -13,6 +13,7 @@
 #include "shared/kernels/deposit.glsl"
 #include "shared/kernels/grid_build.glsl"
 #include "shared/kernels/guide_cache.glsl"
+#include "shared/kernels/guide_learn.glsl"
 #include "shared/kernels/importons.glsl"
 #include "shared/kernels/path_trace.glsl"
 #include "shared/kernels/photon_estimates.glsl"
@@ -55,7 +56,8 @@ template <typename K> std::string creationError() {
 std::vector<vk::KernelInterface> everyKernel() {
     using namespace gpu;
     return {vk::interfaceOf<PathTraceKernel>(), vk::interfaceOf<GuidedPathTraceKernel>(),
-            vk::interfaceOf<GuidedCachedPathTraceKernel>(), vk::interfaceOf<PhotonTraceKernel>(),
+            vk::interfaceOf<GuidedCachedPathTraceKernel>(), vk::interfaceOf<GuidedLearningPathTraceKernel>(),
+            vk::interfaceOf<GuideLearnUpdateKernel>(), vk::interfaceOf<PhotonTraceKernel>(),
             vk::interfaceOf<ImportonTraceKernel>(), vk::interfaceOf<ImportanceSplatKernel>(),
             vk::interfaceOf<ImportanceLookupKernel>(), vk::interfaceOf<PhotonDepositKernel>(),
             vk::interfaceOf<DepositRedistributeKernel>(), vk::interfaceOf<GridCountKernel>(),

@@ -18,6 +18,8 @@ const uint kPathTraceGuideBinding = kSceneBindingCount + 3u;
 const uint kPathTraceGuideCellsBinding = kSceneBindingCount + 3u;
 const uint kPathTraceGuideCdfsBinding = kSceneBindingCount + 4u;
 const uint kPathTraceGuideIrradianceBinding = kSceneBindingCount + 5u;
+// guided_learning_pathtrace.comp: the cache's bindings and the sums it learns (guide_learn.glsl).
+const uint kPathTraceGuideLearnBinding = kSceneBindingCount + 6u;
 
 // Slots of the counter buffer.
 const uint kPathTraceCounterNonFinite = 0u;     // samples that produced a non-finite value (dropped)
@@ -58,6 +60,12 @@ struct GuidedCachedPathTraceKernel {
     using Push = GuidedPathTraceParams;
 };
 
+struct GuidedLearningPathTraceKernel {
+    static constexpr const char* kShader = "guided_learning_pathtrace.comp";
+    static constexpr uint32_t kBindingCount = kPathTraceGuideLearnBinding + 1u;
+    static constexpr uint32_t kGroupSize = kPathTraceGroupSize;
+    using Push = GuidedPathTraceParams;
+};
 }  // namespace vkp::gpu
 #endif
 #endif
