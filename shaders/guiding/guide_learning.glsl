@@ -24,7 +24,12 @@ struct GuideLearnRecord {
 };
 const float kGuideLearnCap = 8.0f;
 const float kGuideLearnMinIrradiance = 0.05f;
-GuideLearnRecord learnRecords[kGuideLearnVertices];
+// The path's records, newest first, in variables rather than an array: lavapipe keeps an array
+// indexed by a variable in memory, per lane, and its reads and writes cost more than the shifts.
+GuideLearnRecord learnRecord0;
+GuideLearnRecord learnRecord1;
+GuideLearnRecord learnRecord2;
+GuideLearnRecord learnRecord3;
 uint learnRecordCount;
 bool learnBasePending;  // the last record's base waits for the next vertex's emission
 
@@ -50,7 +55,10 @@ void learnNoteVertex(PathVertex v, BsdfSample bs, vec3 throughput, vec3 radiance
     r.weight = inverse * (bs.wi.z / bs.pdf);
     r.cap = kGuideLearnCap * max(luminance(vertexGuide.irradiance.rgb) * learnHeader.x,
                                  kPi * kGuideLearnMinIrradiance * kGuideLearnFixedPoint);
-    learnRecords[learnRecordCount] = r;
+    learnRecord3 = learnRecord2;
+    learnRecord2 = learnRecord1;
+    learnRecord1 = learnRecord0;
+    learnRecord0 = r;
     learnRecordCount += 1u;
     learnBasePending = true;
 }
@@ -59,7 +67,7 @@ void learnNoteVertex(PathVertex v, BsdfSample bs, vec3 throughput, vec3 radiance
 // the light the sampled direction brought from further bounces.
 void learnSetBase(vec3 radiance) {
     if (!learnBasePending) return;
-    learnRecords[learnRecordCount - 1u].base = radiance;
+    learnRecord0.base = radiance;
     learnBasePending = false;
 }
 
@@ -70,16 +78,21 @@ void learnAdd(uint slot, uint value) {
     if (old + value < old) atomicAdd(learned[slot].y, 1u);
 }
 
+// Adds what arrived along record r's direction, the path having ended with `radiance`.
+void learnSplat(GuideLearnRecord r, vec3 radiance, bool finite) {
+    float value = luminance(max(radiance - r.base, vec3(0.0f)) * r.weight) * learnHeader.x;
+    if (finite && value > 0.0f) learnAdd(r.slot, uint(min(min(value, r.cap), kGuideLearnMaxSample - 1.0f) + 0.5f));
+    uint grid = r.slot / kGuideLearnStride;
+    learnAdd(grid * kGuideLearnStride + kGuideLearnCountSlot, 1u);
+}
+
 // The path has ended with `radiance`: each noted vertex adds what arrived along its direction.
 void learnEndPath(vec3 radiance) {
     bool finite = !any(isnan(radiance)) && !any(isinf(radiance));
-    for (uint i = 0u; i < learnRecordCount; ++i) {
-        GuideLearnRecord r = learnRecords[i];
-        float value = luminance(max(radiance - r.base, vec3(0.0f)) * r.weight) * learnHeader.x;
-        if (finite && value > 0.0f) learnAdd(r.slot, uint(min(min(value, r.cap), kGuideLearnMaxSample - 1.0f) + 0.5f));
-        uint grid = r.slot / kGuideLearnStride;
-        learnAdd(grid * kGuideLearnStride + kGuideLearnCountSlot, 1u);
-    }
+    if (learnRecordCount > 0u) learnSplat(learnRecord0, radiance, finite);
+    if (learnRecordCount > 1u) learnSplat(learnRecord1, radiance, finite);
+    if (learnRecordCount > 2u) learnSplat(learnRecord2, radiance, finite);
+    if (learnRecordCount > 3u) learnSplat(learnRecord3, radiance, finite);
     learnBeginPath();
 }
 

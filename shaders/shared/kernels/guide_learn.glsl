@@ -22,7 +22,7 @@ const uint kGuideLearnCountSlot = 64u;
 
 // Path vertices per path whose incident radiance is learned (the first guided ones): further
 // bounces carry little of a pixel's light and each costs a record in every invocation.
-const uint kGuideLearnVertices = 4u;
+const uint kGuideLearnVertices = 4u;  // guide_learning.glsl keeps them in four variables
 
 // A sample adds luminance(incident radiance) * cos / pdf, in units of the scene's mean radiance
 // (the header's scale: emitted power / (pi * surface area)) times kGuideLearnFixedPoint, rounded
