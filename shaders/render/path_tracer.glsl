@@ -59,6 +59,8 @@ struct PathState {
     vec3 lastPosition; // the last vertex and its shading normal, where MIS recomputes the light pdf
     vec3 lastNormal;
     float reference;   // guide-driven Russian roulette: the pixel's estimated value (< 0: not yet)
+    float unguidedScale; // product over the path's guided vertices of mixture / BSDF density: the
+                         // throughput times it is what BSDF sampling would have carried (roulette)
     uint depth;
     Sampler rng;
 };
@@ -77,6 +79,7 @@ PathState startPath(uint sampleIndex, uint streamSeed, uint px, uint py) {
     st.lastPosition = vec3(0.0f);
     st.lastNormal = vec3(0.0f);
     st.reference = -1.0f;
+    st.unguidedScale = 1.0f;
     st.depth = 0u;
     return st;
 }
@@ -187,7 +190,10 @@ float guidedDirectionPdf(PathVertex v, vec3 wi) { return guidedMixturePdf(v, wi,
 // evaluation of the BSDF's density and value: lavapipe runs the code of both sides of a branch,
 // and a second evaluation cost every vertex. A delta lobe (a smooth clearcoat over a rough base)
 // is reached by the BSDF branch alone, with probability 1 - mix.
-BsdfSample sampleGuided(PathVertex v, vec3 u) {
+// densityRatio: the sample's mixture density over the BSDF's (1 at unguided vertices), which
+// turns the guided throughput back into the one BSDF sampling would have carried.
+BsdfSample sampleGuided(PathVertex v, vec3 u, out float densityRatio) {
+    densityRatio = 1.0f;
     float mix = vertexGuide.guided ? vertexGuide.mix : 0.0f;
     BsdfSample s;
     vec2 point = u.yz;
@@ -202,12 +208,17 @@ BsdfSample sampleGuided(PathVertex v, vec3 u) {
     }
     s = keepOnSurfaceSide(v, s);
     if (!bsdfSampleUnweighted(s)) {
-        if ((s.lobe & kLobeDelta) != 0u) s.weight /= 1.0f - mix;
+        if ((s.lobe & kLobeDelta) != 0u) {
+            s.weight /= 1.0f - mix;
+            densityRatio = 1.0f - mix;
+        }
         return s;
     }
     // The density of the opaque lobes, as sampleBsdf's (misPdfOfSample adds a rough layer's for MIS;
     // guided vertices have none).
-    s.pdf = guidedMixturePdf(v, s.wi, pdfVertexBsdf(v, s.wi));
+    float bsdfPdf = pdfVertexBsdf(v, s.wi);
+    s.pdf = guidedMixturePdf(v, s.wi, bsdfPdf);
+    if (bsdfPdf > 0.0f) densityRatio = s.pdf / bsdfPdf;
     if (s.wi.z <= 0.0f || s.pdf <= 0.0f) {
         s.lobe = kLobeNone;
         return s;
@@ -226,6 +237,14 @@ vec3 rouletteReflectance(BsdfParams bsdf, vec3 wo) {
 #include "guiding/guide_learning.glsl"
 #endif
 #endif
+
+// Russian roulette by the throughput (rouletteSurvival, shared/kernels/path_trace.glsl). The guided
+// tracer uses the throughput BSDF sampling would have carried (unguidedScale), as Cycles does with
+// its guiding: a direction sent towards bright light has a low throughput because its density is
+// high, and its path would otherwise end more often than one sent where little light comes from.
+float throughputSurvival(PathState st) {
+    return rouletteSurvival(st.depth, max(st.throughput.r, max(st.throughput.g, st.throughput.b)) * st.unguidedScale);
+}
 
 // Extends the path by one vertex: emission (MIS-weighted), next-event estimation, BSDF sampling
 // and Russian roulette. Returns false when the path has ended.
@@ -272,7 +291,9 @@ bool extendPath(inout PathState st) {
     float uLayer = nextSample(st.rng);
     vec3 u = vec3(uLayer, nextSample2(st.rng));  // the direction from one stratified 2-D point
 #ifdef GUIDED
-    BsdfSample bs = sampleGuided(v, u);
+    float densityRatio;
+    BsdfSample bs = sampleGuided(v, u, densityRatio);
+    st.unguidedScale *= densityRatio;
     vec4 irradiance = vertexGuide.irradiance;
 #else
     BsdfSample bs = sampleVertexBsdf(v, true, u);
@@ -291,16 +312,15 @@ bool extendPath(inout PathState st) {
     spawnRay(v, bs, st.ray);
 
     // Russian roulette: by the guide's estimate where there is one and --guide-rr is on (guiding.glsl),
-    // else after a few bounces, survival by the throughput's largest component.
-    float survive = 1.0f;
+    // else by the throughput (throughputSurvival).
+    float survive = throughputSurvival(st);
 #ifdef GUIDED
     if ((params.flags & kPathFlagGuideRoulette) != 0u && irradiance.w > 0.0f) {
         float expected = luminance(arriving * rouletteReflectance(v.bsdf, v.wo) * irradiance.rgb);
         if (st.reference < 0.0f) st.reference = luminance(st.radiance) + expected;
         survive = guideSurvival(expected, st.reference);
-    } else
+    }
 #endif
-    if (st.depth >= 3u) survive = min(max(st.throughput.r, max(st.throughput.g, st.throughput.b)), 0.95f);
     if (survive < 1.0f) {
         if (uRoulette >= survive) return false;
         st.throughput /= survive;
