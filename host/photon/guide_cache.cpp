@@ -7,14 +7,16 @@
 namespace vkp {
 namespace {
 
-// Cache cells are this many times the even-spread radius of k guiding photons.
-constexpr float kCacheCellFactor = 3.0f;
+// Cache cells are this many times the even-spread radius of k guiding photons: about 36k/pi
+// photons on a flat cell (docs/benchmarks.md, "Guiding cache cells of six radii").
+constexpr float kCacheCellFactor = 6.0f;
 
 PhotonGridSettings cacheGrid(float cellSize, uint32_t tableSize, uint32_t rejectedFlags) {
     PhotonGridSettings s;
     s.cellSize = cellSize;
     s.tableSize = tableSize;
     s.rejectedFlags = rejectedFlags;
+    s.sortBuckets = false;  // the cache build's sums do not depend on the photons' order
     return s;
 }
 

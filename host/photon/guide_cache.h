@@ -47,8 +47,8 @@ private:
 // `rejectedFlags` photons, sized for `guidePhotons` of them spread over the scene's `area` with
 // `k` photons per grid (params.gridSize, params.grid.photonPower as for the constructor): cells
 // kCacheCellFactor times the radius of a disk that holds k of them at that density, about
-// 9k/pi photons on a flat cell. Grid noise, not spatial detail, limits the cache
-// (docs/benchmarks.md: factors 1 to 4 measured). Recorded by the caller.
+// 36k/pi photons on a flat cell. Grid noise, not spatial detail, limits the cache
+// (docs/benchmarks.md: factors 1.5 to 12 measured). Recorded by the caller.
 std::unique_ptr<GuideCache> makeGuideCache(vk::Context& context, const vk::SegmentedBuffer& gridPhotons, uint64_t stored,
                                            uint64_t guidePhotons, uint32_t k, double area, const gpu::GuideParams& params,
                                            uint32_t rejectedFlags);

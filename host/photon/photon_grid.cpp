@@ -111,8 +111,10 @@ void PhotonGrid::record(VkCommandBuffer cmd) const {
     vk::transferToComputeBarrier(cmd);
     m_scatter.record(cmd, m_params.slotCount, m_params);
     vk::computeBarrier(cmd);
-    m_sortCells.record(cmd, tableSize(), m_params);
-    vk::computeBarrier(cmd);
+    if (m_settings.sortBuckets) {
+        m_sortCells.record(cmd, tableSize(), m_params);
+        vk::computeBarrier(cmd);
+    }
     m_copy.record(cmd, m_params.slotCount, m_params);
 }
 

@@ -22,6 +22,11 @@ struct PhotonGridSettings {
     uint32_t requiredFlags = 0;   // kPhoton* flags a photon must carry to enter the map
     uint32_t rejectedFlags = 0;   // flags that keep it out
     uint32_t tableSize = 0;       // buckets (a power of two); 0: from the slot count
+    // Sort each bucket by slot, so sums over a bucket come out the same on every run. Without it a
+    // bucket's photons are in the order the scatter's atomics placed them, which varies: only for
+    // readers whose results do not depend on it (the guiding cache). The sort runs one invocation
+    // per bucket and passes lavapipe's loop budget in buckets of thousands of photons.
+    bool sortBuckets = true;
 };
 
 class PhotonGrid {

@@ -3,7 +3,11 @@
 // normals fall in the bin, in the bin axis's frame, weighted by flux (the BRDF is left out: exact
 // for diffuse surfaces, and the BSDF half of the mixture covers glossy ones), and stores its CDF.
 // Direct photons are left out. The bucket's cell is stored so lookups can tell it from other
-// cells hashed to the same bucket. For guide-driven Russian roulette it also stores the grid's
+// cells hashed to the same bucket: of the cells in the bucket, the least (x, then y, then z).
+// The cache's grid leaves its buckets unsorted (a sort per bucket passes lavapipe's loop budget in
+// cells of hundreds to thousands of photons), so nothing here may depend on the photons' order:
+// the owner cell is a minimum and the sums are fixed-point integers (kCacheFixedPoint units of
+// relative power), which add up the same in any order. For guide-driven Russian roulette it also stores the grid's
 // indirect irradiance: the photons' flux over the area they cover in the bin's plane (their
 // bounding rectangle, each side widened by the range's expected shortfall for that many uniform
 // points, (count + 1) / (count - 1), and kept between a quarter and the whole cell edge), and the
@@ -27,6 +31,16 @@ layout(std430, set = 0, binding = kGuideCacheIrradianceBinding) writeonly buffer
 
 layout(push_constant) uniform Push { GuideParams guide; };
 
+const float kCacheFixedPoint = 4096.0f;  // 1/4096 of a photon's relative power: sums to 2^20 photons
+
+bool cellBefore(ivec3 a, ivec3 b) {
+    if (a.x != b.x) return a.x < b.x;
+    if (a.y != b.y) return a.y < b.y;
+    return a.z < b.z;
+}
+
+uint fixedPoint(float relativePower) { return uint(max(relativePower, 0.0f) * kCacheFixedPoint + 0.5f); }
+
 void buildCacheCell() {
     uint index = gl_GlobalInvocationID.x;
     uint bucket = index / kNormalBins;
@@ -36,34 +50,44 @@ void buildCacheCell() {
     uint gn = (guide.gridSize >> 8u) & 0xffu;
     uint begin = cellStart[bucket];
     uint end = cellStart[bucket + 1u];
-    ivec3 cell = begin < end ? gridCell(PHOTON_AT(gridPhotonTable, begin).position, guide.grid.invCellSize) : ivec3(0);
+    uint visited = 0u;  // fewer than the cell holds twice when lavapipe's loop budget cut a loop
+    ivec3 cell = ivec3(0);
+    for (uint i = begin; i < end; ++i) {
+        visited += 1u;
+        ivec3 c = gridCell(PHOTON_AT(gridPhotonTable, i).position, guide.grid.invCellSize);
+        if (i == begin || cellBefore(c, cell)) cell = c;
+    }
     if (bin == 0u) cacheCells[bucket] = ivec4(cell, begin < end ? 1 : 0);
 
-    float cells[kMaxGuideCells];
-    for (uint i = 0u; i < kMaxGuideCells; ++i) cells[i] = 0.0f;
+    uint sums[kMaxGuideCells];
+    for (uint i = 0u; i < kMaxGuideCells; ++i) sums[i] = 0u;
     vec3 axis = normalBinAxis(bin);
     vec3 t;
     vec3 b;
     orthonormalBasis(axis, t, b);
-    vec3 flux = vec3(0.0f);
+    uvec3 fluxSum = uvec3(0u);
     float count = 0.0f;
     vec2 lo = vec2(kInfinity);
     vec2 hi = vec2(-kInfinity);
-    uint visited = 0u;  // fewer than the cell holds when lavapipe's loop budget cut the loop
     for (uint i = begin; i < end; ++i) {
         visited += 1u;
         GpuPhoton p = PHOTON_AT(gridPhotonTable, i);
         if ((photonFlags(p) & kPhotonPrimary) != 0u || gridCell(p.position, guide.grid.invCellSize) != cell ||
             normalBin(decodeOctahedral(p.normal)) != bin)
             continue;
-        guideAdd(cells, gm, gn, toLocal(decodeOctahedral(p.direction), t, b, axis), luminance(photonRelativePower(p)));
-        flux += photonRelativePower(p);
+        vec3 wi = toLocal(decodeOctahedral(p.direction), t, b, axis);
+        vec3 power = photonRelativePower(p);
+        if (wi.z > 0.0f) sums[guideCell(invertCosineHemisphere(wi), gm, gn)] += fixedPoint(luminance(power));
+        fluxSum += uvec3(fixedPoint(power.r), fixedPoint(power.g), fixedPoint(power.b));
         count += 1.0f;
         vec2 st = vec2(dot(p.position, t), dot(p.position, b));
         lo = min(lo, st);
         hi = max(hi, st);
     }
-    noteLoopCut(visited, max(end, begin) - begin);
+    noteLoopCut(visited, 2u * (max(end, begin) - begin));
+    float cells[kMaxGuideCells];
+    for (uint i = 0u; i < kMaxGuideCells; ++i) cells[i] = float(sums[i]) / kCacheFixedPoint;
+    vec3 flux = vec3(fluxSum) / kCacheFixedPoint;
     uint photonsPerCell = guide.gridSize >> 16u;
     uvec2 size = photonsPerCell > 0u ? guideAdaptiveSize(gm, gn, photonsPerCell, count) : uvec2(gm, gn);
     guideCoarsen(cells, gm, gn, size.x, size.y);
