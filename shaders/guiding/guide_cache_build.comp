@@ -1,5 +1,5 @@
 // The guiding cache (--guide-cache on): one invocation per (bucket, normal bin) of a coarse grid
-// over the guiding photons builds the Jensen grid of the photons in the bucket's first cell whose
+// over the guiding photons builds the Jensen grid of the photons in the bucket's owner cell whose
 // normals fall in the bin, in the bin axis's frame, weighted by flux (the BRDF is left out: exact
 // for diffuse surfaces, and the BSDF half of the mixture covers glossy ones), and stores its CDF.
 // Direct photons are left out. The bucket's cell is stored so lookups can tell it from other
@@ -7,11 +7,12 @@
 // The cache's grid leaves its buckets unsorted (a sort per bucket passes lavapipe's loop budget in
 // cells of hundreds to thousands of photons), so nothing here may depend on the photons' order:
 // the owner cell is a minimum and the sums are fixed-point integers (kCacheFixedPoint units of
-// relative power), which add up the same in any order. For guide-driven Russian roulette it also stores the grid's
-// indirect irradiance: the photons' flux over the area they cover in the bin's plane (their
-// bounding rectangle, each side widened by the range's expected shortfall for that many uniform
-// points, (count + 1) / (count - 1), and kept between a quarter and the whole cell edge), and the
-// photon count, from which lookups recompute the grid's resolution under --guide-adapt.
+// relative power), which add up the same in any order. For guide-driven Russian roulette it also
+// stores the grid's indirect irradiance: the photons' flux over the area they cover in the bin's
+// plane (their bounding rectangle, each side widened by the range's expected shortfall for that
+// many uniform points, (count + 1) / (count - 1), and kept between a quarter and the whole cell
+// edge), and the photon count, from which lookups recompute the grid's resolution under
+// --guide-adapt.
 #version 460
 #extension GL_GOOGLE_include_directive : require
 

@@ -30,9 +30,9 @@ const uint kPathTraceCounterCount = 3u;
 // Russian roulette by the throughput: at vertex kRouletteMinDepth (the fourth) and after, a path
 // survives with probability kRouletteGain times its throughput's largest component, at most
 // kRouletteMaxSurvival, and its throughput is divided by it. With gain 1 (until 2026-11-28) every
-// path was thinned to throughput 1 at once, which cut most light after three bounces (caustics seen
-// on a diffuse surface, light through a slit) and made that light the largest part of the noise;
-// with gain 4 a path is thinned only once its throughput is below 1/4. Equal samples, relMSE x path
+// path was thinned to throughput 1 at once, which cut most light after three bounces (light seen
+// through glass, light through a slit) and made that light the largest part of the noise; with
+// gain 4 a path is thinned only once its throughput is below 1/4. Equal samples, relMSE x path
 // segments: 1.1-1.2x better on the Cornell boxes, 1.5x on door-slit, 2.4x on the caustic room
 // (docs/benchmarks.md, "Russian roulette").
 const uint kRouletteMinDepth = 3u;
