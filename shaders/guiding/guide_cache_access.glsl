@@ -62,7 +62,7 @@ uint cachedGuideCdfBase(CachedGuide g) { return (g.bucket * kNormalBins + g.bin)
 #define GUIDE_CACHE_AT(i) cacheCdfs[cdfBase + (i)]
 float cachedGuidePdf(uint cdfBase, uint m, uint n, vec3 wi) {
     if (wi.z <= 0.0f) return 0.0f;
-    uint c = guideCell(invertCosineHemisphere(wi), m, n);
+    uint c = guideDirectionCell(wi, m, n);
     return guideDensity(GUIDE_CELL_PROBABILITY(GUIDE_CACHE_AT, c), m, n, wi);
 }
 vec3 cachedGuideSample(uint cdfBase, uint m, uint n, vec2 u) {

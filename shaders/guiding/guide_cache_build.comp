@@ -78,7 +78,7 @@ void buildCacheCell() {
             continue;
         vec3 wi = toLocal(decodeOctahedral(p.direction), t, b, axis);
         vec3 power = photonRelativePower(p);
-        if (wi.z > 0.0f) sums[guideCell(invertCosineHemisphere(wi), gm, gn)] += fixedPoint(luminance(power));
+        if (wi.z > 0.0f) sums[guideDirectionCell(wi, gm, gn)] += fixedPoint(luminance(power));
         fluxSum += uvec3(fixedPoint(power.r), fixedPoint(power.g), fixedPoint(power.b));
         count += 1.0f;
         vec2 st = vec2(dot(p.position, t), dot(p.position, b));

@@ -46,7 +46,7 @@ void learnNoteVertex(PathVertex v, BsdfSample bs, vec3 throughput, vec3 radiance
     if (wiGrid.z <= 0.0f) return;  // outside the grid's hemisphere: no cell learns it
     uint m = guide.gridSize & 0xffu;
     uint n = (guide.gridSize >> 8u) & 0xffu;
-    uint cell = guideCell(invertCosineHemisphere(wiGrid), m, n);
+    uint cell = guideDirectionCell(wiGrid, m, n);
     GuideLearnRecord r;
     r.slot = (vertexGuide.cdfBase / kMaxGuideCells) * kGuideLearnStride + cell;
     r.base = radiance;

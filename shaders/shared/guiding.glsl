@@ -27,10 +27,13 @@ INLINE uint guideCell(vec2 uv, uint m, uint n) {
     return iu * n + iv;
 }
 
+// The cell of local direction wi (z > 0) under the cosine mapping.
+INLINE uint guideDirectionCell(vec3 wi, uint m, uint n) { return guideCell(invertCosineHemisphere(wi), m, n); }
+
 // Adds `energy` at the local direction wi (z > 0) to the grid.
 INLINE void guideAdd(INOUT_ARRAY(float, cells, kMaxGuideCells), uint m, uint n, vec3 wi, float energy) {
     if (wi.z <= 0.0f || !(energy > 0.0f)) return;
-    uint c = guideCell(invertCosineHemisphere(wi), m, n);
+    uint c = guideDirectionCell(wi, m, n);
     cells[c] = cells[c] + energy;
 }
 
@@ -117,7 +120,7 @@ INLINE float guideCellProbability(IN_ARRAY(float, cdf, kMaxGuideCells), uint c) 
 // Solid-angle density of local direction wi under the guiding grid.
 INLINE float guidePdf(IN_ARRAY(float, cdf, kMaxGuideCells), uint m, uint n, vec3 wi) {
     if (wi.z <= 0.0f) return 0.0f;
-    return guideDensity(guideCellProbability(cdf, guideCell(invertCosineHemisphere(wi), m, n)), m, n, wi);
+    return guideDensity(guideCellProbability(cdf, guideDirectionCell(wi, m, n)), m, n, wi);
 }
 
 // Samples a local direction from the unit-square point u.
